@@ -1,0 +1,60 @@
+// A case as data: parameters plus the geometry the generator turns into particles.
+// Both readers (legacy SPHysics case file, modern TOML) produce a CaseSpec.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "config/params.hpp"
+
+namespace sphjet {
+
+struct Rect {
+    double xmin = 0, xmax = 0, zmin = 0, zmax = 0;
+};
+
+// Legacy "Add obstacle": rectangular obstacle standing in the box.
+struct ObstacleSpec {
+    int shape = 1;        // 1 rectangle (2 trapezoid is refused by the legacy reader)
+    int kind = 1;         // 1 solid (filled with boundary particles), 2 outline walls only
+    int density = 1;      // ndens: spacing of boundary points = dx / ndens
+    Rect r;
+    double beta_deg = 90; // inclination of the side walls
+};
+
+// A region filled with fluid particles on the case lattice (legacy "cube containing particles").
+struct FluidBlock {
+    Rect r;
+    double u0 = 0, w0 = 0;  // initial velocity [m/s]
+};
+
+// Modern-format shapes (not expressible in a legacy case file).
+struct FluidDisc {
+    double xc = 0, zc = 0, radius = 0;
+    double u0 = 0, w0 = 0;
+};
+
+enum class OutputFormat { Legacy, Hdf5, Both };
+
+struct OutputSpec {
+    OutputFormat format = OutputFormat::Both;
+    long checkpoint_every_steps = 0;       // 0 = off
+    double checkpoint_every_minutes = 10;  // wall-clock minutes; 0 = off
+    bool remove_out_of_domain = true;      // legacy removes and counts leavers; false = stop
+    double rho_min_factor = 0.5;           // density band [f_min, f_max] x rho0, else stop
+    double rho_max_factor = 1.5;
+    double dt_min = 1e-9;                  // a step below this is a collapse [s]
+};
+
+struct CaseSpec {
+    SimParams params;
+    std::string source;           // file it was read from, for messages
+    double floor_beta_deg = 0.0;  // legacy floor inclination (only 0 is supported)
+    bool wall_left = true, wall_right = true, wall_bottom = true, wall_top = false;
+    std::vector<ObstacleSpec> obstacles;
+    std::vector<FluidBlock> fluid_blocks;
+    std::vector<FluidDisc> fluid_discs;
+    OutputSpec output;
+};
+
+}  // namespace sphjet

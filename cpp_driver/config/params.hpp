@@ -1,0 +1,69 @@
+// Simulation parameters: what SPHysics keeps in INDAT, plus what this fork adds.
+// One struct travels from the case readers (legacy and modern) to the core.
+#pragma once
+
+#include <string>
+
+namespace sphjet {
+
+// Numbering follows the legacy case file so that legacy values map one to one.
+enum class KernelType : int { Gaussian = 1, Quadratic = 2, CubicSpline = 3, Wendland = 5 };
+enum class Integrator : int { PredictorCorrector = 1 };
+enum class DensityFilter : int { None = 0, Shepard = 1, MLS = 2 };
+enum class ViscosityModel : int { Artificial = 1, Laminar = 2 };
+enum class BoundaryType : int { Repulsive = 1, Dynamic = 2 };
+enum class Lattice : int { SimpleCubic = 1, BodyCentred = 2 };
+
+struct SimParams {
+    // Numerics
+    KernelType kernel = KernelType::Wendland;
+    Integrator integrator = Integrator::PredictorCorrector;
+    DensityFilter density_filter = DensityFilter::None;
+    int filter_period = 30;            // steps between density filters
+    ViscosityModel viscosity = ViscosityModel::Artificial;
+    double visc_value = 0.3;           // alpha (artificial) or kinematic nu [m^2/s] (laminar)
+    double wall_viscosity = 0.0;       // nu of the repulsive-wall viscous term [m^2/s]
+    BoundaryType boundary = BoundaryType::Dynamic;
+    int dbc_period = 1;                // steps between dynamic-boundary density updates
+    Lattice lattice = Lattice::BodyCentred;
+    double xsph_eps = 0.5;
+    // Tensile-instability correction (Monaghan 2000): legacy SPHysics turns it on for the
+    // Gaussian and cubic-spline kernels and off for the others. -1 = as legacy, 0 off, 1 on.
+    int tensile_correction = -1;
+
+    // Equation of state (Tait): p = B [(rho/rho0)^gamma - 1], c = c0 (rho/rho0)^3
+    double rho0 = 1000.0;              // [kg/m^3]
+    double gamma = 7.0;
+    double h_swl = 0.0;                // still-water depth used to set B [m]
+    double coef = 10.0;                // c0 = coef * sqrt(g h_swl)
+    double B = 0.0;                    // [Pa]; B = coef^2 rho0 g h_swl / gamma
+
+    // Geometry and resolution
+    double lx = 0.0, lz = 0.0;         // box size [m]
+    double dx = 0.0, dz = 0.0;         // particle spacing [m]
+    double h = 0.0;                    // smoothing length [m]
+
+    // Time
+    bool variable_dt = true;
+    double dt = 1e-4;                  // initial (or fixed) time step [s]
+    double cfl = 0.2;
+    double tmax = 1.0;                 // end time [s]
+    double out = 0.01;                 // output interval [s]
+    double trec_ini = 0.0;             // time of the first output [s]
+
+    // Body force and surface tension (this fork's additions)
+    double gx = 0.0, gz = -9.81;       // gravity [m/s^2]
+    double sigma = 0.0;                // surface tension coefficient [N/m]; 0 = off
+
+    // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
+    [[nodiscard]] double c0() const;
+    // Whether the tensile correction is on, resolving "as legacy".
+    [[nodiscard]] bool tensile_on() const;
+};
+
+[[nodiscard]] std::string to_string(KernelType k);
+[[nodiscard]] std::string to_string(DensityFilter f);
+[[nodiscard]] std::string to_string(ViscosityModel v);
+[[nodiscard]] std::string to_string(BoundaryType b);
+
+}  // namespace sphjet
