@@ -1,0 +1,105 @@
+// sphjet run: run (or resume) a case.
+#include <iostream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "config/errors.hpp"
+#include "core/simulation.hpp"
+
+namespace sphjet::cli {
+
+namespace {
+
+struct RunArgs {
+    std::string case_path;
+    std::string out_dir;
+    std::string resume_dir;
+    double tmax = -1;
+    long max_steps = -1;
+    int threads = 0;
+    bool force = false;
+    bool legacy_clock = false;
+    bool quiet = false;
+    std::string format;
+    std::vector<std::string> sets;
+};
+
+std::string joined_command_line(int argc, char** argv) {
+    std::string s;
+    for (int i = 0; i < argc; ++i) {
+        if (i) s += ' ';
+        s += argv[i];
+    }
+    return s;
+}
+
+}  // namespace
+
+std::string g_command_line;
+
+void set_command_line(int argc, char** argv) { g_command_line = joined_command_line(argc, argv); }
+
+void register_run(CLI::App& app) {
+    auto args = std::make_shared<RunArgs>();
+    auto* cmd = app.add_subcommand(
+        "run", "Run a case: a legacy SPHysics case file, an INDAT file (IPART beside it) or a "
+               "modern .toml case; or resume a stopped run with --resume DIR.");
+    cmd->add_option("case", args->case_path, "case file (legacy case, INDAT or .toml)");
+    cmd->add_option("-o,--out", args->out_dir, "output directory");
+    cmd->add_option("--resume", args->resume_dir,
+                    "continue the run in this directory from its checkpoint.h5");
+    cmd->add_option("--tmax", args->tmax, "end time [s] (overrides the case)");
+    cmd->add_option("--max-steps", args->max_steps, "stop after this many steps");
+    cmd->add_option("-j,--threads", args->threads, "OpenMP threads (default: all cores)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--format", args->format, "output format (default: the case's, else both)")
+        ->check(CLI::IsMember({"legacy", "hdf5", "both"}));
+    cmd->add_option("--set", args->sets,
+                    "override a key of a modern case, e.g. --set surface_tension.sigma=0.05 "
+                    "(repeatable)");
+    cmd->add_flag("--force", args->force, "allow writing into a non-empty output directory");
+    cmd->add_flag("--legacy-clock", args->legacy_clock,
+                  "output cadence on SPHysics' clock (which adds the new dt after each step), "
+                  "so outputs fall on the same steps as a legacy run");
+    cmd->add_flag("-q,--quiet", args->quiet, "no progress line (the log file is still written)");
+    cmd->callback([args]() {
+        RunOptions o;
+        if (!args->resume_dir.empty()) {
+            o.resume = true;
+            o.out_dir = args->resume_dir;
+            if (!args->out_dir.empty() && args->out_dir != args->resume_dir)
+                throw InputError("sphjet run", "--resume DIR and --out name different directories",
+                                 "one run directory", args->out_dir);
+        } else {
+            if (args->case_path.empty())
+                throw InputError("sphjet run", "no case given", "a case file (or --resume DIR)",
+                                 "nothing");
+            if (args->out_dir.empty())
+                throw InputError("sphjet run", "no output directory", "--out DIR", "nothing");
+            o.case_path = args->case_path;
+            o.out_dir = args->out_dir;
+        }
+        if (args->tmax > 0) o.tmax = args->tmax;
+        if (args->max_steps >= 0) o.max_steps = args->max_steps;
+        o.threads = args->threads;
+        o.force = args->force;
+        o.legacy_clock = args->legacy_clock;
+        o.quiet = args->quiet;
+        o.overrides = args->sets;
+        o.command_line = g_command_line;
+        if (args->format == "legacy") o.format = OutputFormat::Legacy;
+        if (args->format == "hdf5") o.format = OutputFormat::Hdf5;
+        if (args->format == "both") o.format = OutputFormat::Both;
+        const RunSummary s = run_simulation(o);
+        std::cout << fmt::format(
+            "run summary: {} particles ({} fluid), {} steps to t = {:.6g} s, wall {:.2f} s, "
+            "{:.4g} particle-steps/s, {} outputs, {} left the domain{}\n",
+            s.particles, s.fluid, s.steps, s.time, s.wall_seconds, s.particle_steps_per_second(),
+            s.outputs, s.removed, s.interrupted ? " (interrupted; resume with --resume)" : "");
+        if (s.interrupted) throw CLI::RuntimeError(130);
+    });
+}
+
+}  // namespace sphjet::cli

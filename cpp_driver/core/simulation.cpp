@@ -1,0 +1,349 @@
+#include "core/simulation.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "config/errors.hpp"
+#include "config/indat.hpp"
+#include "config/legacy_case.hpp"
+#include "config/modern_case.hpp"
+#include "core/solver.hpp"
+#include "geometry/generator.hpp"
+#include "io/checkpoint.hpp"
+#include "io/hdf5_output.hpp"
+#include "io/legacy_output.hpp"
+
+namespace fs = std::filesystem;
+
+namespace sphjet {
+
+double RunSummary::particle_steps_per_second() const {
+    return wall_seconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) /
+                                  wall_seconds
+                            : 0.0;
+}
+
+LoadedCase load_case(const fs::path& path, const std::vector<std::string>& overrides) {
+    if (!fs::exists(path))
+        throw InputError(path.string(), "case file not found", "an existing file", "nothing");
+    if (fs::is_directory(path))
+        throw InputError(path.string(), "case path is a directory",
+                         "a case file (.toml, INDAT or a legacy case file)", "a directory");
+    LoadedCase lc;
+    if (looks_like_modern_case(path)) {
+        lc.spec = read_modern_case(path, overrides);
+        InitialState init = generate(lc.spec);
+        lc.spec.params = init.params;
+        lc.particles = std::move(init.particles);
+        return lc;
+    }
+    if (!overrides.empty())
+        throw InputError(path.string(), "--set works on modern (.toml) cases only",
+                         "a .toml case (sphjet convert writes one from a legacy case)",
+                         "a legacy case file");
+    if (path.filename() == "INDAT") {
+        InitialState init = read_indat(path);
+        lc.spec.params = init.params;
+        lc.spec.source = path.string();
+        lc.spec.legacy = init.legacy;
+        lc.particles = std::move(init.particles);
+        return lc;
+    }
+    lc.spec = read_legacy_case(path);
+    InitialState init = generate(lc.spec);
+    lc.spec.params = init.params;
+    lc.particles = std::move(init.particles);
+    return lc;
+}
+
+namespace {
+
+std::atomic<int> g_stop_signal{0};
+
+extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
+
+// Log lines go to DIR/run.log always, and to stderr.
+class RunLog {
+public:
+    RunLog(const fs::path& file, bool append) : out_(file, append ? std::ios::app : std::ios::trunc) {
+        if (!out_) throw InputError(file.string(), "cannot open the run log for writing");
+    }
+    void line(const std::string& s, bool echo = true) {
+        out_ << s << '\n';
+        out_.flush();
+        if (echo) {
+            clear_progress();
+            std::cerr << s << '\n';
+        }
+    }
+    // One updating line on a terminal.
+    void progress(const std::string& s) {
+        std::cerr << '\r' << s << "\x1b[K" << std::flush;
+        progress_shown_ = true;
+    }
+    void clear_progress() {
+        if (progress_shown_) std::cerr << "\r\x1b[K" << std::flush;
+        progress_shown_ = false;
+    }
+
+private:
+    std::ofstream out_;
+    bool progress_shown_ = false;
+};
+
+// Keeps the first n data rows of a text file with one header line (DT) or none (steps.txt
+// has a '#' header): used on resume so that rows written after the checkpoint go away.
+void truncate_rows(const fs::path& file, std::int64_t keep_rows) {
+    if (!fs::exists(file)) return;
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    std::string line;
+    std::int64_t rows = 0;
+    while (std::getline(in, line)) {
+        const bool header = line.find_first_not_of(" \t") == std::string::npos || line[0] == '#' ||
+                            line.find("time") != std::string::npos;
+        if (!header) {
+            if (rows >= keep_rows) break;
+            ++rows;
+        }
+        lines.push_back(line);
+    }
+    in.close();
+    std::ofstream out(file, std::ios::trunc);
+    for (const auto& l : lines) out << l << '\n';
+}
+
+bool dir_has_files(const fs::path& dir) {
+    return fs::exists(dir) && fs::is_directory(dir) && !fs::is_empty(dir);
+}
+
+std::vector<ExtraField> extra_fields(const Solver& s) {
+    std::vector<ExtraField> f;
+    if (s.colour().empty()) return f;
+    f.push_back({"colour", s.colour(), ""});
+    f.push_back({"normal_x", s.st_nx(), ""});
+    f.push_back({"normal_z", s.st_nz(), ""});
+    f.push_back({"curvature", s.curvature(), ""});
+    return f;
+}
+
+std::string hms(double seconds) {
+    if (!(seconds >= 0) || seconds > 1e7) return "--:--:--";
+    const auto s = static_cast<long>(seconds + 0.5);
+    return fmt::format("{:02d}:{:02d}:{:02d}", s / 3600, (s / 60) % 60, s % 60);
+}
+
+}  // namespace
+
+RunSummary run_simulation(const RunOptions& opts) {
+    using clock = std::chrono::steady_clock;
+    const fs::path dir = opts.out_dir;
+
+    // ---- the case: fresh, or from the checkpoint ----
+    CaseSpec spec;
+    ParticleSet particles;
+    RunState resumed;
+    if (opts.resume) {
+        if (!fs::exists(checkpoint_path(dir)))
+            throw InputError(checkpoint_path(dir).string(), "cannot resume: no checkpoint",
+                             "a run directory written by `sphjet run`", "no checkpoint.h5");
+        Checkpoint cp = read_checkpoint(dir);
+        const fs::path case_copy = dir / "case.toml";
+        if (fs::exists(case_copy)) spec = read_modern_case(case_copy, {});
+        spec.params = cp.params;
+        particles = std::move(cp.particles);
+        resumed = cp.state;
+    } else {
+        if (dir_has_files(dir) && !opts.force)
+            throw InputError(dir.string(), "output directory exists and is not empty",
+                             "a new or empty directory (or --force to overwrite, --resume to "
+                             "continue)",
+                             "existing files");
+        LoadedCase lc = load_case(opts.case_path, opts.overrides);
+        spec = std::move(lc.spec);
+        particles = std::move(lc.particles);
+        if (opts.force && fs::exists(dir)) {
+            for (const auto& e : fs::directory_iterator(dir)) {
+                const std::string name = e.path().filename().string();
+                if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
+                    name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
+                    name == "case.toml")
+                    fs::remove(e.path());
+            }
+        }
+        fs::create_directories(dir);
+    }
+    if (opts.tmax) spec.params.tmax = *opts.tmax;
+    if (opts.format) spec.output.format = *opts.format;
+    const SimParams& prm = spec.params;
+    const bool legacy_out = spec.output.format != OutputFormat::Hdf5;
+    const bool hdf5_out = spec.output.format != OutputFormat::Legacy;
+
+    if (opts.threads > 0) Solver::set_threads(opts.threads);
+    Solver solver(prm, spec.output, std::move(particles));
+    if (opts.resume) solver.state() = resumed;
+    RunState& st = solver.state();
+
+    RunLog log(dir / "run.log", opts.resume);
+    if (!opts.resume) {
+        std::ofstream(dir / "case.toml") << write_modern_case(spec);
+    }
+    const std::size_t np = solver.particles().size();
+    const std::size_t nfluid = solver.particles().n_fluid();
+    log.line(fmt::format("sphjet {} ({}) {}", SPHJET_VERSION, SPHJET_GIT_HASH,
+                         opts.resume ? "resuming" : "starting"));
+    log.line(fmt::format("command: {}", opts.command_line), false);
+    log.line(fmt::format("case: {} | particles {} (boundary {}, fluid {}) | h = {:.6g} m, "
+                         "c0 = {:.6g} m/s | kernel {} | threads {}",
+                         opts.resume ? (dir / "case.toml").string() : opts.case_path.string(), np,
+                         solver.particles().nb, nfluid, prm.h, prm.c0(), to_string(prm.kernel),
+                         Solver::threads()));
+    if (opts.resume)
+        log.line(fmt::format("resuming at step {} t = {:.6g} s from {}", st.step, st.time,
+                             checkpoint_path(dir).string()));
+
+    // ---- outputs ----
+    std::optional<Hdf5Writer> h5;
+    if (hdf5_out) {
+        h5.emplace(dir, prm, opts.command_line,
+                   opts.resume ? Hdf5Writer::Mode::Resume : Hdf5Writer::Mode::Overwrite, st.step);
+    }
+    if (opts.resume) {
+        truncate_rows(dir / "DT", st.n_outputs);
+        truncate_rows(dir / "steps.txt", st.n_outputs);
+    }
+    std::optional<DtFile> dtfile;
+    std::optional<StepsFile> stepsfile;
+    if (legacy_out) {
+        dtfile.emplace(dir / "DT");
+        stepsfile.emplace(dir / "steps.txt");
+    }
+    const auto extra = extra_fields(solver);
+    if (h5 && !opts.resume) h5->write(solver.particles(), st, extra);
+
+    auto write_output = [&]() {
+        st.n_outputs += 1;
+        const double t = opts.legacy_clock ? st.legacy_time : st.time;
+        if (legacy_out) {
+            write_part(dir / fmt::format("PART_{:04d}", st.n_outputs), solver.particles());
+            dtfile->append({t, st.dt_f, st.dt_cv, st.dt_new});
+            stepsfile->append({static_cast<int>(st.n_outputs), st.step, t});
+        }
+        if (h5) h5->write(solver.particles(), st, extra);
+    };
+    auto checkpoint = [&]() { write_checkpoint(dir, solver.particles(), st, prm); };
+
+    // ---- signals: stop cleanly with a checkpoint ----
+    g_stop_signal.store(0);
+    auto old_int = std::signal(SIGINT, on_stop_signal);
+    auto old_term = std::signal(SIGTERM, on_stop_signal);
+    struct Restore {
+        decltype(old_int) a, b;
+        ~Restore() {
+            std::signal(SIGINT, a);
+            std::signal(SIGTERM, b);
+        }
+    } restore{old_int, old_term};
+
+    const bool tty = isatty(fileno(stderr)) && !opts.quiet;
+    RunSummary sum;
+    sum.particles = np;
+    sum.fluid = nfluid;
+    const auto t0 = clock::now();
+    auto last_report = t0;
+    auto last_checkpoint = t0;
+    const std::int64_t step0 = st.step;
+    const double time0 = st.time;
+    auto sim_clock = [&]() { return opts.legacy_clock ? st.legacy_time : st.time; };
+
+    try {
+        while (sim_clock() < prm.tmax) {
+            if (opts.max_steps && st.step - step0 >= *opts.max_steps) break;
+            if (g_stop_signal.load() != 0) {
+                sum.interrupted = true;
+                break;
+            }
+            const bool output_due = (sim_clock() - prm.trec_ini) -
+                                        prm.out * static_cast<double>(st.n_outputs) >=
+                                    prm.out;
+            const StepReport r = solver.step();
+            solver.check_state();
+            if (r.removed > 0)
+                log.line(fmt::format("step {} t = {:.6g} s: {} particle(s) left the domain and "
+                                     "were removed ({} in all)",
+                                     st.step, st.time, r.removed, st.n_removed));
+            if (output_due) write_output();
+            if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
+                st.step % prm.filter_period == 0)
+                solver.density_filter();
+
+            const auto now = clock::now();
+            const double wall = std::chrono::duration<double>(now - t0).count();
+            const double since_report = std::chrono::duration<double>(now - last_report).count();
+            if ((tty && since_report > 0.25) || (!tty && !opts.quiet && since_report > 10.0)) {
+                last_report = now;
+                const double sps = static_cast<double>(st.step - step0) / std::max(wall, 1e-9);
+                const double rate = (st.time - time0) / std::max(wall, 1e-9);
+                const double eta = rate > 0 ? (prm.tmax - sim_clock()) / rate : -1;
+                const std::string msg =
+                    fmt::format("t = {:.5f}/{:.5g} s | step {} | dt {:.3e} s | {:.1f} steps/s | "
+                                "{:.3g} particle-steps/s | ETA {}",
+                                sim_clock(), prm.tmax, st.step, st.dt, sps,
+                                sps * static_cast<double>(np), hms(eta));
+                if (tty) log.progress(msg);
+                else log.line(msg);
+            }
+            const double since_cp = std::chrono::duration<double>(now - last_checkpoint).count();
+            const bool cp_steps = spec.output.checkpoint_every_steps > 0 &&
+                                  st.step % spec.output.checkpoint_every_steps == 0;
+            const bool cp_time = spec.output.checkpoint_every_minutes > 0 &&
+                                 since_cp > 60.0 * spec.output.checkpoint_every_minutes;
+            if (cp_steps || cp_time) {
+                checkpoint();
+                last_checkpoint = now;
+            }
+        }
+    } catch (const SimulationError& e) {
+        log.clear_progress();
+        log.line(fmt::format("FAILED: {}", e.what()));
+        log.line(fmt::format("the last good snapshot is output {} (nothing was written from the "
+                             "failed state)",
+                             st.n_outputs));
+        throw;
+    }
+    log.clear_progress();
+
+    sum.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+    sum.steps = st.step - step0;
+    sum.total_steps = st.step;
+    sum.time = st.time;
+    sum.legacy_time = st.legacy_time;
+    sum.removed = st.n_removed;
+    checkpoint();
+    if (sum.interrupted) {
+        log.line(fmt::format("stopped by signal {} at step {} t = {:.6g} s; checkpoint written: "
+                             "continue with `sphjet run --resume {}`",
+                             g_stop_signal.load(), st.step, st.time, dir.string()));
+    } else if (legacy_out) {
+        write_part(dir / "EPART", solver.particles());
+    }
+    sum.outputs = st.n_outputs;
+    log.line(fmt::format("done: {} steps ({} in all) to t = {:.6g} s (SPHysics clock {:.6g} s) in "
+                         "{:.2f} s wall; {:.3g} particle-steps/s; {} outputs; {} particles left "
+                         "the domain",
+                         sum.steps, sum.total_steps, sum.time, sum.legacy_time, sum.wall_seconds,
+                         sum.particle_steps_per_second(), sum.outputs, sum.removed));
+    return sum;
+}
+
+}  // namespace sphjet

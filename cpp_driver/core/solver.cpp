@@ -1,0 +1,210 @@
+#include "core/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "config/errors.hpp"
+
+namespace sphjet {
+
+DomainBounds legacy_domain(const ParticleSet& ps) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (ps.nb == 0) return {-inf, inf, -inf, inf};
+    DomainBounds d{inf, -inf, inf, inf};
+    for (std::size_t i = 0; i < ps.nb; ++i) {
+        d.xmin = std::min(d.xmin, ps.x[i]);
+        d.xmax = std::max(d.xmax, ps.x[i]);
+        d.zmin = std::min(d.zmin, ps.z[i]);
+    }
+    return d;
+}
+
+sph_params_t core_params(const SimParams& p, const OutputSpec& out, const DomainBounds& dom) {
+    sph_params_t c{};
+    c.kernel = static_cast<int>(p.kernel);
+    c.viscosity = static_cast<int>(p.viscosity);
+    c.boundary = static_cast<int>(p.boundary);
+    c.density_filter = static_cast<int>(p.density_filter);
+    c.tensile = p.tensile_on() ? 1 : 0;
+    c.dbc_period = std::max(p.dbc_period, 1);
+    c.variable_dt = p.variable_dt ? 1 : 0;
+    c.remove_out_of_domain = out.remove_out_of_domain ? 1 : 0;
+    c.h = p.h;
+    c.rho0 = p.rho0;
+    c.b = p.B;
+    c.gamma = p.gamma;
+    c.c0 = p.c0();
+    c.coef = p.coef;
+    c.h_swl = p.h_swl > 0 ? p.h_swl : 1.0;
+    c.visc_value = p.visc_value;
+    c.wall_viscosity = p.wall_viscosity;
+    c.xsph_eps = p.xsph_eps;
+    c.cfl = p.cfl;
+    c.gx = p.gx;
+    c.gz = p.gz;
+    c.sigma = p.sigma;
+    c.dom_xmin = dom.xmin;
+    c.dom_xmax = dom.xmax;
+    c.dom_zmin = dom.zmin;
+    c.dom_zmax = dom.zmax;
+    c.rho_min = out.rho_min_factor * p.rho0;
+    c.rho_max = out.rho_max_factor * p.rho0;
+    c.dt_min = out.dt_min;
+    return c;
+}
+
+std::string status_text(int status) {
+    switch (status) {
+        case SPH_OK: return "ok";
+        case SPH_ERR_ARGUMENT: return "invalid argument or option passed to the core";
+        case SPH_ERR_NONFINITE: return "non-finite value (NaN or Inf)";
+        case SPH_ERR_DENSITY: return "density outside the allowed band";
+        case SPH_ERR_OUT_OF_DOMAIN: return "particle left the domain";
+        case SPH_ERR_DT_COLLAPSE: return "time step collapsed below dt_min";
+        case SPH_ERR_CAPACITY: return "output buffer too small";
+        default: return fmt::format("unknown status {}", status);
+    }
+}
+
+Solver::Solver(const SimParams& params, const OutputSpec& output, ParticleSet particles)
+    : params_(params), output_(output), ps_(std::move(particles)) {
+    const std::size_t n = ps_.size();
+    if (ps_.active.size() != n) ps_.active.assign(n, 1);
+    for (auto* v : {&c_, &xo_, &zo_, &uo_, &wo_, &rhoo_, &ax_, &az_, &ar_, &xu_, &xw_})
+        v->assign(n, 0.0);
+    if (params_.boundary == BoundaryType::Repulsive) {
+        if (ps_.wall.size() != ps_.nb)
+            throw InputError("particles", "repulsive walls need the wall links of every boundary "
+                                          "particle (NORMALS.init)",
+                             fmt::format("{} links", ps_.nb), fmt::format("{}", ps_.wall.size()));
+        wall_prev_.resize(n, 0);
+        wall_next_.resize(n, 0);
+        for (std::size_t i = 0; i < ps_.nb; ++i) {
+            wall_prev_[i] = ps_.wall[i].prev;
+            wall_next_[i] = ps_.wall[i].next;
+        }
+        for (auto* v : {&wall_nx_, &wall_nz_, &wall_db_, &wall_df_}) v->assign(n, 0.0);
+    }
+    if (params_.sigma > 0)
+        for (auto* v : {&colour_, &st_nx_, &st_nz_, &kappa_}) v->assign(n, 0.0);
+    prm_ = core_params(params_, output_, legacy_domain(ps_));
+    state_.dt = params_.dt;
+    bind_arrays();
+    ws_ = sph_workspace_create();
+    const int status = sph_prepare(&prm_, &arr_);
+    if (status != SPH_OK) {
+        sph_workspace_destroy(ws_);
+        throw SimulationError("core refused the case parameters or the wall links: " +
+                              status_text(status));
+    }
+}
+
+Solver::~Solver() { sph_workspace_destroy(ws_); }
+
+void Solver::bind_arrays() {
+    arr_ = sph_arrays_t{};
+    arr_.n = static_cast<int64_t>(ps_.size());
+    arr_.nb = static_cast<int64_t>(ps_.nb);
+    arr_.x = ps_.x.data();
+    arr_.z = ps_.z.data();
+    arr_.u = ps_.u.data();
+    arr_.w = ps_.w.data();
+    arr_.rho = ps_.rho.data();
+    arr_.p = ps_.p.data();
+    arr_.c = c_.data();
+    arr_.m = ps_.m.data();
+    arr_.kind = ps_.kind.data();
+    arr_.active = ps_.active.data();
+    arr_.xo = xo_.data();
+    arr_.zo = zo_.data();
+    arr_.uo = uo_.data();
+    arr_.wo = wo_.data();
+    arr_.rhoo = rhoo_.data();
+    arr_.ax = ax_.data();
+    arr_.az = az_.data();
+    arr_.ar = ar_.data();
+    arr_.xsph_u = xu_.data();
+    arr_.xsph_w = xw_.data();
+    if (!wall_prev_.empty()) {
+        arr_.wall_prev = wall_prev_.data();
+        arr_.wall_next = wall_next_.data();
+        arr_.wall_nx = wall_nx_.data();
+        arr_.wall_nz = wall_nz_.data();
+        arr_.wall_dback = wall_db_.data();
+        arr_.wall_dfwd = wall_df_.data();
+    }
+    if (!colour_.empty()) {
+        arr_.colour = colour_.data();
+        arr_.st_nx = st_nx_.data();
+        arr_.st_nz = st_nz_.data();
+        arr_.kappa = kappa_.data();
+    }
+}
+
+void Solver::fail(int status, std::int64_t particle, const std::string& where) const {
+    std::string msg = fmt::format("{} at step {} (t = {:.6g} s): {}", where, state_.step + 1,
+                                  state_.time, status_text(status));
+    if (particle >= 0 && static_cast<std::size_t>(particle) < ps_.size()) {
+        const auto i = static_cast<std::size_t>(particle);
+        msg += fmt::format("; particle id {} (index {}, {}) at x = {:.6g} m, z = {:.6g} m, "
+                           "u = {:.6g} m/s, w = {:.6g} m/s, rho = {:.6g} kg/m^3",
+                           ps_.id[i], i, ps_.kind[i] == 2 ? "fluid" : "boundary", ps_.x[i],
+                           ps_.z[i], ps_.u[i], ps_.w[i], ps_.rho[i]);
+    }
+    throw SimulationError(msg);
+}
+
+StepReport Solver::step() {
+    sph_step_info_t info{};
+    info.dt = state_.dt;
+    info.dbc_counter = state_.dbc_counter;
+    const int status = sph_step(ws_, &prm_, &arr_, &info);
+    if (status == SPH_ERR_DT_COLLAPSE) {
+        fail(status, -1,
+             fmt::format("time step {:.3g} s (force term {:.3g} s, CFL term {:.3g} s)",
+                         info.dt_next, info.dt_f, info.dt_cv));
+    }
+    if (status != SPH_OK) fail(status, info.bad_particle, "step");
+    StepReport r;
+    r.dt_taken = info.dt;
+    r.removed = info.n_removed;
+    state_.step += 1;
+    state_.time += info.dt;
+    state_.dt = info.dt_next;
+    state_.legacy_time += info.dt_next;  // SPHysics advances its clock by the new step
+    state_.dt_f = info.dt_f;
+    state_.dt_cv = info.dt_cv;
+    state_.dt_new = info.dt_new;
+    state_.dbc_counter = info.dbc_counter;
+    state_.n_removed += info.n_removed;
+    return r;
+}
+
+void Solver::density_filter() {
+    if (params_.density_filter == DensityFilter::None) return;
+    int64_t singular = 0;
+    const int status = sph_density_filter(ws_, &prm_, &arr_, &singular);
+    if (status != SPH_OK) fail(status, -1, "density filter");
+}
+
+void Solver::check_state() const {
+    int64_t bad = -1;
+    const int status = sph_check_state(&prm_, &arr_, &bad);
+    if (status != SPH_OK) fail(status, bad, "state check");
+}
+
+double Solver::compute_rates() {
+    double vmax = 0;
+    const int status = sph_compute_rates(ws_, &prm_, &arr_, &vmax);
+    if (status != SPH_OK) fail(status, -1, "rates");
+    return vmax;
+}
+
+void Solver::set_threads(int n) { sph_set_threads(n); }
+int Solver::threads() { return sph_get_threads(); }
+
+}  // namespace sphjet

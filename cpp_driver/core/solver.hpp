@@ -1,0 +1,90 @@
+// The only caller of the Fortran core (capi/sphjet_core.h): it lends the particle arrays,
+// turns status codes into exceptions with a diagnostic, and keeps the integrator work space.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "config/case_spec.hpp"
+#include "config/params.hpp"
+#include "core/particles.hpp"
+#include "core/run_state.hpp"
+#include "sphjet_core.h"
+
+namespace sphjet {
+
+// Domain outside which fluid particles leave the simulation.
+struct DomainBounds {
+    double xmin, xmax, zmin, zmax;
+};
+
+// Legacy rule: the extent of the boundary particles, open at the top; no boundary: unbounded.
+[[nodiscard]] DomainBounds legacy_domain(const ParticleSet& ps);
+
+// sph_params_t from the case parameters.
+[[nodiscard]] sph_params_t core_params(const SimParams& p, const OutputSpec& out,
+                                       const DomainBounds& dom);
+
+struct StepReport {
+    double dt_taken = 0;
+    std::int64_t removed = 0;
+};
+
+class Solver {
+public:
+    Solver(const SimParams& params, const OutputSpec& output, ParticleSet particles);
+    ~Solver();
+    Solver(const Solver&) = delete;
+    Solver& operator=(const Solver&) = delete;
+
+    // One predictor-corrector step with state().dt; updates RunState (time, legacy clock,
+    // step, dt, counters). Throws SimulationError with step, time, particle and cause.
+    StepReport step();
+    // Density filter (Shepard or MLS, as the parameters say); no-op when none.
+    void density_filter();
+    // NaN/Inf and density band check of the whole state; throws SimulationError.
+    void check_state() const;
+    // Pair rates at the current state (tests and diagnostics); returns max visc term.
+    double compute_rates();
+
+    [[nodiscard]] const ParticleSet& particles() const { return ps_; }
+    [[nodiscard]] const std::vector<double>& sound_speed() const { return c_; }
+    [[nodiscard]] const std::vector<double>& ax() const { return ax_; }
+    [[nodiscard]] const std::vector<double>& az() const { return az_; }
+    [[nodiscard]] const std::vector<double>& ar() const { return ar_; }
+    // Surface-tension fields (empty when sigma = 0).
+    [[nodiscard]] const std::vector<double>& colour() const { return colour_; }
+    [[nodiscard]] const std::vector<double>& st_nx() const { return st_nx_; }
+    [[nodiscard]] const std::vector<double>& st_nz() const { return st_nz_; }
+    [[nodiscard]] const std::vector<double>& curvature() const { return kappa_; }
+    [[nodiscard]] RunState& state() { return state_; }
+    [[nodiscard]] const RunState& state() const { return state_; }
+    [[nodiscard]] const SimParams& params() const { return params_; }
+    [[nodiscard]] const sph_params_t& core() const { return prm_; }
+
+    static void set_threads(int n);
+    static int threads();
+
+private:
+    void bind_arrays();
+    [[noreturn]] void fail(int status, std::int64_t particle, const std::string& where) const;
+
+    SimParams params_;
+    OutputSpec output_;
+    ParticleSet ps_;
+    RunState state_;
+    sph_params_t prm_{};
+    sph_arrays_t arr_{};
+    std::vector<double> c_, xo_, zo_, uo_, wo_, rhoo_, ax_, az_, ar_, xu_, xw_;
+    std::vector<int> wall_prev_, wall_next_;
+    std::vector<double> wall_nx_, wall_nz_, wall_db_, wall_df_;
+    std::vector<double> colour_, st_nx_, st_nz_, kappa_;
+    void* ws_ = nullptr;
+};
+
+// Text of an SPH_* status.
+[[nodiscard]] std::string status_text(int status);
+
+}  // namespace sphjet

@@ -1,0 +1,280 @@
+!> The C interface of the core: thin bind(C) shims that check their arguments, bind the
+!> arrays lent by C++ and call the internal routines. They never stop the program: every
+!> failure is an integer status (SPH_* codes of sphjet_kinds, mirrored in sphjet_core.h).
+module sphjet_capi
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_ptr, c_loc, &
+                                         c_f_pointer, c_associated, c_null_ptr
+  use omp_lib, only: omp_set_num_threads, omp_get_max_threads
+  use sphjet_kinds, only: rp, ip, i8, SPH_OK, SPH_ERR_ARGUMENT, SPH_ERR_CAPACITY, &
+                          SPH_ERR_DT_COLLAPSE, BC_REPULSIVE, BC_DYNAMIC, VISC_ARTIFICIAL, &
+                          VISC_LAMINAR, FILTER_NONE, FILTER_MLS, KIND_FLUID
+  use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
+  use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
+  use sorted_state, only: sorted_t, gather_sorted
+  use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
+  use rates, only: compute_rates
+  use predictor_corrector, only: pc_step, update_eos
+  use filter_loops, only: apply_density_filter
+  use state_checks, only: check_finite
+  use repulsive_wall, only: wall_normal
+  use eos_tait, only: tait_pressure, tait_sound_speed
+  implicit none
+  private
+  public :: sph_workspace_create, sph_workspace_destroy, sph_set_threads, sph_get_threads, &
+            sph_prepare, sph_step, sph_density_filter, sph_check_state, sph_compute_rates, &
+            sph_kernel_eval, sph_neighbour_pairs, sph_eos
+
+  !> Scratch memory of the core, kept between calls (opaque to C++).
+  type :: workspace_t
+    type(sorted_t) :: sorted
+  end type workspace_t
+
+contains
+
+  function sph_workspace_create() result(handle) bind(C, name="sph_workspace_create")
+    type(c_ptr) :: handle
+    type(workspace_t), pointer :: ws
+    allocate(ws)
+    handle = c_loc(ws)
+  end function sph_workspace_create
+
+  subroutine sph_workspace_destroy(handle) bind(C, name="sph_workspace_destroy")
+    type(c_ptr), value :: handle
+    type(workspace_t), pointer :: ws
+    if (.not. c_associated(handle)) return
+    call c_f_pointer(handle, ws)
+    deallocate(ws)
+  end subroutine sph_workspace_destroy
+
+  subroutine sph_set_threads(n) bind(C, name="sph_set_threads")
+    integer(c_int), value :: n
+    if (n > 0) call omp_set_num_threads(n)
+  end subroutine sph_set_threads
+
+  function sph_get_threads() result(n) bind(C, name="sph_get_threads")
+    integer(c_int) :: n
+    n = omp_get_max_threads()
+  end function sph_get_threads
+
+  !> Checks the options and values every routine relies on.
+  logical function params_ok(prm)
+    type(sph_params_t), intent(in) :: prm
+    params_ok = kernel_valid(prm%kernel) .and. prm%h > 0.0_rp .and. prm%rho0 > 0.0_rp &
+      .and. prm%b >= 0.0_rp .and. prm%c0 >= 0.0_rp .and. prm%gamma > 0.0_rp &
+      .and. any(prm%boundary == [BC_REPULSIVE, BC_DYNAMIC]) &
+      .and. any(prm%viscosity == [VISC_ARTIFICIAL, VISC_LAMINAR]) &
+      .and. prm%density_filter >= FILTER_NONE .and. prm%density_filter <= FILTER_MLS &
+      .and. prm%cfl > 0.0_rp .and. prm%sigma >= 0.0_rp
+    if (prm%boundary == BC_REPULSIVE) params_ok = params_ok .and. prm%h_swl > 0.0_rp &
+      .and. prm%coef > 0.0_rp
+  end function params_ok
+
+  !> Sets pressure and sound speed from density (all particles) and, for repulsive walls,
+  !> the wall normals from the wall links.
+  function sph_prepare(prm, arr) result(status) bind(C, name="sph_prepare")
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    integer(c_int) :: status
+    type(state_t) :: st
+    logical :: ok, repulsive
+    integer :: i, ip_, in_
+    status = SPH_ERR_ARGUMENT
+    if (.not. params_ok(prm)) return
+    repulsive = prm%boundary == BC_REPULSIVE
+    call bind_state(arr, st, .false., repulsive, ok)
+    if (.not. ok) return
+    call update_eos(prm, st, 1, st%n)
+    if (repulsive) then
+      do i = 1, st%nb
+        ip_ = st%wall_prev(i) + 1
+        in_ = st%wall_next(i) + 1
+        if (ip_ < 1 .or. ip_ > st%nb .or. in_ < 1 .or. in_ > st%nb) return
+        if (ip_ == i .and. in_ == i) return
+        call wall_normal(st%x(ip_), st%z(ip_), st%x(i), st%z(i), st%x(in_), st%z(in_), &
+                         ip_ == i, in_ == i, prm%h, st%wall_nx(i), st%wall_nz(i), &
+                         st%wall_dback(i), st%wall_dfwd(i))
+      end do
+    end if
+    status = SPH_OK
+  end function sph_prepare
+
+  !> One predictor-corrector step; info%dt is the step to take.
+  function sph_step(ws_handle, prm, arr, info) result(status) bind(C, name="sph_step")
+    type(c_ptr), value :: ws_handle
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    type(sph_step_info_t), intent(inout) :: info
+    integer(c_int) :: status
+    type(workspace_t), pointer :: ws
+    type(state_t) :: st
+    type(kernel_t) :: kern
+    logical :: ok
+    status = SPH_ERR_ARGUMENT
+    if (.not. c_associated(ws_handle)) return
+    if (.not. params_ok(prm)) return
+    if (.not. (info%dt > 0.0_rp)) return
+    call bind_state(arr, st, .true., prm%boundary == BC_REPULSIVE, ok)
+    if (.not. ok) return
+    call c_f_pointer(ws_handle, ws)
+    kern = kernel_setup(prm%kernel, prm%h)
+    info%n_removed = 0
+    info%bad_particle = -1
+    info%bad_cause = SPH_OK
+    call pc_step(prm, kern, st, ws%sorted, info, status)
+    if (status /= SPH_OK) return
+    if (prm%variable_dt /= 0 .and. info%dt_next < prm%dt_min) then
+      status = SPH_ERR_DT_COLLAPSE
+      info%bad_cause = status
+    end if
+  end function sph_step
+
+  function sph_density_filter(ws_handle, prm, arr, n_singular) result(status) &
+      bind(C, name="sph_density_filter")
+    type(c_ptr), value :: ws_handle
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    integer(c_int64_t), intent(out) :: n_singular
+    integer(c_int) :: status
+    type(workspace_t), pointer :: ws
+    type(state_t) :: st
+    logical :: ok
+    integer :: ns
+    status = SPH_ERR_ARGUMENT
+    n_singular = 0
+    if (.not. c_associated(ws_handle)) return
+    if (.not. params_ok(prm)) return
+    call bind_state(arr, st, .false., .false., ok)
+    if (.not. ok) return
+    call c_f_pointer(ws_handle, ws)
+    call apply_density_filter(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted, ns)
+    n_singular = ns
+    status = SPH_OK
+  end function sph_density_filter
+
+  !> Status of the first active particle with a non-finite field or a density outside
+  !> [rho_min, rho_max] (0-based index in bad_particle), SPH_OK if none.
+  function sph_check_state(prm, arr, bad_particle) result(status) bind(C, name="sph_check_state")
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    integer(c_int64_t), intent(out) :: bad_particle
+    integer(c_int) :: status
+    type(state_t) :: st
+    logical :: ok
+    status = SPH_ERR_ARGUMENT
+    bad_particle = -1
+    call bind_state(arr, st, .false., .false., ok)
+    if (.not. ok) return
+    call check_finite(prm, st, bad_particle, status)
+  end function sph_check_state
+
+  !> Pair rates (ax, az, ar, XSPH) at the current state, gravity excluded; visc_max returns
+  !> max (u_ab . r_ab)/(r_ab^2 + eta^2). For tests and diagnostics.
+  function sph_compute_rates(ws_handle, prm, arr, visc_max) result(status) &
+      bind(C, name="sph_compute_rates")
+    type(c_ptr), value :: ws_handle
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    real(c_double), intent(out) :: visc_max
+    integer(c_int) :: status
+    type(workspace_t), pointer :: ws
+    type(state_t) :: st
+    logical :: ok
+    status = SPH_ERR_ARGUMENT
+    visc_max = 0.0_rp
+    if (.not. c_associated(ws_handle)) return
+    if (.not. params_ok(prm)) return
+    call bind_state(arr, st, .true., prm%boundary == BC_REPULSIVE, ok)
+    if (.not. ok) return
+    call c_f_pointer(ws_handle, ws)
+    call compute_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted, visc_max)
+    status = SPH_OK
+  end function sph_compute_rates
+
+  !> W(r) and F(r) = (dW/dr)/r for n distances.
+  function sph_kernel_eval(kernel, h, n, r, w, f) result(status) bind(C, name="sph_kernel_eval")
+    integer(c_int), value :: kernel
+    real(c_double), value :: h
+    integer(c_int64_t), value :: n
+    real(c_double), intent(in) :: r(n)
+    real(c_double), intent(out) :: w(n), f(n)
+    integer(c_int) :: status
+    type(kernel_t) :: k
+    integer(i8) :: i
+    status = SPH_ERR_ARGUMENT
+    if (.not. kernel_valid(kernel) .or. .not. (h > 0.0_rp) .or. n < 0) return
+    k = kernel_setup(kernel, h)
+    do i = 1, n
+      if (r(i) <= 0.0_rp .or. r(i) >= 2.0_rp * h) then
+        w(i) = 0.0_rp
+        f(i) = 0.0_rp
+        if (r(i) == 0.0_rp) call kernel_eval(k, tiny(1.0_rp), w(i), f(i))
+        if (r(i) == 0.0_rp) f(i) = 0.0_rp
+      else
+        call kernel_eval(k, r(i), w(i), f(i))
+      end if
+    end do
+    status = SPH_OK
+  end function sph_kernel_eval
+
+  !> All pairs (i < j, 0-based) of active particles closer than 2h, found by the cell search.
+  function sph_neighbour_pairs(prm, arr, capacity, pi_, pj_, npairs) result(status) &
+      bind(C, name="sph_neighbour_pairs")
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    integer(c_int64_t), value :: capacity
+    integer(c_int64_t), intent(out) :: pi_(capacity), pj_(capacity)
+    integer(c_int64_t), intent(out) :: npairs
+    integer(c_int) :: status
+    type(state_t) :: st
+    type(sorted_t) :: s
+    logical :: ok
+    integer, allocatable :: list(:, :)
+    integer :: row, npair, ip_, a, b, b0, ia, ib
+    real(rp) :: r2
+    status = SPH_ERR_ARGUMENT
+    npairs = 0
+    if (.not. (prm%h > 0.0_rp)) return
+    call bind_state(arr, st, .false., .false., ok)
+    if (.not. ok) return
+    call gather_sorted(st, prm%h, s)
+    allocate(list(5, MAX_PAIRS_PER_CELL * s%grid%ncx))
+    status = SPH_OK
+    do row = 0, s%grid%ncz - 1
+      call row_cell_pairs(s%grid, row, list, npair)
+      do ip_ = 1, npair
+        do a = list(1, ip_), list(2, ip_)
+          b0 = list(3, ip_)
+          if (list(5, ip_) == 1) b0 = a + 1
+          do b = b0, list(4, ip_)
+            r2 = (s%x(a) - s%x(b))**2 + (s%z(a) - s%z(b))**2
+            if (r2 >= 4.0_rp * prm%h * prm%h) cycle
+            npairs = npairs + 1
+            if (npairs > capacity) then
+              status = SPH_ERR_CAPACITY
+              cycle
+            end if
+            ia = s%grid%order(a)
+            ib = s%grid%order(b)
+            pi_(npairs) = min(ia, ib) - 1
+            pj_(npairs) = max(ia, ib) - 1
+          end do
+        end do
+      end do
+    end do
+  end function sph_neighbour_pairs
+
+  !> Tait EoS for n densities.
+  function sph_eos(prm, n, rho, p, c) result(status) bind(C, name="sph_eos")
+    type(sph_params_t), intent(in) :: prm
+    integer(c_int64_t), value :: n
+    real(c_double), intent(in) :: rho(n)
+    real(c_double), intent(out) :: p(n), c(n)
+    integer(c_int) :: status
+    status = SPH_ERR_ARGUMENT
+    if (n < 0 .or. .not. (prm%rho0 > 0.0_rp)) return
+    p = tait_pressure(rho, prm%rho0, prm%b, prm%gamma)
+    c = tait_sound_speed(rho, prm%rho0, prm%c0)
+    status = SPH_OK
+  end function sph_eos
+
+end module sphjet_capi

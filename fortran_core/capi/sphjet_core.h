@@ -1,0 +1,126 @@
+/* The C interface of the sphjet Fortran core (fortran_core/capi/sphjet_capi.f90).
+ * Kept in step with the Fortran by tests/interface (gfortran -fc-prototypes).
+ * All arrays are owned by the caller; the core never frees them. Every function that can
+ * fail returns an SPH_* status; none of them stops the program. */
+#ifndef SPHJET_CORE_H
+#define SPHJET_CORE_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum {
+    SPH_OK = 0,
+    SPH_ERR_ARGUMENT = 1,      /* bad count, null pointer, unsupported option */
+    SPH_ERR_NONFINITE = 2,     /* NaN or Inf in a field */
+    SPH_ERR_DENSITY = 3,       /* density outside [rho_min, rho_max] */
+    SPH_ERR_OUT_OF_DOMAIN = 4, /* a particle left the domain (removal off) */
+    SPH_ERR_DT_COLLAPSE = 5,   /* time step below dt_min */
+    SPH_ERR_CAPACITY = 6       /* output buffer too small */
+};
+
+typedef struct sph_params_t {
+    int kernel;               /* 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland */
+    int viscosity;            /* 1 artificial, 2 laminar */
+    int boundary;             /* 1 repulsive (Monaghan-Kos), 2 dynamic */
+    int density_filter;       /* 0 none, 1 Shepard, 2 MLS */
+    int tensile;              /* 1: tensile-instability correction on */
+    int dbc_period;           /* steps between dynamic-boundary density updates */
+    int variable_dt;          /* 1: dt from the CFL condition each step */
+    int remove_out_of_domain; /* 1: remove leavers and count them; 0: fail */
+    double h;                 /* smoothing length [m] */
+    double rho0;              /* reference density [kg/m^3] */
+    double b;                 /* Tait B [Pa] */
+    double gamma;             /* Tait exponent */
+    double c0;                /* sound speed at rho0 [m/s] */
+    double coef;              /* speed-of-sound coefficient (repulsive walls) */
+    double h_swl;             /* still-water depth [m] (repulsive walls) */
+    double visc_value;        /* alpha (artificial) or nu [m^2/s] (laminar) */
+    double wall_viscosity;    /* nu of the repulsive-wall viscous term [m^2/s] */
+    double xsph_eps;          /* XSPH epsilon */
+    double cfl;               /* Courant number */
+    double gx;                /* gravity [m/s^2] */
+    double gz;
+    double sigma;             /* surface tension [N/m]; 0 = off */
+    double dom_xmin;          /* fluid beyond these bounds leaves the domain [m] */
+    double dom_xmax;
+    double dom_zmin;
+    double dom_zmax;
+    double rho_min;           /* sane density band [kg/m^3]; rho_max <= 0 disables */
+    double rho_max;
+    double dt_min;            /* a step below this is a collapse [s] */
+} sph_params_t;
+
+typedef struct sph_arrays_t {
+    int64_t n;                /* particles */
+    int64_t nb;               /* boundary particles (they come first) */
+    double* x;                /* position [m] */
+    double* z;
+    double* u;                /* velocity [m/s] */
+    double* w;
+    double* rho;              /* density [kg/m^3] */
+    double* p;                /* pressure [Pa] */
+    double* c;                /* sound speed [m/s] */
+    double* m;                /* mass [kg] */
+    int* kind;                /* 0 fixed boundary, 1 moving boundary, 2 fluid */
+    int* active;              /* 1 in the domain, 0 removed */
+    double* xo;               /* integrator work space: start-of-step values */
+    double* zo;
+    double* uo;
+    double* wo;
+    double* rhoo;
+    double* ax;               /* pair accelerations (gravity excluded) [m/s^2] */
+    double* az;
+    double* ar;               /* density rate [kg/m^3/s] */
+    double* xsph_u;           /* XSPH velocity correction [m/s] */
+    double* xsph_w;
+    int* wall_prev;           /* repulsive walls: neighbours along the wall (0-based) */
+    int* wall_next;
+    double* wall_nx;          /* wall unit normal (set by sph_prepare) */
+    double* wall_nz;
+    double* wall_dback;       /* spacing to the previous / next wall particle [m] */
+    double* wall_dfwd;
+    double* colour;           /* surface tension fields (may be NULL when sigma = 0) */
+    double* st_nx;
+    double* st_nz;
+    double* kappa;
+} sph_arrays_t;
+
+typedef struct sph_step_info_t {
+    double dt;                /* in: step to take [s] */
+    double dt_next;           /* out: step for the next call [s] */
+    double dt_f;              /* out: force and CFL time-step terms of the corrector [s] */
+    double dt_cv;
+    double dt_new;
+    double visc_dt;           /* out: max (u_ab . r_ab)/(r^2 + eta^2) [1/s] */
+    int64_t dbc_counter;      /* in/out: steps since the last boundary density update */
+    int64_t n_removed;        /* out: particles removed in this step */
+    int64_t bad_particle;     /* out: 0-based index of the offending particle, -1 if none */
+    int bad_cause;            /* out: status of the failure */
+    int pad;
+} sph_step_info_t;
+
+void* sph_workspace_create(void);
+void sph_workspace_destroy(void* handle);
+void sph_set_threads(int n);
+int sph_get_threads(void);
+int sph_prepare(const sph_params_t* prm, const sph_arrays_t* arr);
+int sph_step(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
+             sph_step_info_t* info);
+int sph_density_filter(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
+                       int64_t* n_singular);
+int sph_check_state(const sph_params_t* prm, const sph_arrays_t* arr, int64_t* bad_particle);
+int sph_compute_rates(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
+                      double* visc_max);
+int sph_kernel_eval(int kernel, double h, int64_t n, const double* r, double* w, double* f);
+int sph_neighbour_pairs(const sph_params_t* prm, const sph_arrays_t* arr, int64_t capacity,
+                        int64_t* pi_, int64_t* pj_, int64_t* npairs);
+int sph_eos(const sph_params_t* prm, int64_t n, const double* rho, double* p, double* c);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SPHJET_CORE_H */

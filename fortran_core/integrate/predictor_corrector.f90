@@ -1,0 +1,144 @@
+!> Predictor-corrector time integration (Monaghan 1989) as SPHysics 2D performs it:
+!>   predictor: rates at t^n; phi^{n+1/2} = phi^n + dt/2 dphi^n/dt
+!>   corrector: rates at t^{n+1/2}; phi^{n+1/2} = phi^n + dt/2 dphi^{n+1/2}/dt;
+!>              phi^{n+1} = 2 phi^{n+1/2} - phi^n
+!> for positions (moved with velocity + XSPH correction), velocities and densities of the
+!> fluid; pressure and sound speed follow from the EoS after each density update. Dynamic
+!> boundary particles update their density every dbc_period steps and never drop below rho0.
+!> The step for the next call is min of the CFL steps of both stages; note that SPHysics
+!> then advances its clock by that new step, not by the one just taken (this fork advances
+!> by the step taken; the driver keeps the legacy clock too, for comparisons).
+module predictor_corrector
+  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, BC_DYNAMIC, SPH_OK
+  use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
+  use sphjet_kernels, only: kernel_t
+  use sorted_state, only: sorted_t
+  use rates, only: compute_rates
+  use time_step, only: cfl_time_step
+  use eos_tait, only: tait_pressure, tait_sound_speed
+  use state_checks, only: check_domain
+  implicit none
+  private
+  public :: pc_step, update_eos
+
+contains
+
+  !> p and c from rho for particles first..last.
+  subroutine update_eos(prm, st, first, last)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    integer, intent(in) :: first, last
+    integer :: i
+    !$omp parallel do schedule(static)
+    do i = first, last
+      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
+      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+    end do
+    !$omp end parallel do
+  end subroutine update_eos
+
+  subroutine pc_step(prm, kern, st, s, info, status)
+    type(sph_params_t), intent(in) :: prm
+    type(kernel_t), intent(in) :: kern
+    type(state_t), intent(inout) :: st
+    type(sorted_t), intent(inout) :: s
+    type(sph_step_info_t), intent(inout) :: info
+    integer(ip), intent(out) :: status
+    real(rp) :: dt, dt2, vmax, dt_p, dt_c, dtf, dtcv
+    logical :: dbc, dbc_now
+    integer :: i, nb, n
+
+    n = st%n
+    nb = st%nb
+    dt = info%dt
+    dt2 = 0.5_rp * dt
+    dbc = prm%boundary == BC_DYNAMIC
+    vmax = 0.0_rp
+    dt_p = dt
+    dt_c = dt
+
+    ! ---- predictor ----
+    call compute_rates(prm, kern, st, s, vmax)
+    if (prm%variable_dt /= 0) then
+      call cfl_time_step(prm, st, vmax, dtf, dtcv, dt_p)
+    end if
+    !$omp parallel do schedule(static)
+    do i = 1, n
+      st%xo(i) = st%x(i)
+      st%zo(i) = st%z(i)
+      st%uo(i) = st%u(i)
+      st%wo(i) = st%w(i)
+      st%rhoo(i) = st%rho(i)
+    end do
+    !$omp end parallel do
+    call advance_fluid(prm, st, dt2)
+    dbc_now = .false.
+    if (dbc) then
+      info%dbc_counter = info%dbc_counter + 1
+      if (mod(info%dbc_counter, int(max(prm%dbc_period, 1), i8)) == 0) then
+        dbc_now = .true.
+        info%dbc_counter = 0
+        do i = 1, nb
+          st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
+        end do
+        call update_eos(prm, st, 1, nb)
+      end if
+    end if
+
+    ! ---- corrector ----
+    call compute_rates(prm, kern, st, s, vmax)
+    if (prm%variable_dt /= 0) then
+      call cfl_time_step(prm, st, vmax, dtf, dtcv, dt_c)
+      info%dt_f = dtf
+      info%dt_cv = dtcv
+      info%dt_new = dt_c
+    end if
+    call advance_fluid(prm, st, dt2)
+    !$omp parallel do schedule(static)
+    do i = nb + 1, n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      st%rho(i) = 2.0_rp * st%rho(i) - st%rhoo(i)
+      st%x(i) = 2.0_rp * st%x(i) - st%xo(i)
+      st%z(i) = 2.0_rp * st%z(i) - st%zo(i)
+      st%u(i) = 2.0_rp * st%u(i) - st%uo(i)
+      st%w(i) = 2.0_rp * st%w(i) - st%wo(i)
+    end do
+    !$omp end parallel do
+    call update_eos(prm, st, nb + 1, n)
+    if (dbc_now) then
+      do i = 1, nb
+        st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
+        st%rho(i) = max(2.0_rp * st%rho(i) - st%rhoo(i), prm%rho0)
+      end do
+      call update_eos(prm, st, 1, nb)
+    end if
+
+    info%visc_dt = vmax
+    info%dt_next = merge(min(dt_p, dt_c), dt, prm%variable_dt /= 0)
+    call check_domain(prm, st, info%n_removed, info%bad_particle, status)
+    info%bad_cause = status
+    if (status /= SPH_OK) return
+  end subroutine pc_step
+
+  !> Half step of the fluid from the start-of-step values with the current rates:
+  !> rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g); then EoS.
+  subroutine advance_fluid(prm, st, dt2)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    real(rp), intent(in) :: dt2
+    integer :: i
+    !$omp parallel do schedule(static)
+    do i = st%nb + 1, st%n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
+      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
+      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+      st%x(i) = st%xo(i) + dt2 * (st%u(i) + st%xsph_u(i))
+      st%z(i) = st%zo(i) + dt2 * (st%w(i) + st%xsph_w(i))
+      st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gx)
+      st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gz)
+    end do
+    !$omp end parallel do
+  end subroutine advance_fluid
+
+end module predictor_corrector

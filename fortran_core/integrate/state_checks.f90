@@ -1,0 +1,71 @@
+!> Per-particle checks after a step: particles leaving the domain (removed and counted, as
+!> SPHysics does, or reported), and a blow-up (NaN/Inf, density outside the sane band).
+module state_checks
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, SPH_OK, SPH_ERR_NONFINITE, SPH_ERR_DENSITY, &
+                          SPH_ERR_OUT_OF_DOMAIN
+  use sphjet_types, only: sph_params_t, state_t
+  implicit none
+  private
+  public :: check_domain, check_finite
+
+contains
+
+  !> Fluid particles beyond [dom_xmin, dom_xmax] x [dom_zmin, dom_zmax] leave the domain.
+  !> With remove_out_of_domain they become inactive (velocity zeroed) and are counted;
+  !> otherwise the first one is reported (status SPH_ERR_OUT_OF_DOMAIN, bad = its index).
+  subroutine check_domain(prm, st, n_removed, bad, status)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    integer(i8), intent(out) :: n_removed
+    integer(i8), intent(out) :: bad
+    integer(ip), intent(out) :: status
+    integer :: i
+    n_removed = 0
+    bad = -1
+    status = SPH_OK
+    do i = st%nb + 1, st%n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      if (st%x(i) > prm%dom_xmax .or. st%x(i) < prm%dom_xmin .or. &
+          st%z(i) < prm%dom_zmin .or. st%z(i) > prm%dom_zmax) then
+        if (prm%remove_out_of_domain /= 0) then
+          st%active(i) = 0
+          st%u(i) = 0.0_rp
+          st%w(i) = 0.0_rp
+          n_removed = n_removed + 1
+        else
+          bad = i - 1
+          status = SPH_ERR_OUT_OF_DOMAIN
+          return
+        end if
+      end if
+    end do
+  end subroutine check_domain
+
+  !> First active particle with a non-finite field or a density outside [rho_min, rho_max].
+  subroutine check_finite(prm, st, bad, status)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(in) :: st
+    integer(i8), intent(out) :: bad
+    integer(ip), intent(out) :: status
+    integer :: i
+    bad = -1
+    status = SPH_OK
+    do i = 1, st%n
+      if (st%active(i) == 0) cycle
+      if (.not. (ieee_is_finite(st%x(i)) .and. ieee_is_finite(st%z(i)) .and. &
+                 ieee_is_finite(st%u(i)) .and. ieee_is_finite(st%w(i)) .and. &
+                 ieee_is_finite(st%rho(i)) .and. ieee_is_finite(st%p(i)))) then
+        bad = i - 1
+        status = SPH_ERR_NONFINITE
+        return
+      end if
+      if (prm%rho_max > 0.0_rp .and. (st%rho(i) < prm%rho_min .or. st%rho(i) > prm%rho_max)) then
+        bad = i - 1
+        status = SPH_ERR_DENSITY
+        return
+      end if
+    end do
+  end subroutine check_finite
+
+end module state_checks

@@ -1,0 +1,54 @@
+!> Variable time step (paper eqs 30-32, SPHysics variable_time_step):
+!>   dt_f  = sqrt(h / |f|), f the acceleration (gravity included) of the fluid particle whose
+!>           pair acceleration |a| (gravity excluded) is largest - SPHysics' choice, kept for
+!>           parity; the paper writes min over all particles of sqrt(h/|f_a|);
+!>   dt_cv = h / (max_a c_a + h max_ab (u_ab . r_ab)/(r_ab^2 + eta^2));
+!>   dt    = CFL min(dt_f, dt_cv).
+module time_step
+  use sphjet_kinds, only: rp, ip, KIND_FLUID
+  use sphjet_types, only: sph_params_t, state_t
+  implicit none
+  private
+  public :: cfl_time_step
+
+contains
+
+  subroutine cfl_time_step(prm, st, vmax, dt_f, dt_cv, dt_new)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(in) :: st
+    real(rp), intent(in) :: vmax
+    real(rp), intent(out) :: dt_f, dt_cv, dt_new
+    integer :: i, imax
+    real(rp) :: amax, a2, cmax, fmag
+
+    amax = -1.0_rp
+    cmax = -1.0_rp
+    imax = 0
+    do i = st%nb + 1, st%n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      a2 = st%ax(i) * st%ax(i) + st%az(i) * st%az(i)
+      if (a2 >= amax) then
+        amax = a2
+        imax = i
+      end if
+      cmax = max(cmax, st%c(i))
+    end do
+    if (imax > 0) then
+      fmag = sqrt((st%ax(imax) + prm%gx)**2 + (st%az(imax) + prm%gz)**2)
+    else
+      fmag = sqrt(prm%gx**2 + prm%gz**2)
+    end if
+    if (fmag > 0.0_rp) then
+      dt_f = sqrt(prm%h / fmag)
+    else
+      dt_f = huge(1.0_rp)
+    end if
+    if (cmax > 0.0_rp) then
+      dt_cv = prm%h / (cmax + prm%h * vmax)
+    else
+      dt_cv = dt_f
+    end if
+    dt_new = prm%cfl * min(dt_f, dt_cv)
+  end subroutine cfl_time_step
+
+end module time_step

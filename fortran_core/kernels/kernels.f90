@@ -1,0 +1,79 @@
+!> Kernel selection: the case picks one kernel; its constants are set up once (kernel_t) and
+!> the pair loops call kernel_eval, which returns W and F = (dW/dr)/r so that
+!> grad_a W_ab = F (r_a - r_b).
+module sphjet_kernels
+  use sphjet_kinds, only: rp, ip, KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_WENDLAND
+  use kernel_wendland, only: wendland_norm, wendland_f, wendland_dfdq
+  use kernel_cubic, only: cubic_norm, cubic_f, cubic_dfdq
+  use kernel_quadratic, only: quadratic_norm, quadratic_f, quadratic_dfdq
+  use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq
+  implicit none
+  private
+  public :: kernel_t, kernel_setup, kernel_eval, kernel_w0, kernel_valid
+
+  type :: kernel_t
+    integer(ip) :: kind = KERNEL_WENDLAND
+    real(rp) :: h = 1.0_rp, inv_h = 1.0_rp
+    real(rp) :: aw = 0.0_rp   !< norm / h^2
+    real(rp) :: adw = 0.0_rp  !< norm / h^3
+    real(rp) :: support2 = 4.0_rp  !< (2h)^2
+  end type kernel_t
+
+contains
+
+  pure logical function kernel_valid(kind)
+    integer(ip), intent(in) :: kind
+    kernel_valid = any(kind == [KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_WENDLAND])
+  end function kernel_valid
+
+  pure function kernel_setup(kind, h) result(k)
+    integer(ip), intent(in) :: kind
+    real(rp), intent(in) :: h
+    type(kernel_t) :: k
+    real(rp) :: norm
+    select case (kind)
+    case (KERNEL_GAUSSIAN);  norm = gaussian_norm
+    case (KERNEL_QUADRATIC); norm = quadratic_norm
+    case (KERNEL_CUBIC);     norm = cubic_norm
+    case default;            norm = wendland_norm
+    end select
+    k%kind = kind
+    k%h = h
+    k%inv_h = 1.0_rp / h
+    k%aw = norm / (h * h)
+    k%adw = norm / (h * h * h)
+    k%support2 = 4.0_rp * h * h
+  end function kernel_setup
+
+  !> W and F = (dW/dr)/r at distance r > 0 (r < 2h assumed by callers; 0 beyond).
+  pure subroutine kernel_eval(k, r, w, f)
+    type(kernel_t), intent(in) :: k
+    real(rp), intent(in) :: r
+    real(rp), intent(out) :: w, f
+    real(rp) :: q
+    q = r * k%inv_h
+    select case (k%kind)
+    case (KERNEL_WENDLAND)
+      w = k%aw * wendland_f(q);  f = k%adw * wendland_dfdq(q) / r
+    case (KERNEL_CUBIC)
+      w = k%aw * cubic_f(q);     f = k%adw * cubic_dfdq(q) / r
+    case (KERNEL_QUADRATIC)
+      w = k%aw * quadratic_f(q); f = k%adw * quadratic_dfdq(q) / r
+    case default
+      w = k%aw * gaussian_f(q);  f = k%adw * gaussian_dfdq(q) / r
+    end select
+  end subroutine kernel_eval
+
+  !> W(0), the self contribution of summation formulas.
+  pure function kernel_w0(k) result(w0)
+    type(kernel_t), intent(in) :: k
+    real(rp) :: w0
+    select case (k%kind)
+    case (KERNEL_WENDLAND);  w0 = k%aw * wendland_f(0.0_rp)
+    case (KERNEL_CUBIC);     w0 = k%aw * cubic_f(0.0_rp)
+    case (KERNEL_QUADRATIC); w0 = k%aw * quadratic_f(0.0_rp)
+    case default;            w0 = k%aw * gaussian_f(0.0_rp)
+    end select
+  end function kernel_w0
+
+end module sphjet_kernels

@@ -1,0 +1,31 @@
+!> Viscous pair terms.
+!> Artificial viscosity (Monaghan 1992): Pi_ab = -alpha h cbar (u_ab . r_ab) / (rhobar (r^2 + eta^2))
+!> for approaching pairs (u_ab . r_ab < 0), 0 otherwise; eta^2 = 0.01 h^2.
+!> Laminar viscosity (Lo & Shao 2002): du_a/dt += sum_b m_b 4 nu (r_ab . grad W) /
+!> ((rho_a + rho_b)(r^2 + eta^2)) u_ab.
+module viscosity
+  use sphjet_kinds, only: rp
+  implicit none
+  private
+  public :: artificial_pi, laminar_factor
+
+contains
+
+  pure function artificial_pi(alpha, h, cbar, rhobar, dot, r2, eta2) result(pv)
+    real(rp), intent(in) :: alpha, h, cbar, rhobar, dot, r2, eta2
+    real(rp) :: pv
+    if (dot <= 0.0_rp) then
+      pv = -alpha * cbar * (h * dot / (r2 + eta2)) / rhobar
+    else
+      pv = 0.0_rp
+    end if
+  end function artificial_pi
+
+  !> Factor L such that du_a/dt += m_b L u_ab (and du_b/dt -= m_a L u_ab); f = (dW/dr)/r.
+  pure function laminar_factor(nu, rho_a, rho_b, f, r2, eta2) result(l)
+    real(rp), intent(in) :: nu, rho_a, rho_b, f, r2, eta2
+    real(rp) :: l
+    l = 4.0_rp * nu / (rho_a + rho_b) * (f * r2) / (r2 + eta2)
+  end function laminar_factor
+
+end module viscosity

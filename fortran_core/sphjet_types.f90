@@ -1,0 +1,170 @@
+!> The data layout shared with C++ (mirrored field by field in capi/sphjet_core.h):
+!> the scalar parameters, the particle arrays lent by C++ (pointers + count), and the
+!> per-step report. Internal code sees the arrays through state_t (Fortran pointers).
+module sphjet_types
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_double, c_int, c_int64_t, c_null_ptr, &
+                                         c_associated, c_f_pointer
+  use sphjet_kinds, only: rp, ip, i8
+  implicit none
+  private
+  public :: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
+
+  !> Scalar parameters of a run (C struct sph_params_t).
+  type, bind(C) :: sph_params_t
+    integer(c_int) :: kernel = 5             !< 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland
+    integer(c_int) :: viscosity = 1          !< 1 artificial, 2 laminar
+    integer(c_int) :: boundary = 2           !< 1 repulsive (Monaghan-Kos), 2 dynamic
+    integer(c_int) :: density_filter = 0     !< 0 none, 1 Shepard, 2 MLS
+    integer(c_int) :: tensile = 0            !< 1: tensile-instability correction on
+    integer(c_int) :: dbc_period = 1         !< steps between dynamic-boundary density updates
+    integer(c_int) :: variable_dt = 1        !< 1: dt from CFL each step
+    integer(c_int) :: remove_out_of_domain = 1 !< 1: remove leavers and count, 0: error
+    real(c_double) :: h = 0.0_rp             !< smoothing length [m]
+    real(c_double) :: rho0 = 1000.0_rp       !< reference density [kg/m^3]
+    real(c_double) :: b = 0.0_rp             !< Tait B [Pa]
+    real(c_double) :: gamma = 7.0_rp         !< Tait exponent
+    real(c_double) :: c0 = 0.0_rp            !< sound speed at rho0 [m/s]
+    real(c_double) :: coef = 10.0_rp         !< speed-of-sound coefficient (repulsive walls)
+    real(c_double) :: h_swl = 1.0_rp         !< still-water depth [m] (repulsive walls)
+    real(c_double) :: visc_value = 0.0_rp    !< alpha (artificial) or nu [m^2/s] (laminar)
+    real(c_double) :: wall_viscosity = 0.0_rp !< nu of the repulsive-wall viscous term [m^2/s]
+    real(c_double) :: xsph_eps = 0.5_rp      !< XSPH epsilon
+    real(c_double) :: cfl = 0.2_rp           !< Courant number
+    real(c_double) :: gx = 0.0_rp, gz = -9.81_rp  !< gravity [m/s^2]
+    real(c_double) :: sigma = 0.0_rp         !< surface tension [N/m]; 0 = off
+    real(c_double) :: dom_xmin = 0.0_rp, dom_xmax = 0.0_rp  !< fluid beyond leaves the domain [m]
+    real(c_double) :: dom_zmin = 0.0_rp, dom_zmax = 0.0_rp
+    real(c_double) :: rho_min = 0.0_rp, rho_max = 0.0_rp    !< sane density band [kg/m^3]
+    real(c_double) :: dt_min = 0.0_rp        !< a step below this is a collapse [s]
+  end type sph_params_t
+
+  !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in
+  !> legacy order (boundary first); C++ owns them. Optional arrays may be null.
+  type, bind(C) :: sph_arrays_t
+    integer(c_int64_t) :: n = 0, nb = 0
+    type(c_ptr) :: x = c_null_ptr, z = c_null_ptr, u = c_null_ptr, w = c_null_ptr
+    type(c_ptr) :: rho = c_null_ptr, p = c_null_ptr, c = c_null_ptr, m = c_null_ptr
+    type(c_ptr) :: kind = c_null_ptr, active = c_null_ptr
+    ! integrator work space (start-of-step values and rates)
+    type(c_ptr) :: xo = c_null_ptr, zo = c_null_ptr, uo = c_null_ptr, wo = c_null_ptr
+    type(c_ptr) :: rhoo = c_null_ptr
+    type(c_ptr) :: ax = c_null_ptr, az = c_null_ptr, ar = c_null_ptr
+    type(c_ptr) :: xsph_u = c_null_ptr, xsph_w = c_null_ptr
+    ! repulsive walls: unit normal and spacing to the wall neighbours (boundary particles)
+    type(c_ptr) :: wall_prev = c_null_ptr, wall_next = c_null_ptr  !< int, 0-based
+    type(c_ptr) :: wall_nx = c_null_ptr, wall_nz = c_null_ptr
+    type(c_ptr) :: wall_dback = c_null_ptr, wall_dfwd = c_null_ptr
+    ! surface tension fields (may be null when sigma = 0)
+    type(c_ptr) :: colour = c_null_ptr, st_nx = c_null_ptr, st_nz = c_null_ptr
+    type(c_ptr) :: kappa = c_null_ptr
+  end type sph_arrays_t
+
+  !> What one step did (C struct sph_step_info_t).
+  type, bind(C) :: sph_step_info_t
+    real(c_double) :: dt = 0.0_rp        !< in: step to take; out: step taken [s]
+    real(c_double) :: dt_next = 0.0_rp   !< step for the next call [s]
+    real(c_double) :: dt_f = 0.0_rp, dt_cv = 0.0_rp, dt_new = 0.0_rp  !< last CFL terms [s]
+    real(c_double) :: visc_dt = 0.0_rp   !< max_ab (u_ab . r_ab)/(r^2 + eta^2) [1/s]
+    integer(c_int64_t) :: dbc_counter = 0 !< in/out: steps since last boundary density update
+    integer(c_int64_t) :: n_removed = 0  !< out: particles removed in this step
+    integer(c_int64_t) :: bad_particle = -1 !< out: 0-based index of the offending particle
+    integer(c_int) :: bad_cause = 0      !< out: status code of the failure
+    integer(c_int) :: pad = 0
+  end type sph_step_info_t
+
+  !> Internal view of the arrays.
+  type :: state_t
+    integer :: n = 0, nb = 0
+    real(rp), pointer, contiguous :: x(:) => null(), z(:) => null(), u(:) => null(), w(:) => null()
+    real(rp), pointer, contiguous :: rho(:) => null(), p(:) => null(), c(:) => null(), m(:) => null()
+    integer(ip), pointer, contiguous :: kind(:) => null(), active(:) => null()
+    real(rp), pointer, contiguous :: xo(:) => null(), zo(:) => null(), uo(:) => null(), wo(:) => null()
+    real(rp), pointer, contiguous :: rhoo(:) => null()
+    real(rp), pointer, contiguous :: ax(:) => null(), az(:) => null(), ar(:) => null()
+    real(rp), pointer, contiguous :: xsph_u(:) => null(), xsph_w(:) => null()
+    integer(ip), pointer, contiguous :: wall_prev(:) => null(), wall_next(:) => null()
+    real(rp), pointer, contiguous :: wall_nx(:) => null(), wall_nz(:) => null()
+    real(rp), pointer, contiguous :: wall_dback(:) => null(), wall_dfwd(:) => null()
+    real(rp), pointer, contiguous :: colour(:) => null(), st_nx(:) => null(), st_nz(:) => null()
+    real(rp), pointer, contiguous :: kappa(:) => null()
+  end type state_t
+
+contains
+
+  !> Binds the C arrays to a state_t. ok = .false. if a required pointer is null.
+  !> need_work: integrator arrays required; need_wall: wall arrays required.
+  subroutine bind_state(a, st, need_work, need_wall, ok)
+    type(sph_arrays_t), intent(in) :: a
+    type(state_t), intent(out) :: st
+    logical, intent(in) :: need_work, need_wall
+    logical, intent(out) :: ok
+    integer :: n
+    ok = .false.
+    if (a%n < 0 .or. a%nb < 0 .or. a%nb > a%n) return
+    n = int(a%n)
+    st%n = n
+    st%nb = int(a%nb)
+    if (.not. bindr(a%x, st%x)) return
+    if (.not. bindr(a%z, st%z)) return
+    if (.not. bindr(a%u, st%u)) return
+    if (.not. bindr(a%w, st%w)) return
+    if (.not. bindr(a%rho, st%rho)) return
+    if (.not. bindr(a%p, st%p)) return
+    if (.not. bindr(a%c, st%c)) return
+    if (.not. bindr(a%m, st%m)) return
+    if (.not. bindi(a%kind, st%kind)) return
+    if (.not. bindi(a%active, st%active)) return
+    if (need_work) then
+      if (.not. bindr(a%xo, st%xo)) return
+      if (.not. bindr(a%zo, st%zo)) return
+      if (.not. bindr(a%uo, st%uo)) return
+      if (.not. bindr(a%wo, st%wo)) return
+      if (.not. bindr(a%rhoo, st%rhoo)) return
+      if (.not. bindr(a%ax, st%ax)) return
+      if (.not. bindr(a%az, st%az)) return
+      if (.not. bindr(a%ar, st%ar)) return
+      if (.not. bindr(a%xsph_u, st%xsph_u)) return
+      if (.not. bindr(a%xsph_w, st%xsph_w)) return
+    end if
+    if (need_wall) then
+      if (.not. bindi(a%wall_prev, st%wall_prev)) return
+      if (.not. bindi(a%wall_next, st%wall_next)) return
+      if (.not. bindr(a%wall_nx, st%wall_nx)) return
+      if (.not. bindr(a%wall_nz, st%wall_nz)) return
+      if (.not. bindr(a%wall_dback, st%wall_dback)) return
+      if (.not. bindr(a%wall_dfwd, st%wall_dfwd)) return
+    end if
+    ! optional surface-tension fields
+    if (c_associated(a%colour)) call c_f_pointer(a%colour, st%colour, [n])
+    if (c_associated(a%st_nx)) call c_f_pointer(a%st_nx, st%st_nx, [n])
+    if (c_associated(a%st_nz)) call c_f_pointer(a%st_nz, st%st_nz, [n])
+    if (c_associated(a%kappa)) call c_f_pointer(a%kappa, st%kappa, [n])
+    ok = .true.
+
+  contains
+
+    logical function bindr(cp, fp)
+      type(c_ptr), intent(in) :: cp
+      real(rp), pointer, contiguous, intent(out) :: fp(:)
+      bindr = c_associated(cp) .or. n == 0
+      if (c_associated(cp)) then
+        call c_f_pointer(cp, fp, [n])
+      else
+        fp => null()
+      end if
+    end function bindr
+
+    logical function bindi(cp, fp)
+      type(c_ptr), intent(in) :: cp
+      integer(ip), pointer, contiguous, intent(out) :: fp(:)
+      bindi = c_associated(cp) .or. n == 0
+      if (c_associated(cp)) then
+        call c_f_pointer(cp, fp, [n])
+      else
+        fp => null()
+      end if
+    end function bindi
+
+  end subroutine bind_state
+
+end module sphjet_types
