@@ -5,7 +5,14 @@
 
 namespace sphjet::cli {
 
+// The command line of this invocation, recorded in the outputs.
+void set_command_line(int argc, char** argv);
+
 void register_run(CLI::App& app);
 void register_gen(CLI::App& app);
+void register_bench(CLI::App& app);
+void register_compare(CLI::App& app);
+void register_analyse(CLI::App& app);
+void register_convert(CLI::App& app);
 
 }  // namespace sphjet::cli

@@ -11,8 +11,13 @@ int main(int argc, char** argv) {
                  "surface tension"};
     app.set_version_flag("--version", std::string(SPHJET_VERSION) + " (" SPHJET_GIT_HASH ")");
     app.require_subcommand(1);
+    sphjet::cli::set_command_line(argc, argv);
     sphjet::cli::register_run(app);
     sphjet::cli::register_gen(app);
+    sphjet::cli::register_bench(app);
+    sphjet::cli::register_compare(app);
+    sphjet::cli::register_analyse(app);
+    sphjet::cli::register_convert(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -28,9 +28,35 @@ struct FluidBlock {
     double u0 = 0, w0 = 0;  // initial velocity [m/s]
 };
 
+// Legacy "Add wall": a vertical two-layer wall of boundary particles standing on the floor
+// at x, from z = 0 to height (dynamic boundaries only).
+struct WallSpec {
+    double x = 0, height = 0;
+};
+
+// What a legacy case file carries that the simulation does not use but INDAT records
+// (so that gen -> INDAT -> read_indat keeps them).
+struct LegacyRunInfo {
+    int restart = 0;                 // starting option (only 0, a new run, is supported)
+    double detail_out = 5e-4;        // detailed-recording interval, start, end [s]
+    double detail_start = 1.0;
+    double detail_end = -1.0;
+    int vorticity = 0;               // vorticity printing flag
+    int compiler = 1;                // compiler choice (1 gfortran ... 4 FTN95); not used
+    int xz_precision = 2;            // legacy solver's x/z precision: 1 single, 2 double
+    double h_coefficient = 0;        // h = h_coefficient * sqrt(dx^2 + dz^2)
+};
+
 // Modern-format shapes (not expressible in a legacy case file).
 struct FluidDisc {
     double xc = 0, zc = 0, radius = 0;
+    double u0 = 0, w0 = 0;
+};
+
+// A square of fluid, sides parallel to the axes (the classic surface-tension test: a square
+// drop relaxes to a circle). Filled on the case lattice like a FluidBlock.
+struct FluidSquare {
+    double xc = 0, zc = 0, side = 0;
     double u0 = 0, w0 = 0;
 };
 
@@ -54,7 +80,15 @@ struct CaseSpec {
     std::vector<ObstacleSpec> obstacles;
     std::vector<FluidBlock> fluid_blocks;
     std::vector<FluidDisc> fluid_discs;
+    std::vector<FluidSquare> fluid_squares;
     OutputSpec output;
+    std::vector<WallSpec> walls;  // legacy "Add wall" (dynamic boundaries)
+    LegacyRunInfo legacy;
+    // True for a legacy case file: fluid blocks are filled exactly as SPHYSICSgen2D fills them
+    // (from the floor up, whatever ZMin says, and never above h_SWL). False: blocks, squares
+    // and discs take the lattice points inside them (geometry/generator.hpp).
+    bool legacy_fill = false;
+    std::vector<std::string> warnings;  // things the reader accepted but a user should know
 };
 
 }  // namespace sphjet

@@ -1,0 +1,1209 @@
+#include "config/modern_case.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include <toml++/toml.h>
+
+#include "config/errors.hpp"
+
+namespace sphjet {
+
+// ---------------------------------------------------------------------------------------
+// Derived quantities
+// ---------------------------------------------------------------------------------------
+
+double tait_B_from_c0(double rho0, double c0, double gamma) { return rho0 * c0 * c0 / gamma; }
+
+double tait_B_from_coef(double coef, double rho0, double g, double h_swl, double gamma) {
+    return coef * coef * rho0 * g * h_swl / gamma;
+}
+
+double alpha_from_nu(double nu, double h, double c0) { return 8.0 * nu / (h * c0); }
+
+namespace {
+
+double f32(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+// SPHYSICSgen_2D's arithmetic (single precision, left to right); the same numbers as
+// read_legacy_case (config/legacy_case.cpp) for rho0 = 1000, g = 9.81, gamma = 7.
+double tait_B_from_coef_single(double coef, double rho0, double g, double h_swl, double gamma) {
+    const float c = static_cast<float>(coef);
+    float b = c * c;
+    b = b * static_cast<float>(rho0);
+    b = b * static_cast<float>(g);
+    b = b * static_cast<float>(h_swl);
+    b = b / static_cast<float>(gamma);
+    return b;
+}
+
+double h_from_coefficient(double coefficient, double dx, double dz, bool single) {
+    const double root = std::sqrt(dx * dx + dz * dz);
+    return single ? f32(f32(coefficient) * root) : coefficient * root;
+}
+
+}  // namespace
+
+bool looks_like_modern_case(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".toml";
+}
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// The schema: every key the format knows, with its TOML type. Sections are the prefixes;
+// "name[]" is an array of tables ([[name]] in the file).
+// ---------------------------------------------------------------------------------------
+
+enum class Kind { Float, Int, Bool, String };
+
+struct KeySpec {
+    std::string_view path;
+    Kind kind;
+};
+
+constexpr KeySpec kKeys[] = {
+    {"format_version", Kind::Int},
+    // [numerics]
+    {"numerics.kernel", Kind::String},
+    {"numerics.integrator", Kind::String},
+    {"numerics.density_filter", Kind::String},
+    {"numerics.filter_period", Kind::Int},
+    {"numerics.viscosity", Kind::String},
+    {"numerics.alpha", Kind::Float},
+    {"numerics.xsph_eps", Kind::Float},
+    {"numerics.tensile_correction", Kind::String},
+    {"numerics.boundary", Kind::String},
+    {"numerics.dbc_period", Kind::Int},
+    {"numerics.wall_viscosity", Kind::Float},
+    {"numerics.lattice", Kind::String},
+    // [fluid]
+    {"fluid.rho0", Kind::Float},
+    {"fluid.gamma", Kind::Float},
+    {"fluid.c0", Kind::Float},
+    {"fluid.coef", Kind::Float},
+    {"fluid.h_swl", Kind::Float},
+    {"fluid.mu", Kind::Float},
+    {"fluid.nu", Kind::Float},
+    {"fluid.block[].xmin", Kind::Float},
+    {"fluid.block[].xmax", Kind::Float},
+    {"fluid.block[].zmin", Kind::Float},
+    {"fluid.block[].zmax", Kind::Float},
+    {"fluid.block[].u0", Kind::Float},
+    {"fluid.block[].w0", Kind::Float},
+    {"fluid.disc[].xc", Kind::Float},
+    {"fluid.disc[].zc", Kind::Float},
+    {"fluid.disc[].radius", Kind::Float},
+    {"fluid.disc[].u0", Kind::Float},
+    {"fluid.disc[].w0", Kind::Float},
+    {"fluid.square[].xc", Kind::Float},
+    {"fluid.square[].zc", Kind::Float},
+    {"fluid.square[].side", Kind::Float},
+    {"fluid.square[].u0", Kind::Float},
+    {"fluid.square[].w0", Kind::Float},
+    // [surface_tension]
+    {"surface_tension.sigma", Kind::Float},
+    // [gravity]
+    {"gravity.gx", Kind::Float},
+    {"gravity.gz", Kind::Float},
+    // [domain]
+    {"domain.lx", Kind::Float},
+    {"domain.lz", Kind::Float},
+    {"domain.wall_left", Kind::Bool},
+    {"domain.wall_right", Kind::Bool},
+    {"domain.wall_bottom", Kind::Bool},
+    {"domain.wall_top", Kind::Bool},
+    {"domain.floor_inclination_deg", Kind::Float},
+    // [resolution]
+    {"resolution.dx", Kind::Float},
+    {"resolution.dz", Kind::Float},
+    {"resolution.h", Kind::Float},
+    {"resolution.h_coefficient", Kind::Float},
+    {"resolution.h_over_dx", Kind::Float},
+    // [time]
+    {"time.tmax", Kind::Float},
+    {"time.dt", Kind::Float},
+    {"time.variable_dt", Kind::Bool},
+    {"time.cfl", Kind::Float},
+    {"time.out", Kind::Float},
+    {"time.trec_ini", Kind::Float},
+    // [[obstacle]]
+    {"obstacle[].shape", Kind::String},
+    {"obstacle[].kind", Kind::String},
+    {"obstacle[].density", Kind::Int},
+    {"obstacle[].xmin", Kind::Float},
+    {"obstacle[].xmax", Kind::Float},
+    {"obstacle[].zmin", Kind::Float},
+    {"obstacle[].zmax", Kind::Float},
+    {"obstacle[].beta_deg", Kind::Float},
+    // [[wall]]: legacy "Add wall"
+    {"wall[].x", Kind::Float},
+    {"wall[].height", Kind::Float},
+    // [legacy]: what a converted legacy case carries
+    {"legacy.fill", Kind::Bool},
+    {"legacy.single_precision", Kind::Bool},
+    {"legacy.h_coefficient", Kind::Float},
+    {"legacy.detail_out", Kind::Float},
+    {"legacy.detail_start", Kind::Float},
+    {"legacy.detail_end", Kind::Float},
+    {"legacy.vorticity", Kind::Bool},
+    {"legacy.compiler", Kind::Int},
+    {"legacy.xz_precision", Kind::String},
+    // [output]
+    {"output.format", Kind::String},
+    {"output.checkpoint_every_steps", Kind::Int},
+    {"output.checkpoint_every_minutes", Kind::Float},
+    {"output.remove_out_of_domain", Kind::Bool},
+    {"output.rho_min_factor", Kind::Float},
+    {"output.rho_max_factor", Kind::Float},
+    {"output.dt_min", Kind::Float},
+};
+
+const KeySpec* find_key(std::string_view pattern) {
+    for (const auto& k : kKeys)
+        if (k.path == pattern) return &k;
+    return nullptr;
+}
+
+const std::set<std::string>& sections() {
+    static const std::set<std::string> s = [] {
+        std::set<std::string> out;
+        for (const auto& k : kKeys) {
+            std::string_view p = k.path;
+            for (std::size_t i = 0; i < p.size(); ++i)
+                if (p[i] == '.') out.emplace(p.substr(0, i));
+        }
+        return out;
+    }();
+    return s;
+}
+
+bool is_section(const std::string& pattern) { return sections().count(pattern) > 0; }
+
+std::string join(const std::string& prefix, std::string_view key) {
+    return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
+}
+
+// Direct children of a section pattern ("" = top level), as written in a file:
+// "kernel", "block" (for "fluid.block[]"), ...
+std::vector<std::string> children(const std::string& prefix) {
+    std::set<std::string> out;
+    const std::string lead = prefix.empty() ? "" : prefix + ".";
+    for (const auto& k : kKeys) {
+        std::string_view p = k.path;
+        if (p.substr(0, lead.size()) != lead) continue;
+        std::string_view rest = p.substr(lead.size());
+        rest = rest.substr(0, rest.find('.'));
+        if (rest.size() > 2 && rest.substr(rest.size() - 2) == "[]") rest.remove_suffix(2);
+        out.emplace(rest);
+    }
+    return {out.begin(), out.end()};
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (same ? 0 : 1)});
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& options) {
+    std::optional<std::string> best;
+    std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const auto& o : options) {
+        std::size_t d = edit_distance(word, o);
+        // "cubic" for "cubic_spline": a prefix of three or more letters is a near miss.
+        if (word.size() >= 3 && word.size() < o.size() &&
+            edit_distance(word, std::string_view(o).substr(0, word.size())) == 0)
+            d = std::min<std::size_t>(d, 1);
+        if (d < best_d) best_d = d, best = o;
+    }
+    return best;
+}
+
+std::string list(const std::vector<std::string>& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+    return s;
+}
+
+// Shortest text that reads back as the same double, always a TOML float.
+std::string num(double v) {
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    std::array<char, 64> buf{};
+    auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+    std::string s(buf.data(), res.ptr);
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string dquote(std::string_view s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string describe(const toml::node& n) {
+    std::ostringstream os;
+    switch (n.type()) {
+        case toml::node_type::table: return "a table";
+        case toml::node_type::array: return "an array";
+        case toml::node_type::string: os << "the string "; break;
+        case toml::node_type::integer: os << "the integer "; break;
+        case toml::node_type::floating_point: os << "the float "; break;
+        case toml::node_type::boolean: os << "the boolean "; break;
+        default: os << "the date/time "; break;
+    }
+    if (auto str = n.value_exact<std::string>())
+        os << dquote(*str);
+    else
+        n.visit([&os](const auto& v) {
+            if constexpr (toml::is_value<decltype(v)>) os << v;
+        });
+    return os.str();
+}
+
+
+// Array index segment "name[3]" -> ("name", 3); plain "name" -> ("name", nullopt).
+std::pair<std::string, std::optional<std::size_t>> split_index(const std::string& seg) {
+    const auto open = seg.find('[');
+    if (open == std::string::npos || seg.back() != ']') return {seg, std::nullopt};
+    const std::string digits = seg.substr(open + 1, seg.size() - open - 2);
+    std::size_t idx = 0;
+    auto res = std::from_chars(digits.data(), digits.data() + digits.size(), idx);
+    if (digits.empty() || res.ec != std::errc{} || res.ptr != digits.data() + digits.size())
+        return {seg, std::nullopt};
+    return {seg.substr(0, open), idx};
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading context: the file name and where each overridden key came from.
+// ---------------------------------------------------------------------------------------
+
+struct Ctx {
+    std::string file;
+    std::map<std::string, std::string> overridden;  // actual key path -> override text
+
+    std::string where(const std::string& path, const toml::node* n = nullptr) const {
+        std::string w = file + ": " + path;
+        if (auto it = overridden.find(path); it != overridden.end())
+            w += " (set by override '" + it->second + "')";
+        else if (n != nullptr && n->source().begin.line > 0)
+            w += " (line " + std::to_string(n->source().begin.line) + ")";
+        return w;
+    }
+};
+
+template <class T>
+struct Field {
+    T value;
+    std::string where;
+};
+
+std::string found_text(double v) { return num(v); }
+std::string found_text(std::int64_t v) { return std::to_string(v); }
+std::string found_text(const std::string& v) { return dquote(v); }
+
+template <class T>
+[[noreturn]] void fail(const Field<T>& f, const std::string& problem, const std::string& expected) {
+    throw InputError(f.where, problem, expected, found_text(f.value));
+}
+
+// A view of one table of the file with its key path ("fluid.block[2]").
+class Section {
+public:
+    Section(const Ctx& ctx, const toml::table* t, std::string path)
+        : ctx_(ctx), t_(t), path_(std::move(path)) {}
+
+    [[nodiscard]] const std::string& path() const { return path_; }
+    [[nodiscard]] std::string key_path(std::string_view key) const { return join(path_, key); }
+    [[nodiscard]] bool has(std::string_view key) const {
+        return t_ != nullptr && t_->get(key) != nullptr;
+    }
+
+    [[nodiscard]] std::optional<Field<double>> num(std::string_view key) const {
+        const toml::node* n = node(key);
+        if (n == nullptr) return std::nullopt;
+        double v = 0;
+        if (auto f = n->value_exact<double>())
+            v = *f;
+        else if (auto i = n->value_exact<std::int64_t>())
+            v = static_cast<double>(*i);
+        else
+            wrong_type(key, n, "a number");
+        Field<double> f{v, ctx_.where(key_path(key), n)};
+        if (!std::isfinite(v)) fail(f, "not a finite number", "a finite number");
+        return f;
+    }
+    [[nodiscard]] std::optional<Field<std::int64_t>> integer(std::string_view key) const {
+        const toml::node* n = node(key);
+        if (n == nullptr) return std::nullopt;
+        auto i = n->value_exact<std::int64_t>();
+        if (!i) wrong_type(key, n, "an integer");
+        return Field<std::int64_t>{*i, ctx_.where(key_path(key), n)};
+    }
+    [[nodiscard]] std::optional<Field<bool>> boolean(std::string_view key) const {
+        const toml::node* n = node(key);
+        if (n == nullptr) return std::nullopt;
+        auto b = n->value_exact<bool>();
+        if (!b) wrong_type(key, n, "a boolean (true or false)");
+        return Field<bool>{*b, ctx_.where(key_path(key), n)};
+    }
+    [[nodiscard]] std::optional<Field<std::string>> string(std::string_view key) const {
+        const toml::node* n = node(key);
+        if (n == nullptr) return std::nullopt;
+        auto s = n->value_exact<std::string>();
+        if (!s) wrong_type(key, n, "a string");
+        return Field<std::string>{*s, ctx_.where(key_path(key), n)};
+    }
+
+    [[nodiscard]] Field<double> required_num(std::string_view key, const std::string& expected) const {
+        if (auto f = num(key)) return *f;
+        throw InputError(ctx_.where(key_path(key)), "missing required key", expected, "nothing");
+    }
+
+    // Sets `out` when the key is present.
+    void get(std::string_view key, double& out) const {
+        if (auto f = num(key)) out = f->value;
+    }
+    void get(std::string_view key, bool& out) const {
+        if (auto f = boolean(key)) out = f->value;
+    }
+
+    [[nodiscard]] std::vector<Section> array_of_tables(std::string_view key) const {
+        std::vector<Section> out;
+        const toml::node* n = node(key);
+        if (n == nullptr) return out;
+        const toml::array* arr = n->as_array();
+        for (std::size_t i = 0; i < arr->size(); ++i)
+            out.emplace_back(ctx_, arr->get(i)->as_table(),
+                             key_path(key) + "[" + std::to_string(i) + "]");
+        return out;
+    }
+    [[nodiscard]] Section sub(std::string_view key) const {
+        const toml::node* n = node(key);
+        return {ctx_, n != nullptr ? n->as_table() : nullptr, key_path(key)};
+    }
+
+private:
+    [[nodiscard]] const toml::node* node(std::string_view key) const {
+        return t_ == nullptr ? nullptr : t_->get(key);
+    }
+    [[noreturn]] void wrong_type(std::string_view key, const toml::node* n,
+                                 const std::string& expected) const {
+        throw InputError(ctx_.where(key_path(key), n), "wrong type", expected, describe(*n));
+    }
+
+    const Ctx& ctx_;
+    const toml::table* t_;
+    std::string path_;
+};
+
+template <class E>
+E choose(const Field<std::string>& f, std::initializer_list<std::pair<std::string_view, E>> options) {
+    std::vector<std::string> names;
+    for (const auto& [name, e] : options) {
+        if (f.value == name) return e;
+        names.emplace_back(name);
+    }
+    std::string problem = "unknown value";
+    if (auto c = closest(f.value, names)) problem += " (did you mean \"" + *c + "\"?)";
+    std::vector<std::string> q;
+    for (const auto& n : names) q.push_back(dquote(n));
+    fail(f, problem, "one of " + list(q));
+}
+
+// ---------------------------------------------------------------------------------------
+// Unknown keys: walk the whole tree against the schema.
+// ---------------------------------------------------------------------------------------
+
+// "[numerics]", "[[fluid.block]]" or "the top level", for messages.
+std::string section_name(const std::string& pattern) {
+    if (pattern.empty()) return "the top level";
+    if (pattern.size() > 2 && pattern.substr(pattern.size() - 2) == "[]")
+        return "[[" + pattern.substr(0, pattern.size() - 2) + "]]";
+    return "[" + pattern + "]";
+}
+
+[[noreturn]] void unknown_key(const Ctx& ctx, const std::string& pattern_prefix,
+                              const std::string& actual_path, std::string_view key,
+                              const toml::node* n) {
+    const auto options = children(pattern_prefix);
+    std::string problem = "unknown key";
+    if (auto c = closest(key, options)) {
+        problem += " (did you mean '" + join(pattern_prefix, *c) + "'?)";
+    } else {
+        // The right name in the wrong section?
+        for (const auto& k : kKeys) {
+            const std::string p(k.path);
+            const auto dot = p.rfind('.');
+            const std::string leaf = dot == std::string::npos ? p : p.substr(dot + 1);
+            if (leaf == key) {
+                problem += " here (it is a key of " +
+                           section_name(dot == std::string::npos ? "" : p.substr(0, dot)) + ")";
+                break;
+            }
+        }
+    }
+    throw InputError(ctx.where(actual_path, n), problem,
+                     "one of the keys of " + section_name(pattern_prefix) + ": " + list(options),
+                     dquote(key));
+}
+
+void check_keys(const Ctx& ctx, const toml::table& t, const std::string& pattern_prefix,
+                const std::string& actual_prefix) {
+    for (auto&& [k, node] : t) {
+        const std::string key(k.str());
+        const std::string pat = join(pattern_prefix, key);
+        const std::string act = join(actual_prefix, key);
+        if (find_key(pat) != nullptr) continue;  // a leaf: its type is checked when read
+        if (is_section(pat)) {
+            if (!node.is_table())
+                throw InputError(ctx.where(act, &node), "wrong type",
+                                 "a table [" + pat + "]", describe(node));
+            check_keys(ctx, *node.as_table(), pat, act);
+            continue;
+        }
+        if (is_section(pat + "[]")) {
+            const toml::array* arr = node.as_array();
+            const bool tables = arr != nullptr &&
+                std::all_of(arr->begin(), arr->end(), [](const toml::node& e) { return e.is_table(); });
+            if (!tables)
+                throw InputError(ctx.where(act, &node), "wrong type",
+                                 "an array of tables, written [[" + pat + "]]", describe(node));
+            for (std::size_t i = 0; i < arr->size(); ++i)
+                check_keys(ctx, *arr->get(i)->as_table(), pat + "[]",
+                           act + "[" + std::to_string(i) + "]");
+            continue;
+        }
+        unknown_key(ctx, pattern_prefix, act, key, &node);
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Overrides: key.path=value, applied to the tree before validation.
+// ---------------------------------------------------------------------------------------
+
+std::string trim(std::string_view s) {
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string_view::npos) return {};
+    const auto e = s.find_last_not_of(" \t");
+    return std::string(s.substr(b, e - b + 1));
+}
+
+void apply_override(Ctx& ctx, toml::table& root, const std::string& text) {
+    const std::string where = "override '" + text + "'";
+    const auto eq = text.find('=');
+    if (eq == std::string::npos)
+        throw InputError(where, "not of the form key.path=value", "key.path=value",
+                         dquote(text));
+    const std::string path = trim(std::string_view(text).substr(0, eq));
+    const std::string value = trim(std::string_view(text).substr(eq + 1));
+
+    std::vector<std::string> segs;
+    for (std::size_t b = 0;;) {
+        const auto d = path.find('.', b);
+        segs.push_back(path.substr(b, d == std::string::npos ? std::string::npos : d - b));
+        if (d == std::string::npos) break;
+        b = d + 1;
+    }
+
+    // The key must exist in the schema.
+    std::string pattern, pattern_prefix;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+        auto [name, idx] = split_index(segs[i]);
+        if (name.empty())
+            throw InputError(where, "empty key segment", "key.path=value", dquote(path));
+        pattern_prefix = pattern;
+        pattern = join(pattern, name) + (idx ? "[]" : "");
+    }
+    if (find_key(pattern) == nullptr) {
+        std::string problem = "unknown key";
+        const std::string last = split_index(segs.back()).first;
+        if (is_section(pattern) || is_section(pattern + "[]")) {
+            problem = "names a section, not a key";
+        } else if (auto c = closest(last, children(pattern_prefix)); c && find_key(join(pattern_prefix, *c))) {
+            problem += " (did you mean '" + join(pattern_prefix, *c) + "'?)";
+        } else {
+            // "fluid.block.u0" for "fluid.block[0].u0"?
+            for (const auto& k : kKeys) {
+                std::string p(k.path);
+                p.erase(std::remove(p.begin(), p.end(), '['), p.end());
+                p.erase(std::remove(p.begin(), p.end(), ']'), p.end());
+                if (p == pattern) {
+                    problem += " (elements of an array of tables are named with an index, e.g. '" +
+                               std::string(k.path).replace(std::string(k.path).find("[]"), 2, "[0]") +
+                               "')";
+                    break;
+                }
+            }
+        }
+        throw InputError(where, problem, "a key listed in cases/CASE_FORMAT.md", dquote(path));
+    }
+
+    // Parse the value as TOML; what does not parse (a bare word) is a string.
+    toml::table parsed;
+    bool ok = false;
+    try {
+        parsed = toml::parse("v = " + value);
+        ok = parsed.size() == 1 && parsed.get("v") != nullptr;
+    } catch (const toml::parse_error&) {
+        ok = false;
+    }
+    if (!ok) {
+        parsed = toml::table{};
+        parsed.insert_or_assign("v", value);
+    }
+
+    // Walk down the tree, creating missing tables.
+    toml::table* t = &root;
+    std::string actual, array_name;
+    for (std::size_t i = 0; i + 1 < segs.size(); ++i) {
+        auto [name, idx] = split_index(segs[i]);
+        array_name = join(actual, name);
+        actual = join(actual, segs[i]);
+        toml::node* n = t->get(name);
+        if (!idx) {
+            if (n == nullptr) n = &t->insert_or_assign(name, toml::table{}).first->second;
+            if (!n->is_table())
+                throw InputError(where, "cannot set a key inside " + actual, "a table",
+                                 describe(*n));
+            t = n->as_table();
+        } else {
+            toml::array* arr = n != nullptr ? n->as_array() : nullptr;
+            const std::size_t size = arr != nullptr ? arr->size() : 0;
+            if (arr == nullptr || *idx >= size || !arr->get(*idx)->is_table())
+                throw InputError(where, "no such element in the case file",
+                                 "an index below the number of [[" + array_name +
+                                     "]] entries (" + std::to_string(size) + ")",
+                                 dquote(segs[i]));
+            t = arr->get(*idx)->as_table();
+        }
+    }
+    t->insert_or_assign(split_index(segs.back()).first, std::move(*parsed.get("v")));
+    ctx.overridden[path] = text;
+}
+
+// ---------------------------------------------------------------------------------------
+// From the tree to a CaseSpec.
+// ---------------------------------------------------------------------------------------
+
+void positive(const Field<double>& f) {
+    if (!(f.value > 0)) fail(f, "must be positive", "a number > 0");
+}
+void non_negative(const Field<double>& f) {
+    if (!(f.value >= 0)) fail(f, "must not be negative", "a number >= 0");
+}
+void at_least(const Field<std::int64_t>& f, std::int64_t lo) {
+    if (f.value < lo) fail(f, "out of range", "an integer >= " + std::to_string(lo));
+}
+int to_int(const Field<std::int64_t>& f) {
+    if (f.value > 1000000000) fail(f, "out of range", "an integer <= 1000000000");
+    return static_cast<int>(f.value);
+}
+
+struct Box {
+    double lx, lz;
+};
+
+// A coordinate of a region must lie in [0, L] (with a tolerance for round-off).
+void inside(const Field<double>& f, double L, const char* axis, const char* what) {
+    const double tol = 1e-9 * std::max(L, 1.0);
+    if (f.value < -tol || f.value > L + tol)
+        fail(f, std::string(what) + " outside the box",
+             std::string(axis) + " in [0, " + num(L) + "] (domain." + (axis[0] == 'x' ? "lx" : "lz") + ")");
+}
+
+Rect read_rect(const Section& s, const Box& box, const char* what) {
+    const auto xmin = s.required_num("xmin", "the left edge [m]");
+    const auto xmax = s.required_num("xmax", "the right edge [m]");
+    const auto zmin = s.required_num("zmin", "the bottom edge [m]");
+    const auto zmax = s.required_num("zmax", "the top edge [m]");
+    if (!(xmax.value > xmin.value)) fail(xmax, "empty region", "xmax > xmin = " + num(xmin.value));
+    if (!(zmax.value > zmin.value)) fail(zmax, "empty region", "zmax > zmin = " + num(zmin.value));
+    inside(xmin, box.lx, "x", what);
+    inside(xmax, box.lx, "x", what);
+    inside(zmin, box.lz, "z", what);
+    inside(zmax, box.lz, "z", what);
+    return {xmin.value, xmax.value, zmin.value, zmax.value};
+}
+
+// Centre +- half extent must lie inside the box.
+void centred_inside(const Field<double>& xc, const Field<double>& zc, const Field<double>& size,
+                    double half, const Box& box, const char* what) {
+    const double tol = 1e-9 * std::max({box.lx, box.lz, 1.0});
+    if (xc.value - half < -tol || xc.value + half > box.lx + tol)
+        fail(xc, std::string(what) + " outside the box",
+             "xc - " + num(half) + " >= 0 and xc + " + num(half) + " <= domain.lx = " + num(box.lx));
+    if (zc.value - half < -tol || zc.value + half > box.lz + tol)
+        fail(zc, std::string(what) + " outside the box",
+             "zc - " + num(half) + " >= 0 and zc + " + num(half) + " <= domain.lz = " + num(box.lz));
+    (void)size;
+}
+
+CaseSpec build(const Ctx& ctx, const toml::table& root) {
+    CaseSpec spec;
+    spec.source = ctx.file;
+    SimParams& p = spec.params;
+    const Section top(ctx, &root, "");
+
+    if (auto v = top.integer("format_version"); v && v->value != 1)
+        fail(*v, "unsupported format version", "1");
+
+    // [legacy]: read first, single_precision changes how B and h are derived.
+    const Section leg = top.sub("legacy");
+    bool single = false;
+    leg.get("fill", spec.legacy_fill);
+    leg.get("single_precision", single);
+    LegacyRunInfo& info = spec.legacy;
+    leg.get("detail_out", info.detail_out);
+    leg.get("detail_start", info.detail_start);
+    leg.get("detail_end", info.detail_end);
+    if (auto f = leg.boolean("vorticity")) info.vorticity = f->value ? 1 : 0;
+    if (auto f = leg.integer("compiler")) {
+        if (f->value < 1 || f->value > 4) fail(*f, "out of range", "1 (gfortran), 2 (ifort), 3 (win_ifort) or 4 (FTN95)");
+        info.compiler = to_int(*f);
+    }
+    if (auto f = leg.string("xz_precision"))
+        info.xz_precision = choose<int>(*f, {{"single", 1}, {"double", 2}});
+    const auto legacy_h_coef = leg.num("h_coefficient");
+    if (legacy_h_coef) positive(*legacy_h_coef), info.h_coefficient = legacy_h_coef->value;
+
+    // [numerics] (everything but the viscosity value, which needs h and c0)
+    const Section num_s = top.sub("numerics");
+    if (auto f = num_s.string("kernel"))
+        p.kernel = choose<KernelType>(*f, {{"gaussian", KernelType::Gaussian},
+                                           {"quadratic", KernelType::Quadratic},
+                                           {"cubic_spline", KernelType::CubicSpline},
+                                           {"wendland", KernelType::Wendland}});
+    if (auto f = num_s.string("integrator"))
+        p.integrator = choose<Integrator>(*f, {{"predictor_corrector", Integrator::PredictorCorrector}});
+    if (auto f = num_s.string("density_filter"))
+        p.density_filter = choose<DensityFilter>(*f, {{"none", DensityFilter::None},
+                                                      {"shepard", DensityFilter::Shepard},
+                                                      {"mls", DensityFilter::MLS}});
+    if (auto f = num_s.integer("filter_period")) at_least(*f, 1), p.filter_period = to_int(*f);
+    if (auto f = num_s.string("viscosity"))
+        p.viscosity = choose<ViscosityModel>(*f, {{"artificial", ViscosityModel::Artificial},
+                                                  {"laminar", ViscosityModel::Laminar}});
+    if (auto f = num_s.num("xsph_eps")) {
+        if (!(f->value >= 0 && f->value <= 1)) fail(*f, "out of range", "a number in [0, 1]");
+        p.xsph_eps = f->value;
+    }
+    if (auto f = num_s.string("tensile_correction"))
+        p.tensile_correction = choose<int>(*f, {{"auto", -1}, {"on", 1}, {"off", 0}});
+    if (auto f = num_s.string("boundary"))
+        p.boundary = choose<BoundaryType>(*f, {{"repulsive", BoundaryType::Repulsive},
+                                               {"dynamic", BoundaryType::Dynamic}});
+    if (auto f = num_s.integer("dbc_period")) at_least(*f, 1), p.dbc_period = to_int(*f);
+    if (auto f = num_s.num("wall_viscosity")) non_negative(*f), p.wall_viscosity = f->value;
+    if (auto f = num_s.string("lattice"))
+        p.lattice = choose<Lattice>(*f, {{"sc", Lattice::SimpleCubic}, {"bcc", Lattice::BodyCentred}});
+
+    // [gravity]
+    const Section grav = top.sub("gravity");
+    grav.get("gx", p.gx);
+    grav.get("gz", p.gz);
+
+    // [surface_tension]
+    if (auto f = top.sub("surface_tension").num("sigma")) non_negative(*f), p.sigma = f->value;
+
+    // [fluid]: equation of state
+    const Section fluid = top.sub("fluid");
+    if (auto f = fluid.num("rho0")) positive(*f), p.rho0 = f->value;
+    if (auto f = fluid.num("gamma")) positive(*f), p.gamma = f->value;
+    const auto c0 = fluid.num("c0");
+    const auto coef = fluid.num("coef");
+    const auto h_swl = fluid.num("h_swl");
+    if (c0) {
+        if (coef || h_swl)
+            fail(*c0, "give the sound speed either as c0 or through coef and h_swl, not both",
+                 "fluid.c0 alone, or fluid.coef with fluid.h_swl");
+        positive(*c0);
+        p.h_swl = 0;  // marks "c0 given directly"; coef is then unused
+        p.B = tait_B_from_c0(p.rho0, c0->value, p.gamma);
+    } else if (coef || h_swl) {
+        if (!coef)
+            throw InputError(ctx.where(fluid.key_path("coef")), "missing required key",
+                             "fluid.coef together with fluid.h_swl (c0 = coef sqrt(g h_swl))", "nothing");
+        if (!h_swl)
+            throw InputError(ctx.where(fluid.key_path("h_swl")), "missing required key",
+                             "fluid.h_swl together with fluid.coef (c0 = coef sqrt(g h_swl))", "nothing");
+        positive(*coef);
+        positive(*h_swl);
+        const double g = std::abs(p.gz);
+        if (!(g > 0))
+            fail(*coef, "coef and h_swl need gravity (c0 = coef sqrt(|gz| h_swl)) but gravity.gz = 0",
+                 "fluid.c0 given directly when gz = 0");
+        p.coef = coef->value;
+        p.h_swl = h_swl->value;
+        p.B = single ? tait_B_from_coef_single(p.coef, p.rho0, g, p.h_swl, p.gamma)
+                     : tait_B_from_coef(p.coef, p.rho0, g, p.h_swl, p.gamma);
+    } else {
+        throw InputError(ctx.where(fluid.key_path("c0")), "missing required key",
+                         "fluid.c0 [m/s], or fluid.coef with fluid.h_swl [m]", "nothing");
+    }
+
+    // [resolution]
+    const Section res = top.sub("resolution");
+    const auto dx = res.required_num("dx", "the particle spacing in x [m]");
+    positive(dx);
+    p.dx = dx.value;
+    p.dz = dx.value;
+    if (auto f = res.num("dz")) positive(*f), p.dz = f->value;
+    const auto h = res.num("h");
+    const auto h_coef = res.num("h_coefficient");
+    const auto h_over = res.num("h_over_dx");
+    const int n_h = int(h.has_value()) + int(h_coef.has_value()) + int(h_over.has_value());
+    if (n_h == 0)
+        throw InputError(ctx.where(res.key_path("h")), "missing required key",
+                         "one of resolution.h [m], resolution.h_coefficient, resolution.h_over_dx",
+                         "nothing");
+    if (n_h > 1) {
+        const auto& f = h ? *h : *h_coef;
+        fail(f, "give the smoothing length one way only",
+             "exactly one of resolution.h, resolution.h_coefficient, resolution.h_over_dx");
+    }
+    if (h) positive(*h), p.h = h->value;
+    if (h_coef) {
+        positive(*h_coef);
+        if (legacy_h_coef)
+            fail(*legacy_h_coef, "the h coefficient is given twice",
+                 "resolution.h_coefficient alone (legacy.h_coefficient only records it beside resolution.h)");
+        p.h = h_from_coefficient(h_coef->value, p.dx, p.dz, single);
+        info.h_coefficient = h_coef->value;
+    }
+    if (h_over) positive(*h_over), p.h = h_over->value * p.dx;
+
+    // Viscosity: numerics.alpha, fluid.nu or fluid.mu (at most one).
+    const auto alpha = num_s.num("alpha");
+    const auto nu = fluid.num("nu");
+    const auto mu = fluid.num("mu");
+    if (int(alpha.has_value()) + int(nu.has_value()) + int(mu.has_value()) > 1) {
+        const auto& f = alpha ? *alpha : *nu;
+        fail(f, "give the viscosity one way only",
+             "one of numerics.alpha, fluid.nu [m^2/s], fluid.mu [Pa s]");
+    }
+    std::optional<double> nu_phys;
+    if (nu) non_negative(*nu), nu_phys = nu->value;
+    if (mu) non_negative(*mu), nu_phys = mu->value / p.rho0;
+    if (p.viscosity == ViscosityModel::Artificial) {
+        if (alpha) non_negative(*alpha), p.visc_value = alpha->value;
+        if (nu_phys) p.visc_value = alpha_from_nu(*nu_phys, p.h, p.c0());
+    } else {
+        if (alpha)
+            fail(*alpha, "alpha is the artificial-viscosity coefficient but numerics.viscosity is \"laminar\"",
+                 "fluid.mu [Pa s] or fluid.nu [m^2/s]");
+        if (!nu_phys)
+            throw InputError(ctx.where(fluid.key_path("mu")), "missing required key",
+                             "fluid.mu [Pa s] or fluid.nu [m^2/s] for laminar viscosity", "nothing");
+        p.visc_value = *nu_phys;
+    }
+
+    // [domain]
+    const Section dom = top.sub("domain");
+    const auto lx = dom.required_num("lx", "the box width [m]");
+    const auto lz = dom.required_num("lz", "the box height [m]");
+    positive(lx);
+    positive(lz);
+    p.lx = lx.value;
+    p.lz = lz.value;
+    dom.get("wall_left", spec.wall_left);
+    dom.get("wall_right", spec.wall_right);
+    dom.get("wall_bottom", spec.wall_bottom);
+    dom.get("wall_top", spec.wall_top);
+    if (auto f = dom.num("floor_inclination_deg")) {
+        if (f->value != 0) fail(*f, "an inclined floor is not supported", "0");
+        spec.floor_beta_deg = f->value;
+    }
+    const Box box{p.lx, p.lz};
+
+    // [time]
+    const Section tim = top.sub("time");
+    if (auto f = tim.num("tmax")) positive(*f), p.tmax = f->value;
+    if (auto f = tim.num("dt")) positive(*f), p.dt = f->value;
+    tim.get("variable_dt", p.variable_dt);
+    if (auto f = tim.num("cfl")) {
+        if (!(f->value > 0 && f->value <= 1)) fail(*f, "out of range", "a number in (0, 1]");
+        p.cfl = f->value;
+    }
+    if (auto f = tim.num("out")) positive(*f), p.out = f->value;
+    if (auto f = tim.num("trec_ini")) non_negative(*f), p.trec_ini = f->value;
+
+    // [[obstacle]]
+    for (const Section& s : top.array_of_tables("obstacle")) {
+        ObstacleSpec o;
+        if (auto f = s.string("shape"))
+            o.shape = choose<int>(*f, {{"rectangle", 1}});
+        if (auto f = s.string("kind"))
+            o.kind = choose<int>(*f, {{"solid", 1}, {"walls", 2}});
+        if (auto f = s.integer("density")) at_least(*f, 1), o.density = to_int(*f);
+        o.r = read_rect(s, box, "obstacle");
+        if (auto f = s.num("beta_deg")) {
+            if (!(f->value > 0 && f->value < 180)) fail(*f, "out of range", "an angle in (0, 180) degrees");
+            o.beta_deg = f->value;
+        }
+        spec.obstacles.push_back(o);
+    }
+
+    // [[wall]]
+    for (const Section& s : top.array_of_tables("wall")) {
+        WallSpec w;
+        const auto x = s.required_num("x", "the wall position [m]");
+        const auto height = s.required_num("height", "the wall height [m]");
+        inside(x, box.lx, "x", "wall");
+        if (!(height.value > 0 && height.value <= box.lz))
+            fail(height, "out of range", "0 < height <= domain.lz = " + num(box.lz));
+        if (p.boundary != BoundaryType::Dynamic)
+            fail(x, "a [[wall]] needs dynamic boundaries (as legacy \"Add wall\")",
+                 "numerics.boundary = \"dynamic\"");
+        w.x = x.value, w.height = height.value;
+        spec.walls.push_back(w);
+    }
+
+    // Fluid regions
+    for (const Section& s : fluid.array_of_tables("block")) {
+        FluidBlock b;
+        b.r = read_rect(s, box, "fluid region");
+        s.get("u0", b.u0);
+        s.get("w0", b.w0);
+        spec.fluid_blocks.push_back(b);
+    }
+    for (const Section& s : fluid.array_of_tables("disc")) {
+        FluidDisc d;
+        const auto xc = s.required_num("xc", "the centre x [m]");
+        const auto zc = s.required_num("zc", "the centre z [m]");
+        const auto r = s.required_num("radius", "the radius [m]");
+        positive(r);
+        centred_inside(xc, zc, r, r.value, box, "fluid disc");
+        d.xc = xc.value, d.zc = zc.value, d.radius = r.value;
+        s.get("u0", d.u0);
+        s.get("w0", d.w0);
+        spec.fluid_discs.push_back(d);
+    }
+    for (const Section& s : fluid.array_of_tables("square")) {
+        FluidSquare q;
+        const auto xc = s.required_num("xc", "the centre x [m]");
+        const auto zc = s.required_num("zc", "the centre z [m]");
+        const auto side = s.required_num("side", "the side length [m]");
+        positive(side);
+        centred_inside(xc, zc, side, side.value / 2, box, "fluid square");
+        q.xc = xc.value, q.zc = zc.value, q.side = side.value;
+        s.get("u0", q.u0);
+        s.get("w0", q.w0);
+        spec.fluid_squares.push_back(q);
+    }
+    if (spec.legacy_fill && p.h_swl <= 0)
+        throw InputError(ctx.where(fluid.key_path("h_swl")), "missing required key",
+                         "fluid.coef and fluid.h_swl with legacy.fill = true (the legacy fill stops at h_swl)",
+                         "nothing");
+    if (spec.fluid_blocks.empty() && spec.fluid_discs.empty() && spec.fluid_squares.empty())
+        throw InputError(ctx.file + ": fluid", "no fluid in the case",
+                         "at least one [[fluid.block]], [[fluid.disc]] or [[fluid.square]]",
+                         "none");
+
+    // [output]
+    const Section out = top.sub("output");
+    OutputSpec& o = spec.output;
+    if (auto f = out.string("format"))
+        o.format = choose<OutputFormat>(*f, {{"legacy", OutputFormat::Legacy},
+                                             {"hdf5", OutputFormat::Hdf5},
+                                             {"both", OutputFormat::Both}});
+    if (auto f = out.integer("checkpoint_every_steps"))
+        at_least(*f, 0), o.checkpoint_every_steps = static_cast<long>(f->value);
+    if (auto f = out.num("checkpoint_every_minutes")) non_negative(*f), o.checkpoint_every_minutes = f->value;
+    out.get("remove_out_of_domain", o.remove_out_of_domain);
+    if (auto f = out.num("rho_min_factor")) {
+        if (!(f->value >= 0 && f->value < 1)) fail(*f, "out of range", "a number in [0, 1)");
+        o.rho_min_factor = f->value;
+    }
+    if (auto f = out.num("rho_max_factor")) {
+        if (!(f->value > 1)) fail(*f, "out of range", "a number > 1");
+        o.rho_max_factor = f->value;
+    }
+    if (auto f = out.num("dt_min")) non_negative(*f), o.dt_min = f->value;
+
+    return spec;
+}
+
+}  // namespace
+
+std::vector<std::string> modern_case_keys() {
+    std::vector<std::string> out;
+    for (const auto& k : kKeys) out.emplace_back(k.path);
+    return out;
+}
+
+CaseSpec parse_modern_case(std::string_view text, const std::string& source_name,
+                           const std::vector<std::string>& overrides) {
+    Ctx ctx{source_name, {}};
+    toml::table root;
+    try {
+        root = toml::parse(text, source_name);
+    } catch (const toml::parse_error& e) {
+        const auto& b = e.source().begin;
+        throw InputError(source_name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column),
+                         "TOML syntax error: " + std::string(e.description()));
+    }
+    for (const auto& o : overrides) apply_override(ctx, root, o);
+    check_keys(ctx, root, "", "");
+    return build(ctx, root);
+}
+
+CaseSpec read_modern_case(const std::filesystem::path& path,
+                          const std::vector<std::string>& overrides) {
+    if (std::filesystem::is_directory(path))
+        throw InputError(path.string(), "cannot open the case file", "a TOML file", "a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(path.string(), "cannot open the case file", "a readable TOML file",
+                         std::filesystem::exists(path) ? "a file that cannot be read" : "no such file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_modern_case(text.str(), path.string(), overrides);
+}
+
+// ---------------------------------------------------------------------------------------
+// Writer
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// The c0 whose B = rho0 c0^2 / gamma is exactly spec's B, when such a double exists
+// near sqrt(gamma B / rho0) (so that a round trip reproduces B to the bit).
+double c0_for_B(const SimParams& p) {
+    const double guess = std::sqrt(p.gamma * p.B / p.rho0);
+    if (!std::isfinite(guess) || guess <= 0) return guess;
+    double lo = guess, hi = guess;
+    for (int i = 0; i < 8; ++i) {
+        if (tait_B_from_c0(p.rho0, lo, p.gamma) == p.B) return lo;
+        if (tait_B_from_c0(p.rho0, hi, p.gamma) == p.B) return hi;
+        lo = std::nextafter(lo, 0.0);
+        hi = std::nextafter(hi, INFINITY);
+    }
+    return guess;
+}
+
+std::string line(const std::string& key, const std::string& value, const std::string& comment) {
+    std::string s = key + " = " + value;
+    if (!comment.empty()) {
+        if (s.size() < 32) s.resize(32, ' ');
+        else s += ' ';
+        s += "# " + comment;
+    }
+    return s + "\n";
+}
+
+std::string str(std::string_view s) { return dquote(s); }
+std::string boolean(bool b) { return b ? "true" : "false"; }
+
+std::string kernel_name(KernelType k) { return to_string(k); }
+std::string lattice_name(Lattice l) { return l == Lattice::SimpleCubic ? "sc" : "bcc"; }
+std::string format_name(OutputFormat f) {
+    switch (f) {
+        case OutputFormat::Legacy: return "legacy";
+        case OutputFormat::Hdf5: return "hdf5";
+        case OutputFormat::Both: return "both";
+    }
+    return "both";
+}
+std::string tensile_name(int t) { return t < 0 ? "auto" : (t == 0 ? "off" : "on"); }
+
+std::string sanitize_comment(std::string s) {
+    for (char& c : s)
+        if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    return s;
+}
+
+}  // namespace
+
+std::string write_modern_case(const CaseSpec& spec) {
+    const SimParams& p = spec.params;
+    const double c0 = p.c0();
+    const LegacyRunInfo& info = spec.legacy;
+    const LegacyRunInfo info_default;
+    // Derived numbers made in single precision (a legacy case): say so, so that they read
+    // back to the bit.
+    const double g = std::abs(p.gz);
+    const bool b_single = p.h_swl > 0 &&
+                          tait_B_from_coef(p.coef, p.rho0, g, p.h_swl, p.gamma) != p.B &&
+                          tait_B_from_coef_single(p.coef, p.rho0, g, p.h_swl, p.gamma) == p.B;
+    const bool h_single = info.h_coefficient > 0 &&
+                          h_from_coefficient(info.h_coefficient, p.dx, p.dz, false) != p.h &&
+                          h_from_coefficient(info.h_coefficient, p.dx, p.dz, true) == p.h;
+    const bool single = b_single || h_single;
+    const bool h_by_coefficient =
+        info.h_coefficient > 0 && h_from_coefficient(info.h_coefficient, p.dx, p.dz, single) == p.h;
+    const bool legacy_section =
+        spec.legacy_fill || single || (info.h_coefficient > 0 && !h_by_coefficient) ||
+        info.detail_out != info_default.detail_out || info.detail_start != info_default.detail_start ||
+        info.detail_end != info_default.detail_end || info.vorticity != info_default.vorticity ||
+        info.compiler != info_default.compiler || info.xz_precision != info_default.xz_precision;
+    std::string s;
+    s += "# sphjet case file (modern format, reference: cases/CASE_FORMAT.md).\n";
+    if (!spec.source.empty()) s += "# Written from: " + sanitize_comment(spec.source) + "\n";
+    s += "# Units: SI (m, s, kg). Coordinates: x horizontal, z vertical, box [0, lx] x [0, lz].\n\n";
+    s += line("format_version", "1", "");
+
+    s += "\n[numerics]\n";
+    s += line("kernel", str(kernel_name(p.kernel)), "gaussian | quadratic | cubic_spline | wendland");
+    s += line("integrator", str("predictor_corrector"), "predictor_corrector");
+    s += line("density_filter", str(to_string(p.density_filter)), "none | shepard | mls");
+    s += line("filter_period", std::to_string(p.filter_period), "steps between density filters");
+    s += line("viscosity", str(to_string(p.viscosity)), "artificial | laminar");
+    if (p.viscosity == ViscosityModel::Artificial) {
+        const double nu_eq = p.visc_value * p.h * c0 / 8.0;
+        s += line("alpha", num(p.visc_value),
+                  "artificial viscosity; same as nu = alpha h c0 / 8 = " + num(nu_eq) + " m^2/s");
+    }
+    s += line("xsph_eps", num(p.xsph_eps), "XSPH velocity correction, 0 = off");
+    s += line("tensile_correction", str(tensile_name(p.tensile_correction)),
+              "auto (legacy: on for gaussian, cubic_spline) | on | off");
+    s += line("boundary", str(to_string(p.boundary)), "repulsive (Monaghan-Kos/Rogers) | dynamic");
+    s += line("dbc_period", std::to_string(p.dbc_period), "steps between dynamic-boundary density updates");
+    s += line("wall_viscosity", num(p.wall_viscosity), "m^2/s, repulsive walls only");
+    s += line("lattice", str(lattice_name(p.lattice)), "sc | bcc");
+
+    s += "\n[fluid]\n";
+    s += line("rho0", num(p.rho0), "reference density [kg/m^3]");
+    s += line("gamma", num(p.gamma), "Tait exponent");
+    if (p.h_swl > 0) {
+        s += line("coef", num(p.coef), "c0 = coef sqrt(|gz| h_swl) = " + num(c0) + " m/s");
+        s += line("h_swl", num(p.h_swl), "still-water depth [m]; B = " + num(p.B) + " Pa");
+    } else {
+        s += line("c0", num(c0_for_B(p)), "sound speed at rest [m/s]; B = rho0 c0^2 / gamma = " + num(p.B) + " Pa");
+    }
+    if (p.viscosity == ViscosityModel::Laminar)
+        s += line("nu", num(p.visc_value), "kinematic viscosity [m^2/s] (mu = " + num(p.visc_value * p.rho0) + " Pa s)");
+    for (const auto& b : spec.fluid_blocks) {
+        s += "\n[[fluid.block]]                  # rectangle filled on the lattice\n";
+        s += line("xmin", num(b.r.xmin), "m");
+        s += line("xmax", num(b.r.xmax), "m");
+        s += line("zmin", num(b.r.zmin), "m");
+        s += line("zmax", num(b.r.zmax), "m");
+        s += line("u0", num(b.u0), "initial velocity [m/s]");
+        s += line("w0", num(b.w0), "m/s");
+    }
+    for (const auto& d : spec.fluid_discs) {
+        s += "\n[[fluid.disc]]\n";
+        s += line("xc", num(d.xc), "centre [m]");
+        s += line("zc", num(d.zc), "m");
+        s += line("radius", num(d.radius), "m");
+        s += line("u0", num(d.u0), "initial velocity [m/s]");
+        s += line("w0", num(d.w0), "m/s");
+    }
+    for (const auto& q : spec.fluid_squares) {
+        s += "\n[[fluid.square]]\n";
+        s += line("xc", num(q.xc), "centre [m]");
+        s += line("zc", num(q.zc), "m");
+        s += line("side", num(q.side), "m");
+        s += line("u0", num(q.u0), "initial velocity [m/s]");
+        s += line("w0", num(q.w0), "m/s");
+    }
+
+    s += "\n[surface_tension]\n";
+    s += line("sigma", num(p.sigma), "N/m, CSF (Morris 2000); 0 = off");
+
+    s += "\n[gravity]\n";
+    s += line("gx", num(p.gx), "m/s^2");
+    s += line("gz", num(p.gz), "m/s^2");
+
+    s += "\n[domain]\n";
+    s += line("lx", num(p.lx), "box width [m]");
+    s += line("lz", num(p.lz), "box height [m]");
+    s += line("wall_left", boolean(spec.wall_left), "");
+    s += line("wall_right", boolean(spec.wall_right), "");
+    s += line("wall_bottom", boolean(spec.wall_bottom), "");
+    s += line("wall_top", boolean(spec.wall_top), "");
+    s += line("floor_inclination_deg", num(spec.floor_beta_deg), "only 0 is supported");
+
+    s += "\n[resolution]\n";
+    s += line("dx", num(p.dx), "particle spacing [m]");
+    s += line("dz", num(p.dz), "m");
+    const double diag = std::sqrt(p.dx * p.dx + p.dz * p.dz);
+    if (h_by_coefficient)
+        s += line("h_coefficient", num(info.h_coefficient),
+                  "h = coefficient sqrt(dx^2 + dz^2) = " + num(p.h) + " m = " + num(p.h / p.dx) + " dx");
+    else
+        s += line("h", num(p.h), "smoothing length [m] = " + num(p.h / p.dx) + " dx = " +
+                                     num(p.h / diag) + " sqrt(dx^2 + dz^2)");
+
+    s += "\n[time]\n";
+    s += line("tmax", num(p.tmax), "end time [s]");
+    s += line("dt", num(p.dt), "initial (or fixed) step [s]");
+    s += line("variable_dt", boolean(p.variable_dt), "");
+    s += line("cfl", num(p.cfl), "Courant number");
+    s += line("out", num(p.out), "output interval [s]");
+    s += line("trec_ini", num(p.trec_ini), "time of the first output [s]");
+
+    for (const auto& o : spec.obstacles) {
+        s += "\n[[obstacle]]\n";
+        s += line("shape", str("rectangle"), "");
+        s += line("kind", str(o.kind == 2 ? "walls" : "solid"), "solid | walls (outline only)");
+        s += line("density", std::to_string(o.density), "boundary points every dx / density");
+        s += line("xmin", num(o.r.xmin), "m");
+        s += line("xmax", num(o.r.xmax), "m");
+        s += line("zmin", num(o.r.zmin), "m");
+        s += line("zmax", num(o.r.zmax), "m");
+        s += line("beta_deg", num(o.beta_deg), "inclination of the side walls");
+    }
+
+    for (const auto& w : spec.walls) {
+        s += "\n[[wall]]                        # legacy \"Add wall\": two layers of boundary particles\n";
+        s += line("x", num(w.x), "position [m]");
+        s += line("height", num(w.height), "from the floor [m]");
+    }
+
+    if (legacy_section) {
+        s += "\n[legacy]                        # carried over from a legacy SPHysics case file\n";
+        s += line("fill", boolean(spec.legacy_fill), "fill blocks as SPHYSICSgen_2D (from the floor, up to h_swl)");
+        s += line("single_precision", boolean(single), "derive B and h in single precision as SPHYSICSgen_2D");
+        if (info.h_coefficient > 0 && !h_by_coefficient)
+            s += line("h_coefficient", num(info.h_coefficient), "recorded only; resolution.h rules");
+        s += line("detail_out", num(info.detail_out), "detailed-recording interval [s] (INDAT only)");
+        s += line("detail_start", num(info.detail_start), "s");
+        s += line("detail_end", num(info.detail_end), "s");
+        s += line("vorticity", boolean(info.vorticity != 0), "vorticity printing (INDAT only)");
+        s += line("compiler", std::to_string(info.compiler), "1 gfortran, 2 ifort, 3 win_ifort, 4 FTN95 (INDAT only)");
+        s += line("xz_precision", str(info.xz_precision == 1 ? "single" : "double"), "legacy solver's x/z precision");
+    }
+
+    s += "\n[output]\n";
+    s += line("format", str(format_name(spec.output.format)), "legacy | hdf5 | both");
+    s += line("checkpoint_every_steps", std::to_string(spec.output.checkpoint_every_steps), "0 = off");
+    s += line("checkpoint_every_minutes", num(spec.output.checkpoint_every_minutes), "wall-clock minutes, 0 = off");
+    s += line("remove_out_of_domain", boolean(spec.output.remove_out_of_domain),
+              "false = stop when a particle leaves");
+    s += line("rho_min_factor", num(spec.output.rho_min_factor), "stop if rho < factor rho0");
+    s += line("rho_max_factor", num(spec.output.rho_max_factor), "stop if rho > factor rho0");
+    s += line("dt_min", num(spec.output.dt_min), "stop if dt falls below [s]");
+    return s;
+}
+
+}  // namespace sphjet

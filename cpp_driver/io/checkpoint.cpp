@@ -1,0 +1,199 @@
+#include "io/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <stdexcept>
+#include <system_error>
+
+#include "config/errors.hpp"
+#include "io/h5_util.hpp"
+
+namespace sphjet {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::int64_t kFormatVersion = 1;
+constexpr auto kSum = h5::Layout::Checksummed;
+
+// Calls f(name, field) for every field of RunState, in declaration order.
+template <class S, class F>
+void visit_state(S& s, F&& f) {
+    f("time", s.time);
+    f("legacy_time", s.legacy_time);
+    f("step", s.step);
+    f("dt", s.dt);
+    f("dt_f", s.dt_f);
+    f("dt_cv", s.dt_cv);
+    f("dt_new", s.dt_new);
+    f("dbc_counter", s.dbc_counter);
+    f("n_outputs", s.n_outputs);
+    f("n_removed", s.n_removed);
+}
+
+void check_sizes(const ParticleSet& ps, std::span<const ExtraField> extra) {
+    const std::size_t n = ps.size();
+    const std::array<std::size_t, 9> sizes{ps.z.size(),   ps.u.size(),    ps.w.size(),
+                                           ps.rho.size(), ps.p.size(),    ps.m.size(),
+                                           ps.id.size(),  ps.kind.size(), ps.active.size()};
+    for (const std::size_t s : sizes) {
+        if (s != n) {
+            throw std::invalid_argument(
+                fmt::format("write_checkpoint: particle arrays differ in length ({} vs {})", s, n));
+        }
+    }
+    for (const ExtraField& e : extra) {
+        if (e.name.empty() || e.name.find_first_of("/.") != std::string::npos) {
+            throw std::invalid_argument("write_checkpoint: bad extra array name '" + e.name + "'");
+        }
+    }
+}
+
+}  // namespace
+
+const std::vector<double>* Checkpoint::array(std::string_view name) const {
+    for (const CheckpointArray& a : extra) {
+        if (a.name == name) return &a.values;
+    }
+    return nullptr;
+}
+
+fs::path checkpoint_path(const fs::path& dir) { return dir / "checkpoint.h5"; }
+
+void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState& state,
+                      const SimParams& params, std::span<const ExtraField> extra) {
+    check_sizes(ps, extra);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir)) {
+        throw InputError(dir.string(), "cannot create the checkpoint directory: " + ec.message());
+    }
+    const fs::path final_path = checkpoint_path(dir);
+    fs::path tmp = final_path;
+    tmp += ".tmp";
+    try {
+        h5::File f = h5::create_file(tmp);
+        h5::write_attr(f, "format", std::string("sphjet-checkpoint"));
+        h5::write_attr(f, "format_version", kFormatVersion);
+        h5::write_attr(f, "code_version", h5::code_version());
+        h5::write_attr(f, "git_hash", h5::git_hash());
+        h5::write_attr(f, "written_utc", h5::utc_now());
+        {
+            h5::Group g = h5::create_group(f, "particles");
+            h5::write_attr(g, "n", static_cast<std::int64_t>(ps.size()));
+            h5::write_attr(g, "nb", static_cast<std::int64_t>(ps.nb));
+            h5::write_attr(g, "nbf", static_cast<std::int64_t>(ps.nbf));
+            h5::write_attr(g, "n_wall", static_cast<std::int64_t>(ps.wall.size()));
+            h5::write_array(g, "x", std::span<const double>(ps.x), "m", kSum);
+            h5::write_array(g, "z", std::span<const double>(ps.z), "m", kSum);
+            h5::write_array(g, "u", std::span<const double>(ps.u), "m/s", kSum);
+            h5::write_array(g, "w", std::span<const double>(ps.w), "m/s", kSum);
+            h5::write_array(g, "rho", std::span<const double>(ps.rho), "kg/m^3", kSum);
+            h5::write_array(g, "p", std::span<const double>(ps.p), "Pa", kSum);
+            h5::write_array(g, "m", std::span<const double>(ps.m), "kg", kSum);
+            h5::write_array(g, "id", std::span<const std::int64_t>(ps.id), "1", kSum);
+            h5::write_array(g, "kind", std::span<const std::int32_t>(ps.kind), "1", kSum);
+            h5::write_array(g, "active", std::span<const std::int32_t>(ps.active), "1", kSum);
+            std::vector<std::int32_t> prev(ps.wall.size()), next(ps.wall.size());
+            for (std::size_t i = 0; i < ps.wall.size(); ++i) {
+                prev[i] = ps.wall[i].prev;
+                next[i] = ps.wall[i].next;
+            }
+            h5::write_array(g, "wall_prev", std::span<const std::int32_t>(prev), "1", kSum);
+            h5::write_array(g, "wall_next", std::span<const std::int32_t>(next), "1", kSum);
+        }
+        {
+            h5::Group g = h5::create_group(f, "run_state");
+            visit_state(state,
+                        [&g](const char* name, const auto& v) { h5::write_attr(g, name, v); });
+        }
+        {
+            h5::Group g = h5::create_group(f, "parameters");
+            h5::write_params(g, params);
+        }
+        {
+            h5::Group g = h5::create_group(f, "extra");
+            for (const ExtraField& e : extra) {
+                h5::write_array(g, e.name, e.values, e.units.empty() ? nullptr : e.units.c_str(),
+                                kSum);
+            }
+        }
+        h5::close_file(f, tmp);
+        h5::commit_file(tmp, final_path);
+    } catch (...) {
+        fs::remove(tmp, ec);
+        throw;
+    }
+}
+
+Checkpoint read_checkpoint(const fs::path& dir_or_file) {
+    std::error_code ec;
+    const fs::path path =
+        fs::is_directory(dir_or_file, ec) ? checkpoint_path(dir_or_file) : dir_or_file;
+    h5::File f = h5::open_file(path);
+    Checkpoint c;
+    const std::string format = h5::read_attr_string(f, "format");
+    if (format != "sphjet-checkpoint") {
+        throw InputError(path.string() + ": attribute format", "not a checkpoint",
+                         "sphjet-checkpoint", format);
+    }
+    const std::int64_t version = h5::read_attr_int64(f, "format_version");
+    if (version != kFormatVersion) {
+        throw InputError(path.string() + ": attribute format_version",
+                         "unsupported checkpoint version", std::to_string(kFormatVersion),
+                         std::to_string(version));
+    }
+    c.code_version = h5::read_attr_string(f, "code_version");
+    {
+        h5::Group g = h5::open_group(f, "particles");
+        ParticleSet& ps = c.particles;
+        const auto n = static_cast<std::size_t>(h5::read_attr_int64(g, "n"));
+        const auto n_wall = static_cast<std::size_t>(h5::read_attr_int64(g, "n_wall"));
+        ps.nb = static_cast<std::size_t>(h5::read_attr_int64(g, "nb"));
+        ps.nbf = static_cast<std::size_t>(h5::read_attr_int64(g, "nbf"));
+        ps.x = h5::read_doubles(g, "x", n);
+        ps.z = h5::read_doubles(g, "z", n);
+        ps.u = h5::read_doubles(g, "u", n);
+        ps.w = h5::read_doubles(g, "w", n);
+        ps.rho = h5::read_doubles(g, "rho", n);
+        ps.p = h5::read_doubles(g, "p", n);
+        ps.m = h5::read_doubles(g, "m", n);
+        ps.id = h5::read_int64(g, "id", n);
+        ps.kind = h5::read_int32(g, "kind", n);
+        ps.active = h5::read_int32(g, "active", n);
+        const auto prev = h5::read_int32(g, "wall_prev", n_wall);
+        const auto next = h5::read_int32(g, "wall_next", n_wall);
+        ps.wall.resize(n_wall);
+        for (std::size_t i = 0; i < n_wall; ++i) ps.wall[i] = {prev[i], next[i]};
+        if (ps.nbf > ps.nb || ps.nb > n) {
+            throw InputError(h5::where(g), "inconsistent particle counts", "nbf <= nb <= n",
+                             fmt::format("nbf = {}, nb = {}, n = {}", ps.nbf, ps.nb, n));
+        }
+    }
+    {
+        h5::Group g = h5::open_group(f, "run_state");
+        visit_state(c.state, [&g](const char* name, auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, double>) {
+                v = h5::read_attr_double(g, name);
+            } else {
+                v = h5::read_attr_int64(g, name);
+            }
+        });
+    }
+    {
+        h5::Group g = h5::open_group(f, "parameters");
+        c.params = h5::read_params(g);
+    }
+    {
+        h5::Group g = h5::open_group(f, "extra");
+        for (const std::string& name : h5::link_names(g)) {
+            c.extra.push_back({name, h5::read_doubles(g, name)});
+        }
+    }
+    return c;
+}
+
+}  // namespace sphjet

@@ -1,0 +1,556 @@
+#include "io/h5_util.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <ctime>
+#include <system_error>
+#include <type_traits>
+
+#include "config/errors.hpp"
+
+#ifndef SPHJET_VERSION
+#define SPHJET_VERSION "unknown"
+#endif
+#ifndef SPHJET_GIT_HASH
+#define SPHJET_GIT_HASH "unknown"
+#endif
+
+namespace sphjet::h5 {
+
+static_assert(sizeof(int) == sizeof(std::int32_t), "ParticleSet stores int arrays as int32");
+
+namespace {
+
+// Chunk of a checksummed dataset: 2^18 values (2 MiB of doubles).
+constexpr hsize_t kChunk = hsize_t{1} << 18;
+
+struct ErrorWalk {
+    std::string innermost;
+    std::string api;
+};
+
+herr_t walk_cb(unsigned n, const H5E_error2_t* e, void* data) {
+    auto* w = static_cast<ErrorWalk*>(data);
+    const std::string desc = e->desc ? e->desc : "";
+    if (n == 0) w->innermost = desc;
+    w->api = std::string(e->func_name ? e->func_name : "") + ": " + desc;
+    return 0;
+}
+
+std::string with_h5(const std::string& problem, const std::string& h5) {
+    return h5.empty() ? problem : problem + " (HDF5: " + h5 + ")";
+}
+
+// The HDF5 message is taken first: where() calls into HDF5, which clears the error stack.
+[[noreturn]] void fail(const std::string& at, const std::string& problem) {
+    const std::string h5 = last_error();
+    throw InputError(at, with_h5(problem, h5));
+}
+
+[[noreturn]] void fail(hid_t loc, const std::string& name, const std::string& problem) {
+    const std::string h5 = last_error();
+    throw InputError(where(loc, name), with_h5(problem, h5));
+}
+
+void check(herr_t status, hid_t loc, const std::string& name, const std::string& problem) {
+    if (status < 0) fail(loc, name, problem);
+}
+
+std::string where_attr(hid_t loc, const std::string& name) {
+    return where(loc) + " attribute '" + name + "'";
+}
+
+[[noreturn]] void fail_attr(hid_t loc, const std::string& name, const std::string& problem) {
+    const std::string h5 = last_error();
+    throw InputError(where_attr(loc, name), with_h5(problem, h5));
+}
+
+void check_attr(herr_t status, hid_t loc, const std::string& name, const std::string& problem) {
+    if (status < 0) fail_attr(loc, name, problem);
+}
+
+template <class T>
+void write_array_impl(hid_t loc, const std::string& name, std::span<const T> v, hid_t file_type,
+                      hid_t mem_type, const char* units, Layout layout) {
+    QuietErrors quiet;
+    const hsize_t n = v.size();
+    Dataspace space(H5Screate_simple(1, &n, nullptr));
+    PropList dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    if (space < 0 || dcpl < 0) fail(loc, name, "cannot create dataspace");
+    if (layout == Layout::Checksummed && n > 0) {
+        const hsize_t chunk = std::min(n, kChunk);
+        check(H5Pset_chunk(dcpl, 1, &chunk), loc, name, "cannot set chunking");
+        check(H5Pset_fletcher32(dcpl), loc, name, "cannot set the Fletcher-32 filter");
+    }
+    Dataset ds(H5Dcreate2(loc, name.c_str(), file_type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+    if (ds < 0) fail(loc, name, "cannot create dataset");
+    if (n > 0) {
+        check(H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), loc, name,
+              "cannot write dataset");
+    }
+    if (units != nullptr) write_attr(ds, "units", std::string(units));
+}
+
+template <class T>
+std::vector<T> read_impl(hid_t loc, const std::string& name, std::optional<std::size_t> expected,
+                         H5T_class_t cls, hid_t mem_type, const char* type_name) {
+    QuietErrors quiet;
+    if (!has_link(loc, name)) throw InputError(where(loc, name), "missing dataset");
+    Dataset ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT));
+    if (ds < 0) fail(loc, name, "cannot open dataset");
+    Datatype type(H5Dget_type(ds));
+    if (type < 0 || H5Tget_class(type) != cls || H5Tget_size(type) > sizeof(T)) {
+        throw InputError(where(loc, name), "wrong type", std::string("a dataset of ") + type_name,
+                         "another type");
+    }
+    Dataspace space(H5Dget_space(ds));
+    if (space < 0) fail(loc, name, "cannot read the dataspace");
+    if (H5Sget_simple_extent_ndims(space) != 1) {
+        throw InputError(where(loc, name), "wrong shape", "a 1-D dataset",
+                         std::to_string(H5Sget_simple_extent_ndims(space)) + " dimensions");
+    }
+    hsize_t n = 0;
+    H5Sget_simple_extent_dims(space, &n, nullptr);
+    if (expected && n != *expected) {
+        throw InputError(where(loc, name), "wrong length", std::to_string(*expected) + " values",
+                         std::to_string(n));
+    }
+    std::vector<T> out(n);
+    if (n > 0) {
+        check(H5Dread(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), loc, name,
+              "cannot read dataset (file truncated or corrupt?)");
+    }
+    return out;
+}
+
+Attribute create_attr(hid_t loc, const std::string& name, hid_t type) {
+    if (H5Aexists(loc, name.c_str()) > 0) H5Adelete(loc, name.c_str());
+    Dataspace space(H5Screate(H5S_SCALAR));
+    Attribute a(H5Acreate2(loc, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT));
+    if (a < 0) fail_attr(loc, name, "cannot create attribute");
+    return a;
+}
+
+Attribute open_attr(hid_t loc, const std::string& name) {
+    if (!has_attr(loc, name)) throw InputError(where_attr(loc, name), "missing attribute");
+    Attribute a(H5Aopen(loc, name.c_str(), H5P_DEFAULT));
+    if (a < 0) fail_attr(loc, name, "cannot open attribute");
+    return a;
+}
+
+void fsync_path(const std::filesystem::path& p, bool directory) {
+    const int fd = ::open(p.c_str(), directory ? (O_RDONLY | O_DIRECTORY) : O_RDONLY);
+    if (fd < 0) {
+        throw InputError(p.string(), std::string("cannot open for fsync: ") + std::strerror(errno));
+    }
+    const int rc = ::fsync(fd);
+    const int err = errno;
+    ::close(fd);
+    // Some file systems cannot fsync a directory (EINVAL); the rename is still atomic there.
+    if (rc != 0 && !(directory && (err == EINVAL || err == EBADF))) {
+        throw InputError(p.string(), std::string("fsync failed: ") + std::strerror(err));
+    }
+}
+
+}  // namespace
+
+QuietErrors::QuietErrors() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+QuietErrors::~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+
+std::string last_error() {
+    ErrorWalk w;
+    H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, walk_cb, &w);
+    if (w.api.empty()) return w.innermost;
+    if (w.innermost.empty() || w.api.find(w.innermost) != std::string::npos) return w.api;
+    return w.api + ": " + w.innermost;
+}
+
+std::string where(hid_t loc, const std::string& name) {
+    std::string file = "?", obj;
+    if (const ssize_t n = H5Fget_name(loc, nullptr, 0); n > 0) {
+        file.assign(static_cast<std::size_t>(n) + 1, '\0');
+        H5Fget_name(loc, file.data(), file.size());
+        file.resize(static_cast<std::size_t>(n));
+    }
+    if (const ssize_t n = H5Iget_name(loc, nullptr, 0); n > 0) {
+        obj.assign(static_cast<std::size_t>(n) + 1, '\0');
+        H5Iget_name(loc, obj.data(), obj.size());
+        obj.resize(static_cast<std::size_t>(n));
+    }
+    if (obj == "/") obj.clear();
+    if (name.empty()) return file + ": " + (obj.empty() ? "/" : obj);
+    return file + ": " + obj + "/" + name;
+}
+
+File create_file(const std::filesystem::path& path) {
+    QuietErrors quiet;
+    PropList fapl(H5Pcreate(H5P_FILE_ACCESS));
+    // Low bound 1.8: every object in the oldest format that has checksummed metadata; high
+    // bound latest: allows the virtual datasets (1.10) of write_vec3_view.
+    H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
+    File f(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl));
+    if (f < 0) fail(path.string(), "cannot create HDF5 file");
+    return f;
+}
+
+File open_file(const std::filesystem::path& path) {
+    QuietErrors quiet;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        throw InputError(path.string(), "no such file");
+    }
+    if (H5Fis_hdf5(path.c_str()) <= 0) {
+        throw InputError(path.string(), "not an HDF5 file (truncated or corrupt?)");
+    }
+    File f(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+    if (f < 0) fail(path.string(), "cannot open HDF5 file (truncated or corrupt?)");
+    return f;
+}
+
+void close_file(File& f, const std::filesystem::path& path) {
+    QuietErrors quiet;
+    const hid_t id = f.release();
+    if (id < 0) return;
+    if (H5Fflush(id, H5F_SCOPE_LOCAL) < 0 || H5Fclose(id) < 0) {
+        fail(path.string(), "cannot write HDF5 file (disk full?)");
+    }
+}
+
+Group create_group(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    Group g(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    if (g < 0) fail(loc, name, "cannot create group");
+    return g;
+}
+
+Group open_group(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    if (!has_link(loc, name)) throw InputError(where(loc, name), "missing group");
+    Group g(H5Gopen2(loc, name.c_str(), H5P_DEFAULT));
+    if (g < 0) fail(loc, name, "cannot open group");
+    return g;
+}
+
+bool has_link(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    return H5Lexists(loc, name.c_str(), H5P_DEFAULT) > 0;
+}
+
+bool has_attr(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    return H5Aexists(loc, name.c_str()) > 0;
+}
+
+std::vector<std::string> link_names(hid_t loc) {
+    QuietErrors quiet;
+    std::vector<std::string> names;
+    auto cb = [](hid_t, const char* n, const H5L_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->emplace_back(n);
+        return 0;
+    };
+    hsize_t idx = 0;
+    if (H5Literate(loc, H5_INDEX_NAME, H5_ITER_INC, &idx, cb, &names) < 0) {
+        fail(loc, {}, "cannot list group");
+    }
+    return names;
+}
+
+void write_array(hid_t loc, const std::string& name, std::span<const double> v, const char* units,
+                 Layout layout) {
+    write_array_impl(loc, name, v, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, units, layout);
+}
+
+void write_array(hid_t loc, const std::string& name, std::span<const std::int32_t> v,
+                 const char* units, Layout layout) {
+    write_array_impl(loc, name, v, H5T_STD_I32LE, H5T_NATIVE_INT32, units, layout);
+}
+
+void write_array(hid_t loc, const std::string& name, std::span<const std::int64_t> v,
+                 const char* units, Layout layout) {
+    write_array_impl(loc, name, v, H5T_STD_I64LE, H5T_NATIVE_INT64, units, layout);
+}
+
+void write_vec3_view(hid_t loc, const std::string& name, const std::array<std::string, 3>& sources,
+                     std::size_t n_values) {
+    QuietErrors quiet;
+    const hsize_t n = n_values;
+    const hsize_t dims[2] = {n, 3};
+    Dataspace vspace(H5Screate_simple(2, dims, nullptr));
+    PropList dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    const double zero = 0.0;
+    check(H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &zero), loc, name,
+          "cannot set the fill value");
+    if (n > 0) {
+        Dataspace src(H5Screate_simple(1, &n, nullptr));
+        for (hsize_t k = 0; k < 3; ++k) {
+            if (sources[k].empty()) continue;  // unmapped: reads the fill value
+            const hsize_t start[2] = {0, k}, count[2] = {n, 1};
+            check(H5Sselect_hyperslab(vspace, H5S_SELECT_SET, start, nullptr, count, nullptr), loc,
+                  name, "cannot select a column");
+            check(H5Pset_virtual(dcpl, vspace, ".", sources[k].c_str(), src), loc, name,
+                  "cannot map " + sources[k]);
+        }
+        H5Sselect_all(vspace);
+    }
+    Dataset ds(
+        H5Dcreate2(loc, name.c_str(), H5T_IEEE_F64LE, vspace, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+    if (ds < 0) fail(loc, name, "cannot create virtual dataset");
+}
+
+void write_iota(hid_t loc, const std::string& name, std::size_t n_values) {
+    QuietErrors quiet;
+    std::vector<std::int64_t> v(n_values);
+    for (std::size_t i = 0; i < n_values; ++i) v[i] = static_cast<std::int64_t>(i);
+    const hsize_t n = n_values;
+    Dataspace space(H5Screate_simple(1, &n, nullptr));
+    PropList dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    if (n > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+        const hsize_t chunk = std::min(n, kChunk);
+        check(H5Pset_chunk(dcpl, 1, &chunk), loc, name, "cannot set chunking");
+        check(H5Pset_shuffle(dcpl), loc, name, "cannot set the shuffle filter");
+        check(H5Pset_deflate(dcpl, 1), loc, name, "cannot set the deflate filter");
+    }
+    Dataset ds(H5Dcreate2(loc, name.c_str(), H5T_STD_I64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+    if (ds < 0) fail(loc, name, "cannot create dataset");
+    if (n > 0) {
+        check(H5Dwrite(ds, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), loc, name,
+              "cannot write dataset");
+    }
+}
+
+std::vector<double> read_doubles(hid_t loc, const std::string& name,
+                                 std::optional<std::size_t> expected_size) {
+    return read_impl<double>(loc, name, expected_size, H5T_FLOAT, H5T_NATIVE_DOUBLE, "doubles");
+}
+
+std::vector<std::int32_t> read_int32(hid_t loc, const std::string& name,
+                                     std::optional<std::size_t> expected_size) {
+    return read_impl<std::int32_t>(loc, name, expected_size, H5T_INTEGER, H5T_NATIVE_INT32,
+                                   "32-bit integers");
+}
+
+std::vector<std::int64_t> read_int64(hid_t loc, const std::string& name,
+                                     std::optional<std::size_t> expected_size) {
+    return read_impl<std::int64_t>(loc, name, expected_size, H5T_INTEGER, H5T_NATIVE_INT64,
+                                   "64-bit integers");
+}
+
+void write_attr(hid_t loc, const std::string& name, double v) {
+    QuietErrors quiet;
+    Attribute a = create_attr(loc, name, H5T_IEEE_F64LE);
+    check_attr(H5Awrite(a, H5T_NATIVE_DOUBLE, &v), loc, name, "cannot write attribute");
+}
+
+void write_attr(hid_t loc, const std::string& name, std::int64_t v) {
+    QuietErrors quiet;
+    Attribute a = create_attr(loc, name, H5T_STD_I64LE);
+    check_attr(H5Awrite(a, H5T_NATIVE_INT64, &v), loc, name, "cannot write attribute");
+}
+
+void write_attr(hid_t loc, const std::string& name, const std::string& v) {
+    QuietErrors quiet;
+    Datatype type(H5Tcopy(H5T_C_S1));
+    H5Tset_size(type, v.size() + 1);
+    H5Tset_strpad(type, H5T_STR_NULLTERM);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    Attribute a = create_attr(loc, name, type);
+    check_attr(H5Awrite(a, type, v.c_str()), loc, name, "cannot write attribute");
+}
+
+double read_attr_double(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    Attribute a = open_attr(loc, name);
+    Datatype t(H5Aget_type(a));
+    const H5T_class_t c = H5Tget_class(t);
+    if (c != H5T_FLOAT && c != H5T_INTEGER) {
+        throw InputError(where_attr(loc, name), "wrong type", "a number", "another type");
+    }
+    double v = 0.0;
+    check_attr(H5Aread(a, H5T_NATIVE_DOUBLE, &v), loc, name, "cannot read attribute");
+    return v;
+}
+
+std::int64_t read_attr_int64(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    Attribute a = open_attr(loc, name);
+    Datatype t(H5Aget_type(a));
+    if (H5Tget_class(t) != H5T_INTEGER) {
+        throw InputError(where_attr(loc, name), "wrong type", "an integer", "another type");
+    }
+    std::int64_t v = 0;
+    check_attr(H5Aread(a, H5T_NATIVE_INT64, &v), loc, name, "cannot read attribute");
+    return v;
+}
+
+std::string read_attr_string(hid_t loc, const std::string& name) {
+    QuietErrors quiet;
+    Attribute a = open_attr(loc, name);
+    Datatype t(H5Aget_type(a));
+    if (H5Tget_class(t) != H5T_STRING) {
+        throw InputError(where_attr(loc, name), "wrong type", "a string", "another type");
+    }
+    const H5T_cset_t cset = H5Tget_cset(t);  // HDF5 does not convert between ASCII and UTF-8
+    if (H5Tis_variable_str(t) > 0) {         // as h5py writes them
+        Datatype mem(H5Tcopy(H5T_C_S1));
+        H5Tset_size(mem, H5T_VARIABLE);
+        H5Tset_cset(mem, cset);
+        char* s = nullptr;
+        check_attr(H5Aread(a, mem, &s), loc, name, "cannot read attribute");
+        std::string out = s ? s : "";
+        H5free_memory(s);
+        return out;
+    }
+    const std::size_t size = H5Tget_size(t);
+    Datatype mem(H5Tcopy(H5T_C_S1));
+    H5Tset_size(mem, size + 1);
+    H5Tset_strpad(mem, H5T_STR_NULLTERM);
+    H5Tset_cset(mem, cset);
+    std::string buf(size + 1, '\0');
+    check_attr(H5Aread(a, mem, buf.data()), loc, name, "cannot read attribute");
+    buf.resize(std::strlen(buf.c_str()));
+    return buf;
+}
+
+void commit_file(const std::filesystem::path& tmp, const std::filesystem::path& final_path) {
+    fsync_path(tmp, false);
+    std::error_code ec;
+    std::filesystem::rename(tmp, final_path, ec);
+    if (ec) {
+        throw InputError(final_path.string(), "cannot rename " + tmp.filename().string() +
+                                                  " into place: " + ec.message());
+    }
+    const auto dir =
+        final_path.has_parent_path() ? final_path.parent_path() : std::filesystem::path(".");
+    fsync_path(dir, true);
+}
+
+std::string code_version() {
+    return std::string(SPHJET_VERSION) + " (git " + SPHJET_GIT_HASH + ")";
+}
+
+std::string git_hash() { return SPHJET_GIT_HASH; }
+
+std::string utc_now() {
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+}  // namespace sphjet::h5
+
+// ---- SimParams --------------------------------------------------------------------------
+
+namespace sphjet::h5 {
+
+namespace {
+
+// Calls f(name, field, units) for every field of SimParams, in declaration order. units is
+// nullptr where no unit applies (enums, counts, switches). Add a new field here (and the
+// checkpoint test's size check will remind you).
+template <class P, class F>
+void visit_params(P& p, F&& f) {
+    const bool laminar = p.viscosity == ViscosityModel::Laminar;
+    f("kernel", p.kernel, nullptr);
+    f("integrator", p.integrator, nullptr);
+    f("density_filter", p.density_filter, nullptr);
+    f("filter_period", p.filter_period, "steps");
+    f("viscosity", p.viscosity, nullptr);
+    f("visc_value", p.visc_value, laminar ? "m^2/s" : "1");
+    f("wall_viscosity", p.wall_viscosity, "m^2/s");
+    f("boundary", p.boundary, nullptr);
+    f("dbc_period", p.dbc_period, "steps");
+    f("lattice", p.lattice, nullptr);
+    f("xsph_eps", p.xsph_eps, "1");
+    f("tensile_correction", p.tensile_correction, nullptr);
+    f("rho0", p.rho0, "kg/m^3");
+    f("gamma", p.gamma, "1");
+    f("h_swl", p.h_swl, "m");
+    f("coef", p.coef, "1");
+    f("B", p.B, "Pa");
+    f("lx", p.lx, "m");
+    f("lz", p.lz, "m");
+    f("dx", p.dx, "m");
+    f("dz", p.dz, "m");
+    f("h", p.h, "m");
+    f("variable_dt", p.variable_dt, nullptr);
+    f("dt", p.dt, "s");
+    f("cfl", p.cfl, "1");
+    f("tmax", p.tmax, "s");
+    f("out", p.out, "s");
+    f("trec_ini", p.trec_ini, "s");
+    f("gx", p.gx, "m/s^2");
+    f("gz", p.gz, "m/s^2");
+    f("sigma", p.sigma, "N/m");
+}
+
+std::string enum_name(KernelType v) { return to_string(v); }
+std::string enum_name(DensityFilter v) { return to_string(v); }
+std::string enum_name(ViscosityModel v) { return to_string(v); }
+std::string enum_name(BoundaryType v) { return to_string(v); }
+std::string enum_name(Integrator v) {
+    return v == Integrator::PredictorCorrector ? "predictor_corrector" : "unknown";
+}
+std::string enum_name(Lattice v) {
+    switch (v) {
+        case Lattice::SimpleCubic:
+            return "simple_cubic";
+        case Lattice::BodyCentred:
+            return "body_centred";
+    }
+    return "unknown";
+}
+
+}  // namespace
+
+void write_params(hid_t loc, const SimParams& p) {
+    visit_params(p, [loc](const char* name, const auto& v, const char* units) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_enum_v<T>) {
+            write_attr(loc, name, static_cast<std::int64_t>(v));
+            write_attr(loc, std::string(name) + "_name", enum_name(v));
+        } else if constexpr (std::is_same_v<T, double>) {
+            write_attr(loc, name, v);
+        } else {  // int, bool
+            write_attr(loc, name, static_cast<std::int64_t>(v));
+        }
+        if (units != nullptr) write_attr(loc, std::string(name) + "_units", std::string(units));
+    });
+    if (p.B > 0.0 && p.rho0 > 0.0) {
+        write_attr(loc, "c0", p.c0());
+        write_attr(loc, "c0_units", std::string("m/s"));
+    }
+}
+
+SimParams read_params(hid_t loc) {
+    SimParams p;
+    visit_params(p, [loc](const char* name, auto& v, const char*) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_enum_v<T>) {
+            v = static_cast<T>(read_attr_int64(loc, name));
+            if (enum_name(v) == "unknown") {
+                throw InputError(where_attr(loc, name), "unknown value", "a value this code knows",
+                                 std::to_string(static_cast<int>(v)));
+            }
+        } else if constexpr (std::is_same_v<T, double>) {
+            v = read_attr_double(loc, name);
+        } else if constexpr (std::is_same_v<T, bool>) {
+            v = read_attr_int64(loc, name) != 0;
+        } else {
+            v = static_cast<T>(read_attr_int64(loc, name));
+        }
+    });
+    return p;
+}
+
+}  // namespace sphjet::h5

@@ -1,0 +1,356 @@
+#include "io/hdf5_output.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <regex>
+#include <stdexcept>
+#include <system_error>
+
+#include "config/errors.hpp"
+#include "io/h5_util.hpp"
+#include "io/xdmf.hpp"
+
+namespace sphjet {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::int64_t kFormatVersion = 1;
+const char* const kRunName = "run.h5";
+
+struct StdField {
+    const char* name;
+    const char* units;
+};
+constexpr std::array<StdField, 10> kStdFields{{{"x", "m"},
+                                               {"z", "m"},
+                                               {"u", "m/s"},
+                                               {"w", "m/s"},
+                                               {"rho", "kg/m^3"},
+                                               {"p", "Pa"},
+                                               {"m", "kg"},
+                                               {"id", "1"},
+                                               {"kind", "1"},
+                                               {"active", "1"}}};
+
+bool is_std_field(std::string_view name) {
+    return std::any_of(kStdFields.begin(), kStdFields.end(),
+                       [&](const StdField& f) { return name == f.name; });
+}
+
+void check_sizes(const ParticleSet& ps, std::span<const ExtraField> extra) {
+    const std::size_t n = ps.size();
+    const std::array<std::size_t, 10> sizes{
+        ps.x.size(), ps.z.size(), ps.u.size(),  ps.w.size(),    ps.rho.size(),
+        ps.p.size(), ps.m.size(), ps.id.size(), ps.kind.size(), ps.active.size()};
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+        if (sizes[k] != n) {
+            throw std::invalid_argument(
+                fmt::format("Hdf5Writer: particle array {} has {} values, x has {}",
+                            kStdFields[k].name, sizes[k], n));
+        }
+    }
+    for (const ExtraField& e : extra) {
+        if (e.name.empty() || e.name.find_first_of("/.") != std::string::npos ||
+            is_std_field(e.name)) {
+            throw std::invalid_argument("Hdf5Writer: bad extra field name '" + e.name + "'");
+        }
+        if (e.values.size() != n) {
+            throw std::invalid_argument(
+                fmt::format("Hdf5Writer: extra field {} has {} values, expected {}", e.name,
+                            e.values.size(), n));
+        }
+    }
+}
+
+// Snapshot files in dir, by index.
+std::map<std::int64_t, std::string> list_snapshots(const fs::path& dir) {
+    static const std::regex re(R"(snap_(\d+)\.h5)");
+    std::map<std::int64_t, std::string> out;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        std::smatch m;
+        if (std::regex_match(name, m, re)) out[std::stoll(m[1].str())] = name;
+    }
+    return out;
+}
+
+SnapshotInfo read_info(const fs::path& dir, std::int64_t index, const std::string& name) {
+    h5::File f = h5::open_file(dir / name);
+    SnapshotInfo s;
+    s.index = index;
+    s.file = name;
+    s.time = h5::read_attr_double(f, "time");
+    s.step = h5::read_attr_int64(f, "step");
+    s.n = static_cast<std::size_t>(h5::read_attr_int64(f, "n_particles"));
+    h5::Group g = h5::open_group(f, "particles");
+    for (const std::string& l : h5::link_names(g)) {
+        if (!is_std_field(l)) s.extra.push_back(l);
+    }
+    return s;
+}
+
+bool has_extra(const SnapshotInfo& s, std::string_view name) {
+    return std::find(s.extra.begin(), s.extra.end(), name) != s.extra.end();
+}
+
+bool has_normal(const SnapshotInfo& s) {
+    return has_extra(s, "normal_x") && has_extra(s, "normal_z");
+}
+
+xdmf::Grid grid_of(const SnapshotInfo& s) {
+    xdmf::Grid g;
+    g.name = fmt::format("snap_{:06d}", s.index);
+    g.h5_file = s.file;
+    g.time = s.time;
+    g.n = s.n;
+    g.connectivity = "/xdmf/vertices";
+    g.points = "/xdmf/points";
+    g.fields.push_back({"velocity", "/xdmf/velocity", xdmf::NumberType::Float64, true});
+    if (has_normal(s))
+        g.fields.push_back({"normal", "/xdmf/normal", xdmf::NumberType::Float64, true});
+    for (const StdField& f : kStdFields) {
+        const std::string name = f.name;
+        const auto type = name == "id"                           ? xdmf::NumberType::Int64
+                          : (name == "kind" || name == "active") ? xdmf::NumberType::Int32
+                                                                 : xdmf::NumberType::Float64;
+        g.fields.push_back({name, "/particles/" + name, type, false});
+    }
+    for (const std::string& e : s.extra) {
+        g.fields.push_back({e, "/particles/" + e, xdmf::NumberType::Float64, false});
+    }
+    return g;
+}
+
+void remove_quietly(const fs::path& p) {
+    std::error_code ec;
+    fs::remove(p, ec);
+}
+
+// Writes run.h5 (via run.h5.tmp and rename).
+void write_run_file(const fs::path& dir, const SimParams& params, const std::string& command_line,
+                    const std::string& history) {
+    const fs::path final_path = dir / kRunName;
+    fs::path tmp = final_path;
+    tmp += ".tmp";
+    try {
+        h5::File f = h5::create_file(tmp);
+        h5::write_attr(f, "format", std::string("sphjet-run"));
+        h5::write_attr(f, "format_version", kFormatVersion);
+        h5::write_attr(f, "code_version", h5::code_version());
+        h5::write_attr(f, "git_hash", h5::git_hash());
+        h5::write_attr(f, "hdf5_version",
+                       fmt::format("{}.{}.{}", H5_VERS_MAJOR, H5_VERS_MINOR, H5_VERS_RELEASE));
+        h5::write_attr(f, "command_line", command_line);
+        h5::write_attr(f, "started_utc", h5::utc_now());
+        h5::write_attr(f, "history", history);
+        h5::Group g = h5::create_group(f, "parameters");
+        h5::write_params(g, params);
+        g.reset();
+        h5::close_file(f, tmp);
+        h5::commit_file(tmp, final_path);
+    } catch (...) {
+        remove_quietly(tmp);
+        throw;
+    }
+}
+
+}  // namespace
+
+std::string default_units(std::string_view field) {
+    if (field == "curvature") return "1/m";
+    for (const StdField& f : kStdFields) {
+        if (field == f.name) return f.units;
+    }
+    return "1";  // colour, normal_x, normal_z and anything else
+}
+
+std::string snapshot_file_name(std::int64_t index) { return fmt::format("snap_{:06d}.h5", index); }
+
+Hdf5Writer::Hdf5Writer(fs::path dir, const SimParams& params, std::string command_line, Mode mode,
+                       std::int64_t resume_step)
+    : dir_(std::move(dir)), params_(params) {
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec || !fs::is_directory(dir_)) {
+        throw InputError(dir_.string(), "cannot create the output directory: " + ec.message());
+    }
+    const auto existing = list_snapshots(dir_);
+    std::string history;
+    const std::string line = h5::utc_now() + " " + command_line;
+    switch (mode) {
+        case Mode::Fresh:
+            if (!existing.empty()) {
+                throw InputError(dir_.string(), "the output directory already holds snapshots",
+                                 "an empty directory (or overwrite / resume)",
+                                 existing.begin()->second);
+            }
+            history = line;
+            break;
+        case Mode::Overwrite:
+            for (const auto& [index, name] : existing) remove_quietly(dir_ / name);
+            remove_quietly(xdmf_path());
+            remove_quietly(dir_ / kRunName);
+            history = line;
+            break;
+        case Mode::Resume: {
+            for (std::int64_t k = 0;; ++k) {
+                const auto it = existing.find(k);
+                if (it == existing.end()) break;
+                SnapshotInfo s = read_info(dir_, k, it->second);
+                if (s.step > resume_step) break;
+                snapshots_.push_back(std::move(s));
+            }
+            if (fs::exists(dir_ / kRunName)) {
+                try {
+                    h5::File f = h5::open_file(dir_ / kRunName);
+                    history = h5::read_attr_string(f, "history") + "\n";
+                } catch (const InputError&) {
+                    // An unreadable run.h5 is replaced; the history starts again.
+                }
+            }
+            history += line + fmt::format(" (resumed at step {})", resume_step);
+            break;
+        }
+    }
+    write_run_file(dir_, params_, command_line, history);
+    if (mode == Mode::Resume) {
+        std::vector<xdmf::Grid> grids;
+        for (const SnapshotInfo& s : snapshots_) grids.push_back(grid_of(s));
+        if (grids.empty()) {
+            remove_quietly(xdmf_path());
+        } else {
+            xdmf::write(xdmf_path(), grids);
+        }
+    }
+}
+
+fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
+                           std::span<const ExtraField> extra) {
+    check_sizes(ps, extra);
+    SnapshotInfo info;
+    info.index = snapshots_.empty() ? 0 : snapshots_.back().index + 1;
+    info.file = snapshot_file_name(info.index);
+    info.time = state.time;
+    info.step = state.step;
+    info.n = ps.size();
+    for (const ExtraField& e : extra) info.extra.push_back(e.name);
+
+    const fs::path final_path = dir_ / info.file;
+    fs::path tmp = final_path;
+    tmp += ".tmp";
+    try {
+        h5::File f = h5::create_file(tmp);
+        h5::write_attr(f, "format", std::string("sphjet-snapshot"));
+        h5::write_attr(f, "format_version", kFormatVersion);
+        h5::write_attr(f, "index", info.index);
+        h5::write_attr(f, "time", state.time);
+        h5::write_attr(f, "time_units", std::string("s"));
+        h5::write_attr(f, "legacy_time", state.legacy_time);
+        h5::write_attr(f, "step", state.step);
+        h5::write_attr(f, "dt", state.dt);
+        h5::write_attr(f, "dt_units", std::string("s"));
+        h5::write_attr(f, "n_particles", static_cast<std::int64_t>(ps.size()));
+        h5::write_attr(f, "nb", static_cast<std::int64_t>(ps.nb));
+        h5::write_attr(f, "nbf", static_cast<std::int64_t>(ps.nbf));
+        h5::write_attr(f, "code_version", h5::code_version());
+        h5::write_attr(f, "git_hash", h5::git_hash());
+        h5::write_attr(f, "written_utc", h5::utc_now());
+        {
+            h5::Group g = h5::create_group(f, "particles");
+            const auto units = [](const char* name) { return default_units(name); };
+            h5::write_array(g, "x", std::span<const double>(ps.x), units("x").c_str());
+            h5::write_array(g, "z", std::span<const double>(ps.z), units("z").c_str());
+            h5::write_array(g, "u", std::span<const double>(ps.u), units("u").c_str());
+            h5::write_array(g, "w", std::span<const double>(ps.w), units("w").c_str());
+            h5::write_array(g, "rho", std::span<const double>(ps.rho), units("rho").c_str());
+            h5::write_array(g, "p", std::span<const double>(ps.p), units("p").c_str());
+            h5::write_array(g, "m", std::span<const double>(ps.m), units("m").c_str());
+            h5::write_array(g, "id", std::span<const std::int64_t>(ps.id), "1");
+            h5::write_array(g, "kind", std::span<const std::int32_t>(ps.kind), "1");
+            h5::write_array(g, "active", std::span<const std::int32_t>(ps.active), "1");
+            for (const ExtraField& e : extra) {
+                const std::string u = e.units.empty() ? default_units(e.name) : e.units;
+                h5::write_array(g, e.name, e.values, u.c_str());
+            }
+        }
+        {
+            h5::Group g = h5::create_group(f, "parameters");
+            h5::write_params(g, params_);
+        }
+        {
+            // What the XDMF index reads: points (x, 0, z), vectors (u, 0, w) and
+            // (normal_x, 0, normal_z) as views of the arrays above, and the connectivity.
+            h5::Group g = h5::create_group(f, "xdmf");
+            const std::size_t n = ps.size();
+            h5::write_vec3_view(g, "points", {"/particles/x", "", "/particles/z"}, n);
+            h5::write_vec3_view(g, "velocity", {"/particles/u", "", "/particles/w"}, n);
+            if (has_normal(info)) {
+                h5::write_vec3_view(g, "normal", {"/particles/normal_x", "", "/particles/normal_z"},
+                                    n);
+            }
+            h5::write_iota(g, "vertices", n);
+        }
+        h5::close_file(f, tmp);
+        h5::commit_file(tmp, final_path);
+    } catch (...) {
+        remove_quietly(tmp);
+        throw;
+    }
+
+    snapshots_.push_back(std::move(info));
+    std::vector<xdmf::Grid> grids;
+    grids.reserve(snapshots_.size());
+    for (const SnapshotInfo& s : snapshots_) grids.push_back(grid_of(s));
+    xdmf::write(xdmf_path(), grids);
+    return final_path;
+}
+
+const std::vector<double>* Snapshot::field(std::string_view name) const {
+    for (const auto& [n, v] : extra) {
+        if (n == name) return &v;
+    }
+    return nullptr;
+}
+
+Snapshot read_snapshot(const fs::path& path) {
+    h5::File f = h5::open_file(path);
+    Snapshot s;
+    s.index = h5::read_attr_int64(f, "index");
+    s.time = h5::read_attr_double(f, "time");
+    s.legacy_time = h5::read_attr_double(f, "legacy_time");
+    s.dt = h5::read_attr_double(f, "dt");
+    s.step = h5::read_attr_int64(f, "step");
+    const auto n = static_cast<std::size_t>(h5::read_attr_int64(f, "n_particles"));
+    ParticleSet& ps = s.particles;
+    ps.nb = static_cast<std::size_t>(h5::read_attr_int64(f, "nb"));
+    ps.nbf = static_cast<std::size_t>(h5::read_attr_int64(f, "nbf"));
+    h5::Group g = h5::open_group(f, "particles");
+    ps.x = h5::read_doubles(g, "x", n);
+    ps.z = h5::read_doubles(g, "z", n);
+    ps.u = h5::read_doubles(g, "u", n);
+    ps.w = h5::read_doubles(g, "w", n);
+    ps.rho = h5::read_doubles(g, "rho", n);
+    ps.p = h5::read_doubles(g, "p", n);
+    ps.m = h5::read_doubles(g, "m", n);
+    ps.id = h5::read_int64(g, "id", n);
+    ps.kind = h5::read_int32(g, "kind", n);
+    ps.active = h5::read_int32(g, "active", n);
+    for (const std::string& name : h5::link_names(g)) {
+        if (!is_std_field(name)) s.extra.emplace_back(name, h5::read_doubles(g, name, n));
+    }
+    return s;
+}
+
+SimParams read_run_params(const fs::path& path) {
+    h5::File f = h5::open_file(path);
+    h5::Group g = h5::open_group(f, "parameters");
+    return h5::read_params(g);
+}
+
+}  // namespace sphjet

@@ -1,0 +1,116 @@
+// HDF5 snapshots of a run, indexed for ParaView by one XDMF file.
+//
+// A run directory holds
+//   run.h5             the case parameters, code version and command line of the run
+//   snap_000000.h5 ... one file per snapshot (every particle array, with units; time, step,
+//                      dt; a copy of the parameters, so one snapshot stands on its own)
+//   sphjet.xmf         the XDMF temporal collection of all snapshots written so far
+// Each file is written under a temporary name, fsynced and renamed into place, and the index
+// is rewritten the same way after each snapshot: a run killed at any moment leaves every
+// earlier snapshot readable and an index that opens in ParaView.
+//
+// Snapshot layout (h5dump -H):
+//   /                 attrs format = "sphjet-snapshot", format_version, index, time, step, dt,
+//                     legacy_time, n_particles, nb, nbf, code_version, git_hash, written_utc
+//   /particles/x z u w rho p m     float64 [n], attr units (m, m/s, kg/m^3, Pa, kg)
+//   /particles/id                  int64 [n]  (stable id = initial index)
+//   /particles/kind active         int32 [n]  (ParticleKind; 1 in the domain, 0 removed)
+//   /particles/<extra>             float64 [n], e.g. colour normal_x normal_z curvature
+//   /parameters                    attrs: every SimParams field (see h5_util.hpp)
+//   /xdmf/points velocity [normal] float64 [n x 3]: (x, 0, z), (u, 0, w), (normal_x, 0,
+//                                  normal_z) as HDF5 virtual datasets over the arrays above
+//                                  (no extra space; need HDF5 >= 1.10 to read)
+//   /xdmf/vertices                 int64 [n] 0..n-1, compressed: Polyvertex connectivity
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "config/params.hpp"
+#include "core/particles.hpp"
+#include "core/run_state.hpp"
+
+namespace sphjet {
+
+// An extra per-particle field written beside the standard ones (the surface-tension fields
+// colour, normal_x, normal_z, curvature). Empty units: default_units(name).
+struct ExtraField {
+    std::string name;
+    std::span<const double> values;
+    std::string units;
+};
+
+// Units of the fields this code knows: colour, normal_x, normal_z -> "1", curvature -> "1/m";
+// "1" for any other name.
+[[nodiscard]] std::string default_units(std::string_view field);
+
+// "snap_000042.h5"
+[[nodiscard]] std::string snapshot_file_name(std::int64_t index);
+
+// What the index needs to know of one snapshot already on disk.
+struct SnapshotInfo {
+    std::int64_t index = 0;
+    std::string file;   // name inside the run directory
+    double time = 0.0;  // [s]
+    std::int64_t step = 0;
+    std::size_t n = 0;               // particles
+    std::vector<std::string> extra;  // names of the extra fields, in name order
+};
+
+class Hdf5Writer {
+public:
+    enum class Mode {
+        Fresh,      // the directory must not hold snapshots yet (it is created if missing)
+        Overwrite,  // removes earlier snapshots, run.h5 and the index first
+        Resume,     // keeps snapshots up to resume_step and continues numbering after them
+    };
+
+    // Writes DIR/run.h5 (parameters, code version, command line). Throws InputError when the
+    // directory cannot be made or (Fresh) already holds snapshots. In Resume mode the leading
+    // snapshots with step <= resume_step are kept and indexed; later ones stay on disk, are
+    // left out of the index and are replaced as the resumed run writes them again.
+    Hdf5Writer(std::filesystem::path dir, const SimParams& params, std::string command_line,
+               Mode mode = Mode::Fresh, std::int64_t resume_step = 0);
+
+    // Writes the next snapshot and rewrites the index; returns the snapshot's path. Every
+    // particle array must have ps.size() values, and so must each extra field (whose name
+    // must not be a standard field's). Throws InputError when the file cannot be written.
+    std::filesystem::path write(const ParticleSet& ps, const RunState& state,
+                                std::span<const ExtraField> extra = {});
+
+    [[nodiscard]] const std::filesystem::path& dir() const { return dir_; }
+    [[nodiscard]] std::filesystem::path xdmf_path() const { return dir_ / "sphjet.xmf"; }
+    [[nodiscard]] const std::vector<SnapshotInfo>& snapshots() const { return snapshots_; }
+
+private:
+    std::filesystem::path dir_;
+    SimParams params_;
+    std::vector<SnapshotInfo> snapshots_;
+};
+
+// One snapshot read back.
+struct Snapshot {
+    ParticleSet particles;  // wall links are not part of a snapshot (see checkpoint.hpp)
+    std::int64_t index = 0;
+    double time = 0.0, legacy_time = 0.0, dt = 0.0;
+    std::int64_t step = 0;
+    std::vector<std::pair<std::string, std::vector<double>>> extra;  // in name order
+
+    // The extra field of that name, or nullptr.
+    [[nodiscard]] const std::vector<double>* field(std::string_view name) const;
+};
+
+// Reads a snapshot written by Hdf5Writer. InputError names the file and the missing or
+// malformed dataset.
+[[nodiscard]] Snapshot read_snapshot(const std::filesystem::path& path);
+
+// Reads the parameters of a run from run.h5 or any snapshot.
+[[nodiscard]] SimParams read_run_params(const std::filesystem::path& path);
+
+}  // namespace sphjet

@@ -1,0 +1,108 @@
+#include "io/xdmf.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <system_error>
+
+#include "config/errors.hpp"
+#include "io/h5_util.hpp"
+
+namespace sphjet::xdmf {
+
+namespace {
+
+std::string escape(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    for (const char c : s) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&apos;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+const char* number_type(NumberType t) { return t == NumberType::Float64 ? "Float" : "Int"; }
+int precision(NumberType t) { return t == NumberType::Int32 ? 4 : 8; }
+
+void data_item(std::string& out, const std::string& indent, const Grid& g,
+               const std::string& dataset, NumberType t, bool vector) {
+    const std::string dims = vector ? fmt::format("{} 3", g.n) : fmt::format("{}", g.n);
+    out += fmt::format(
+        "{}<DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" Format=\"HDF\">"
+        "{}:{}</DataItem>\n",
+        indent, dims, number_type(t), precision(t), escape(g.h5_file), escape(dataset));
+}
+
+}  // namespace
+
+std::string document(std::span<const Grid> grids) {
+    std::string out =
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+        "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
+        "  <Domain>\n"
+        "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    const std::string i4(8, ' '), i5(10, ' ');
+    for (const Grid& g : grids) {
+        out += fmt::format("      <Grid Name=\"{}\" GridType=\"Uniform\">\n", escape(g.name));
+        out += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", i4, g.time);
+        out += fmt::format(
+            "{}<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" "
+            "NodesPerElement=\"1\">\n",
+            i4, g.n);
+        data_item(out, i5, g, g.connectivity, NumberType::Int64, false);
+        out += i4 + "</Topology>\n";
+        out += i4 + "<Geometry GeometryType=\"XYZ\">\n";
+        data_item(out, i5, g, g.points, NumberType::Float64, true);
+        out += i4 + "</Geometry>\n";
+        for (const Field& f : g.fields) {
+            out += fmt::format("{}<Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n",
+                               i4, escape(f.name), f.vector ? "Vector" : "Scalar");
+            data_item(out, i5, g, f.dataset, f.type, f.vector);
+            out += i4 + "</Attribute>\n";
+        }
+        out += "      </Grid>\n";
+    }
+    out +=
+        "    </Grid>\n"
+        "  </Domain>\n"
+        "</Xdmf>\n";
+    return out;
+}
+
+void write(const std::filesystem::path& path, std::span<const Grid> grids) {
+    const std::string text = document(grids);
+    std::filesystem::path tmp = path;
+    tmp += ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        if (!f) throw InputError(tmp.string(), "cannot create file");
+        f.write(text.data(), static_cast<std::streamsize>(text.size()));
+        f.close();
+        if (!f) {
+            std::error_code ec;
+            std::filesystem::remove(tmp, ec);
+            throw InputError(tmp.string(), "cannot write file (disk full?)");
+        }
+    }
+    h5::commit_file(tmp, path);
+}
+
+}  // namespace sphjet::xdmf
