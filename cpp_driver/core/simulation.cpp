@@ -177,7 +177,8 @@ RunSummary run_simulation(const RunOptions& opts) {
                 const std::string name = e.path().filename().string();
                 if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
                     name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
-                    name == "case.toml")
+                    name == "case.toml" || name == "INDAT" || name == "IPART" ||
+                    name == "NORMALS.init")
                     fs::remove(e.path());
             }
         }
@@ -188,6 +189,13 @@ RunSummary run_simulation(const RunOptions& opts) {
     const SimParams& prm = spec.params;
     const bool legacy_out = spec.output.format != OutputFormat::Hdf5;
     const bool hdf5_out = spec.output.format != OutputFormat::Legacy;
+
+    if (legacy_out && !opts.resume) {
+        // The legacy post-processing chain reads INDAT and IPART beside the PART files.
+        write_indat(dir / "INDAT", prm, particles.size(), particles.nb, particles.nbf, spec.legacy);
+        write_ipart(dir / "IPART", particles);
+        if (prm.boundary == BoundaryType::Repulsive) write_normals(dir / "NORMALS.init", particles);
+    }
 
     if (opts.threads > 0) Solver::set_threads(opts.threads);
     Solver solver(prm, spec.output, std::move(particles));

@@ -1,0 +1,412 @@
+#include "geometry/generator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include "config/errors.hpp"
+
+namespace sphjet {
+namespace {
+
+// The value a legacy single-precision variable would hold.
+double f32(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+// Fortran NINT: nearest integer, halves away from zero.
+long nint(double v) { return std::lround(v); }
+
+class Builder {
+public:
+    explicit Builder(const CaseSpec& spec) : spec_(spec), p_(spec.params) {
+        repulsive_ = p_.boundary == BoundaryType::Repulsive;
+        bcc_ = p_.lattice == Lattice::BodyCentred;
+        // N and L spacings across the box; legacy holds LX and LZ in single precision.
+        n_ = nint(f32(p_.lx) / p_.dx);
+        l_ = nint(f32(p_.lz) / p_.dz);
+    }
+
+    InitialState build() {
+        box_walls();
+        for (const WallSpec& w : spec_.walls) inner_wall(w);
+        for (const ObstacleSpec& o : spec_.obstacles) obstacle(o);
+        boundary_density_and_mass();
+
+        if (spec_.legacy_fill) {
+            for (const FluidBlock& b : spec_.fluid_blocks) legacy_fill(b);
+        } else {
+            for (const FluidBlock& b : spec_.fluid_blocks)
+                fill_shape(b.r, b.r.zmax, b.u0, b.w0, [&](double x, double z) {
+                    return inside_rect(b.r, x, z);
+                });
+        }
+        for (const FluidSquare& q : spec_.fluid_squares) {
+            const Rect r{q.xc - q.side / 2, q.xc + q.side / 2, q.zc - q.side / 2, q.zc + q.side / 2};
+            fill_shape(r, r.zmax, q.u0, q.w0, [&](double x, double z) { return inside_rect(r, x, z); });
+        }
+        for (const FluidDisc& d : spec_.fluid_discs) {
+            const Rect r{d.xc - d.radius, d.xc + d.radius, d.zc - d.radius, d.zc + d.radius};
+            const double r2 = d.radius * d.radius + tol() * tol();
+            fill_shape(r, r.zmax, d.u0, d.w0, [&](double x, double z) {
+                return (x - d.xc) * (x - d.xc) + (z - d.zc) * (z - d.zc) <= r2;
+            });
+        }
+        if (ps_.n_fluid() == 0)
+            throw InputError(spec_.source, "the case places no fluid particle",
+                             "fluid regions that hold at least one lattice point", "none");
+
+        InitialState s;
+        s.params = p_;
+        s.legacy = spec_.legacy;
+        if (repulsive_) ps_.wall = links_;
+        s.particles = std::move(ps_);
+        return s;
+    }
+
+private:
+    // --- boundaries -------------------------------------------------------------------
+
+    std::size_t boundary(double x, double z) {
+        const std::size_t i = ps_.push(x, z, 0, 0, 0, 0, 0, ParticleKind::FixedBoundary);
+        ps_.nb = ps_.nbf = ps_.size();
+        if (repulsive_) links_.push_back({});
+        return i;
+    }
+
+    // Neighbour links of the line of repulsive particles first..first+count-1, as legacy
+    // sets them: forward lines name the following particle "next", reversed lines the
+    // preceding one; a particle at an end names itself for the missing side.
+    void link_line(std::size_t first, std::size_t count, bool reversed) {
+        for (std::size_t j = 0; j < count; ++j) {
+            const int idx = static_cast<int>(first + j);
+            const bool start = j == 0, end = j + 1 == count;
+            WallLink& w = links_[first + j];
+            if (!reversed) {
+                w.prev = start ? idx : idx - 1;
+                w.next = end ? idx : idx + 1;
+            } else {
+                w.prev = end ? idx : idx + 1;
+                w.next = start ? idx : idx - 1;
+            }
+        }
+    }
+
+    void box_walls() {
+        const double dx = p_.dx, dz = p_.dz;
+        const long n = n_, l = l_;
+        if (!repulsive_) {
+            // Two staggered layers; (k - 0.5) and (i + 0.5) are exact, as in legacy's single.
+            if (spec_.wall_left) {
+                for (long k = 0; k <= l; ++k) boundary(0.0, k * dz);
+                for (long k = 0; k <= l; ++k) boundary(-0.5 * dx, (k - 0.5) * dz);
+            }
+            if (spec_.wall_right) {
+                for (long k = 0; k <= l; ++k) boundary(n * dx, k * dz);
+                for (long k = 0; k <= l; ++k) boundary((n + 0.5) * dx, (k - 0.5) * dz);
+            }
+            if (spec_.wall_bottom) {
+                for (long i = 1; i <= n - 1; ++i) boundary(i * dx, 0.0);
+                for (long i = 0; i <= n - 1; ++i) boundary((i + 0.5) * dx, -0.5 * dz);
+            }
+            if (spec_.wall_top) {  // sphjet extension: the bottom wall mirrored at z = L dz
+                for (long i = 1; i <= n - 1; ++i) boundary(i * dx, l * dz);
+                for (long i = 0; i <= n - 1; ++i) boundary((i + 0.5) * dx, (l + 0.5) * dz);
+            }
+            return;
+        }
+        // One line per wall; normals (from the links) point into the box.
+        if (spec_.wall_left) {
+            const std::size_t first = ps_.size();
+            for (long k = 0; k <= l; ++k) boundary(0.0, k * dz);
+            link_line(first, static_cast<std::size_t>(l + 1), true);
+        }
+        if (spec_.wall_right) {
+            const std::size_t first = ps_.size();
+            for (long k = 0; k <= l; ++k) boundary(n * dx, k * dz);
+            link_line(first, static_cast<std::size_t>(l + 1), false);
+        }
+        if (spec_.wall_bottom) {
+            const std::size_t first = ps_.size();
+            for (long i = 0; i <= n; ++i) boundary(i * dx, 0.0);
+            link_line(first, static_cast<std::size_t>(n + 1), false);
+        }
+        if (spec_.wall_top) {
+            const std::size_t first = ps_.size();
+            for (long i = 0; i <= n; ++i) boundary(i * dx, l * dz);
+            link_line(first, static_cast<std::size_t>(n + 1), true);
+        }
+    }
+
+    // Legacy "Add wall": a column on the wall line and a staggered one half a spacing right.
+    void inner_wall(const WallSpec& w) {
+        if (repulsive_)
+            throw InputError(spec_.source, "a wall inside the box needs dynamic boundaries",
+                             "boundary type dynamic", "repulsive");
+        const long l_end = nint(w.height / p_.dz);
+        for (long k = 0; k <= l_end; ++k) {
+            boundary(w.x, k * p_.dz);
+            if ((k + 0.5) * p_.dz <= w.height) boundary(w.x + 0.5 * p_.dx, (k + 0.5) * p_.dz);
+        }
+    }
+
+    void obstacle(const ObstacleSpec& o) {
+        if (o.shape != 1)
+            throw InputError(spec_.source, "unsupported obstacle shape", "1 (rectangle)", std::to_string(o.shape));
+        if (o.kind != 1 && o.kind != 2)
+            throw InputError(spec_.source, "invalid obstacle kind", "1 (solid) or 2 (walls)", std::to_string(o.kind));
+        if (o.kind == 1 && repulsive_)
+            throw InputError(spec_.source, "a solid obstacle needs dynamic boundaries",
+                             "obstacle kind 2 (walls) with repulsive boundaries", "kind 1 (solid)");
+        if (o.density < 1)
+            throw InputError(spec_.source, "invalid obstacle density", "an integer >= 1", std::to_string(o.density));
+
+        // Legacy single-precision quantities of the obstacle.
+        const float pi = 4.0f * std::atan(1.0f);
+        const float dx1 = static_cast<float>(p_.dx / o.density);
+        const float dz1 = static_cast<float>(p_.dz / o.density);
+        const double xmin = o.r.xmin, xmax = o.r.xmax, zmin = o.r.zmin, zmax = o.r.zmax;
+        float slope = static_cast<float>(o.beta_deg);
+        slope = slope * pi;
+        slope = slope / 180.0f;
+        float cot = 0.0f;  // 1/tan(slope): horizontal shift per row of an inclined side
+        float xtop = 0.0f;
+        if (slope == pi / 2.0f) {
+            xtop = static_cast<float>(static_cast<double>(1.01f) * xmax);
+        } else {
+            cot = 1.0f / std::tan(slope);
+            const long kmax = nint(zmax / dz1);
+            const float shift = (static_cast<float>(kmax) * dx1) * cot;
+            xtop = static_cast<float>(static_cast<double>(1.01f) * (xmax + shift));
+        }
+        const long n_ini = nint(xmin / dx1), n_end = nint(xmax / dx1);
+        // The floor under the obstacle is flat (hk = 0): the base is at max(ZMin, 0).
+        const float zinf = static_cast<float>(std::max(zmin, 0.0));
+        long l_ini = nint(zinf / dz1);
+        long l_end = nint(zmax / dz1);
+
+        // x of lattice node (i, k): XMin + (i - N_ini) dx1 + (k - L_ini) cot dx1, the two
+        // offsets in single precision as in legacy; `half` shifts i by -1/2.
+        const auto x_at = [&](long i, long k, bool half) {
+            const float di = half ? static_cast<float>(i - n_ini) - 0.5f : static_cast<float>(i - n_ini);
+            const float a = di * dx1;
+            const float b = (static_cast<float>(k - l_ini) * cot) * dx1;
+            return (xmin + static_cast<double>(a)) + static_cast<double>(b);
+        };
+
+        if (!repulsive_) {
+            const auto z_at = [&](long k, bool half) {
+                const float dk = half ? static_cast<float>(k - l_ini) - 0.5f : static_cast<float>(k - l_ini);
+                return static_cast<double>(zinf + dk * dz1);
+            };
+            const double ztop = static_cast<double>(1.01f) * zmax;
+            for (long i = n_ini; i <= n_end; ++i) {
+                for (long k = l_ini; k <= l_end; ++k) {
+                    if (o.kind == 1) {
+                        boundary(x_at(i, k, false), z_at(k, false));
+                        const double xh = x_at(i, k, true), zh = z_at(k, true);
+                        if (xh <= static_cast<double>(xtop) && zh <= ztop) boundary(xh, zh);
+                    } else if (i == n_ini || i == n_end || k == l_ini || k == l_end) {
+                        boundary(x_at(i, k, false), z_at(k, false));
+                        boundary(x_at(i, k, true), z_at(k, true));
+                    }
+                }
+            }
+            return;
+        }
+
+        // Repulsive: four faces of single lines, each linked along itself.
+        const auto z_rep = [&](long k) { return static_cast<double>(static_cast<float>(k) * dz1); };
+        for (const long i : {n_ini, n_end}) {  // faces 1 (x = XMin) and 2 (x = XMax)
+            l_ini = nint(zinf / dz1);
+            l_end = nint(zmax / dz1);
+            const std::size_t first = ps_.size();
+            for (long k = l_ini; k <= l_end; ++k) boundary(x_at(i, k, false), z_rep(k));
+            link_line(first, static_cast<std::size_t>(l_end - l_ini + 1), i == n_end);
+        }
+        for (const double zface : {zmin, zmax}) {  // faces 3 (z = ZMin) and 4 (z = ZMax)
+            const long k = nint(zface / dz1);
+            const std::size_t first = ps_.size();
+            for (long i = n_ini; i <= n_end; ++i) boundary(x_at(i, k, false), z_rep(k));
+            link_line(first, static_cast<std::size_t>(n_end - n_ini + 1), zface == zmin);
+        }
+    }
+
+    void boundary_density_and_mass() {
+        const std::size_t nb = ps_.size();
+        for (std::size_t i = 0; i < nb; ++i) {
+            ps_.rho[i] = p_.rho0;
+            ps_.p[i] = 0.0;
+            if (spec_.legacy_fill) {  // legacy: single precision, dr = dx dz rounded to single
+                const float rho = static_cast<float>(p_.rho0);
+                const float dr = static_cast<float>(p_.dx * p_.dz);
+                ps_.m[i] = repulsive_ ? rho * dr : (0.5f * rho) * dr;
+            } else {
+                ps_.m[i] = (repulsive_ ? 1.0 : 0.5) * p_.rho0 * p_.dx * p_.dz;
+            }
+        }
+    }
+
+    // --- fluid ------------------------------------------------------------------------
+
+    [[nodiscard]] double lattice_factor() const { return bcc_ ? 0.5 : 1.0; }
+    [[nodiscard]] double gravity() const { return std::hypot(p_.gx, p_.gz); }
+
+    void require_B() const {
+        if (!(p_.B > 0))
+            throw InputError(spec_.source, "hydrostatic fluid density needs the Tait constant B",
+                             "B > 0", std::to_string(p_.B));
+    }
+
+    // A fluid particle as SPHYSICSgen2D's pressure routine sets it: density from the
+    // hydrostatic column above it (mixed single/double as in legacy, stored single), then
+    // pressure and mass in single precision.
+    void legacy_fluid(double x, double z, double zref, double u0, double w0) {
+        const float rho0 = static_cast<float>(p_.rho0);
+        const float g = static_cast<float>(gravity());
+        const float b = static_cast<float>(p_.B);
+        const float gamma = static_cast<float>(p_.gamma);
+        const float expont = 1.0f / gamma;
+        const float vnorm = static_cast<float>(lattice_factor());
+        const double base = 1.0 + static_cast<double>(rho0 * g) * (zref - z) / static_cast<double>(b);
+        const float rho = static_cast<float>(static_cast<double>(rho0) * std::pow(base, static_cast<double>(expont)));
+        const float pr = b * (std::pow(rho / rho0, gamma) - 1.0f);
+        const float m = static_cast<float>(static_cast<double>(vnorm * rho) * p_.dx * p_.dz);
+        ps_.push(x, z, u0, w0, rho, pr, m, ParticleKind::Fluid);
+    }
+
+    // SPHYSICSgen2D's fill of a "cube containing particles" in a BOX with a flat floor.
+    void legacy_fill(const FluidBlock& blk) {
+        require_B();
+        const double dx = p_.dx, dz = p_.dz;
+        const float vnorm = static_cast<float>(lattice_factor());
+        const double xmin_init = blk.r.xmin;                         // double in legacy
+        const float xmax_init = static_cast<float>(blk.r.xmax);      // single in legacy
+        const float zmax_init = static_cast<float>(blk.r.zmax);      // single in legacy
+        const long n_end = nint(blk.r.xmax / dx), n_ini = nint(blk.r.xmin / dx);
+        double xmin = n_ini * dx;
+        const double xmax = n_end * dx;
+        // Undo the rounding of XMin unless it moved by about a quarter spacing (legacy rule).
+        if (xmin > xmin_init + static_cast<double>(vnorm * 0.5f) * dx)
+            xmin = xmin_init;
+        else if (xmin < xmin_init + static_cast<double>(0.99f * vnorm * 0.5f) * dx)
+            xmin = xmin_init;
+        double zmax = nint(blk.r.zmax / dz) * dz;
+        if (zmax > f32(p_.h_swl)) zmax = f32(p_.h_swl);
+        // Flat floor: the column starts at the floor (ZZinf = 0, L_ini = 0) whatever ZMin is.
+        // (Legacy takes the start as min(floor height, a value it sets only when the floor is
+        // below the rounded ZMin); when it does not set it (ZMin <= 0), we take the floor too.)
+        long l_end = static_cast<long>(zmax / dz);
+        if (l_end * dz < static_cast<double>(zmax_init)) ++l_end;
+
+        const double zlow = 0.25 * dz;  // 1.001 * hk + 0.25 dz with hk = 0
+        const double zhigh = static_cast<double>(1.001f) * zmax;
+        const double xlow = static_cast<double>(0.999f) * xmin_init;
+        const double xhigh = static_cast<double>(0.999f * xmax_init) + 0.5 * dx;
+        const double xbcc_max = static_cast<double>(1.001f) * xmax;
+        const auto keep = [&](double x, double z) { return z > zlow && z < zhigh && x > xlow && x < xhigh; };
+
+        for (long i = n_ini; i <= n_end; ++i) {
+            for (long k = 0; k <= l_end; ++k) {
+                const double x1 = xmin + static_cast<double>(i - n_ini) * dx;
+                const double z1 = static_cast<double>(k) * dz;
+                if (keep(x1, z1)) legacy_fluid(x1, z1, zmax, blk.u0, blk.w0);
+                if (!bcc_) continue;
+                const double x2 = xmin + static_cast<double>(static_cast<float>(i - n_ini) + 0.5f) * dx;
+                const double z2 = static_cast<double>(static_cast<float>(k) + 0.5f) * dz;
+                if (x2 <= xbcc_max && z2 <= zhigh && (!repulsive_ || keep(x2, z2)))
+                    legacy_fluid(x2, z2, zmax, blk.u0, blk.w0);
+            }
+        }
+    }
+
+    [[nodiscard]] double tol() const { return 1e-6 * std::min(p_.dx, p_.dz); }
+
+    [[nodiscard]] bool inside_rect(const Rect& r, double x, double z) const {
+        const double t = tol();
+        return x >= r.xmin - t && x <= r.xmax + t && z >= r.zmin - t && z <= r.zmax + t;
+    }
+
+    // Not on or just beside a wall line, nor within half a spacing of an obstacle.
+    [[nodiscard]] bool clear(double x, double z) const {
+        const double dx = p_.dx, dz = p_.dz;
+        if (x < -tol() || x > n_ * dx + tol() || z < -tol()) return false;
+        if (spec_.wall_left && x <= 0.25 * dx) return false;
+        if (spec_.wall_right && x >= n_ * dx - 0.25 * dx) return false;
+        if (spec_.wall_bottom && z <= 0.25 * dz) return false;
+        if (spec_.wall_top && z >= l_ * dz - 0.25 * dz) return false;
+        for (const WallSpec& w : spec_.walls)
+            if (x > w.x - 0.5 * dx && x < w.x + dx && z < w.height + 0.5 * dz) return false;
+        for (const ObstacleSpec& o : spec_.obstacles) {
+            const double shift = o.beta_deg == 90 ? 0.0 : (o.r.zmax - o.r.zmin) / std::tan(o.beta_deg * std::numbers::pi / 180);
+            const double xlo = std::min(o.r.xmin, o.r.xmin + shift), xhi = std::max(o.r.xmax, o.r.xmax + shift);
+            if (x > xlo - 0.5 * dx && x < xhi + 0.5 * dx && z > o.r.zmin - 0.5 * dz && z < o.r.zmax + 0.5 * dz)
+                return false;
+        }
+        return true;
+    }
+
+    // Modern shapes: lattice points inside, hydrostatic from ztop when gravity is on.
+    void fill_shape(const Rect& bbox, double ztop, double u0, double w0,
+                    const std::function<bool(double, double)>& inside) {
+        const double g = gravity();
+        if (g != 0) require_B();
+        const double dx = p_.dx, dz = p_.dz, rho0 = p_.rho0, gamma = p_.gamma;
+        const auto add = [&](double x, double z) {
+            if (!inside(x, z) || !clear(x, z)) return;
+            const double rho =
+                g == 0 ? rho0 : rho0 * std::pow(1.0 + rho0 * g * (ztop - z) / p_.B, 1.0 / gamma);
+            const double pr = g == 0 ? 0.0 : p_.B * (std::pow(rho / rho0, gamma) - 1.0);
+            ps_.push(x, z, u0, w0, rho, pr, lattice_factor() * rho * dx * dz, ParticleKind::Fluid);
+        };
+        const long i0 = static_cast<long>(std::floor(bbox.xmin / dx)) - 1;
+        const long i1 = static_cast<long>(std::ceil(bbox.xmax / dx)) + 1;
+        const long k0 = static_cast<long>(std::floor(bbox.zmin / dz)) - 1;
+        const long k1 = static_cast<long>(std::ceil(bbox.zmax / dz)) + 1;
+        for (long i = i0; i <= i1; ++i) {
+            for (long k = k0; k <= k1; ++k) {
+                add(i * dx, k * dz);
+                if (bcc_) add((i + 0.5) * dx, (k + 0.5) * dz);
+            }
+        }
+    }
+
+    const CaseSpec& spec_;
+    SimParams p_;
+    ParticleSet ps_;
+    std::vector<WallLink> links_;
+    bool repulsive_ = false, bcc_ = false;
+    long n_ = 0, l_ = 0;
+};
+
+void check_spec(const CaseSpec& spec) {
+    const SimParams& p = spec.params;
+    const std::string& where = spec.source;
+    if (!(p.dx > 0) || !(p.dz > 0))
+        throw InputError(where, "invalid particle spacing", "dx > 0 and dz > 0",
+                         std::to_string(p.dx) + ", " + std::to_string(p.dz));
+    if (!(p.lx > 0) || !(p.lz > 0))
+        throw InputError(where, "invalid box size", "lx > 0 and lz > 0",
+                         std::to_string(p.lx) + ", " + std::to_string(p.lz));
+    if (std::lround(static_cast<float>(p.lx) / p.dx) < 2 || std::lround(static_cast<float>(p.lz) / p.dz) < 2)
+        throw InputError(where, "spacing too coarse for the box", "at least 2 spacings across lx and lz",
+                         "dx = " + std::to_string(p.dx) + ", dz = " + std::to_string(p.dz));
+    if (spec.floor_beta_deg != 0)
+        throw InputError(where, "unsupported floor inclination", "0", std::to_string(spec.floor_beta_deg));
+    if (p.boundary != BoundaryType::Repulsive && p.boundary != BoundaryType::Dynamic)
+        throw InputError(where, "invalid boundary type", "repulsive (1) or dynamic (2)",
+                         std::to_string(static_cast<int>(p.boundary)));
+    if (p.lattice != Lattice::SimpleCubic && p.lattice != Lattice::BodyCentred)
+        throw InputError(where, "invalid lattice", "SC (1) or BCC (2)", std::to_string(static_cast<int>(p.lattice)));
+    if (spec.fluid_blocks.empty() && spec.fluid_squares.empty() && spec.fluid_discs.empty())
+        throw InputError(where, "no fluid in the case", "at least one fluid region", "none");
+}
+
+}  // namespace
+
+InitialState generate(const CaseSpec& spec) {
+    check_spec(spec);
+    return Builder(spec).build();
+}
+
+}  // namespace sphjet
