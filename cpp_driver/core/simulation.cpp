@@ -233,8 +233,8 @@ RunSummary run_simulation(const RunOptions& opts) {
     std::optional<DtFile> dtfile;
     std::optional<StepsFile> stepsfile;
     if (legacy_out) {
-        dtfile.emplace(dir / "DT");
-        stepsfile.emplace(dir / "steps.txt");
+        dtfile.emplace(dir / "DT", opts.resume);
+        stepsfile.emplace(dir / "steps.txt", opts.resume);
     }
     const auto extra = extra_fields(solver);
     if (h5 && !opts.resume) h5->write(solver.particles(), st, extra);

@@ -174,9 +174,10 @@ ParticleSet read_part(const fs::path& path, std::size_t nb, std::size_t nbf) {
     return ps;
 }
 
-DtFile::DtFile(const fs::path& path) : path_(path), out_(path, std::ios::trunc) {
+DtFile::DtFile(const fs::path& path, bool append)
+    : path_(path), out_(path, append && fs::exists(path) ? std::ios::app : std::ios::trunc) {
     if (!out_) throw InputError(path.string(), "cannot open DT file for writing");
-    out_ << " time dt1 dt2 dt_new\n" << std::flush;
+    if (out_.tellp() == 0) out_ << " time dt1 dt2 dt_new\n" << std::flush;
 }
 
 void DtFile::append(const DtRow& r) {
@@ -207,9 +208,10 @@ std::vector<DtRow> read_dt(const fs::path& path) {
     return rows;
 }
 
-StepsFile::StepsFile(const fs::path& path) : path_(path), out_(path, std::ios::trunc) {
+StepsFile::StepsFile(const fs::path& path, bool append)
+    : path_(path), out_(path, append && fs::exists(path) ? std::ios::app : std::ios::trunc) {
     if (!out_) throw InputError(path.string(), "cannot open steps file for writing");
-    out_ << "# output step time\n" << std::flush;
+    if (out_.tellp() == 0) out_ << "# output step time\n" << std::flush;
 }
 
 void StepsFile::append(const StepsRow& r) {

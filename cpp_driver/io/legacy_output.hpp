@@ -48,7 +48,8 @@ struct DtRow {
 // Each row is flushed as it is written, so a crashed run leaves only whole rows.
 class DtFile {
 public:
-    explicit DtFile(const std::filesystem::path& path);
+    // append: keep an existing file's rows (resume); otherwise start a new file.
+    explicit DtFile(const std::filesystem::path& path, bool append = false);
     void append(const DtRow& row);
 
 private:
@@ -68,7 +69,8 @@ struct StepsRow {
 // This fork's steps.txt: "# output step time", then one row per output (flushed per row).
 class StepsFile {
 public:
-    explicit StepsFile(const std::filesystem::path& path);
+    // append: keep an existing file's rows (resume); otherwise start a new file.
+    explicit StepsFile(const std::filesystem::path& path, bool append = false);
     void append(const StepsRow& row);
 
 private:

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs what sphjet needs to build, test and plot, from Debian's packages.
+# Run as root (or with sudo available). Safe to run again.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null 2>&1 || { echo "install_deps.sh: run as root or install sudo" >&2; exit 1; }
+  SUDO="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update
+$SUDO apt-get install -y --no-install-recommends \
+  g++ gfortran cmake make git ca-certificates \
+  libeigen3-dev libhdf5-dev hdf5-tools libcli11-dev libtomlplusplus-dev libfmt-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev \
+  python3 python3-numpy python3-matplotlib python3-h5py
