@@ -14,5 +14,6 @@ void register_bench(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_analyse(CLI::App& app);
 void register_convert(CLI::App& app);
+void register_drop(CLI::App& app);
 
 }  // namespace sphjet::cli

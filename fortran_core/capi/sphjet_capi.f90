@@ -18,11 +18,12 @@ module sphjet_capi
   use state_checks, only: check_finite
   use repulsive_wall, only: wall_normal
   use eos_tait, only: tait_pressure, tait_sound_speed
+  use surface_tension_loops, only: surface_tension_rates
   implicit none
   private
   public :: sph_workspace_create, sph_workspace_destroy, sph_set_threads, sph_get_threads, &
             sph_prepare, sph_step, sph_density_filter, sph_check_state, sph_compute_rates, &
-            sph_kernel_eval, sph_neighbour_pairs, sph_eos
+            sph_kernel_eval, sph_neighbour_pairs, sph_eos, sph_surface_tension_fields
 
   !> Scratch memory of the core, kept between calls (opaque to C++).
   type :: workspace_t
@@ -189,6 +190,44 @@ contains
     call compute_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted, visc_max)
     status = SPH_OK
   end function sph_compute_rates
+
+  !> CSF fields of the current state without stepping (tests, diagnostics): colour, normal n
+  !> (unnormalised colour gradient) and curvature into arr%colour, st_nx, st_nz, kappa (all
+  !> four required) and, when arr%ax and arr%az are given, the surface-tension acceleration
+  !> alone (eq 24: no pair forces, no gravity; 0 where sigma = 0) into them.
+  function sph_surface_tension_fields(ws_handle, prm, arr) result(status) &
+      bind(C, name="sph_surface_tension_fields")
+    type(c_ptr), value :: ws_handle
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    integer(c_int) :: status
+    type(workspace_t), pointer :: ws
+    type(state_t) :: st
+    logical :: ok
+    real(rp), pointer, contiguous :: ax(:), az(:)
+    integer :: k
+    status = SPH_ERR_ARGUMENT
+    if (.not. c_associated(ws_handle)) return
+    if (.not. params_ok(prm)) return
+    call bind_state(arr, st, .false., .false., ok)
+    if (.not. ok) return
+    if (st%n > 0 .and. .not. (associated(st%colour) .and. associated(st%st_nx) .and. &
+                              associated(st%st_nz) .and. associated(st%kappa))) return
+    call c_f_pointer(ws_handle, ws)
+    call gather_sorted(st, prm%h, ws%sorted)
+    call surface_tension_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted)
+    if (c_associated(arr%ax) .and. c_associated(arr%az)) then
+      call c_f_pointer(arr%ax, ax, [st%n])
+      call c_f_pointer(arr%az, az, [st%n])
+      ax = 0.0_rp
+      az = 0.0_rp
+      do k = 1, ws%sorted%n
+        ax(ws%sorted%grid%order(k)) = ws%sorted%ax(k)
+        az(ws%sorted%grid%order(k)) = ws%sorted%az(k)
+      end do
+    end if
+    status = SPH_OK
+  end function sph_surface_tension_fields
 
   !> W(r) and F(r) = (dW/dr)/r for n distances.
   function sph_kernel_eval(kernel, h, n, r, w, f) result(status) bind(C, name="sph_kernel_eval")

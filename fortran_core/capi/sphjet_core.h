@@ -118,6 +118,11 @@ int sph_kernel_eval(int kernel, double h, int64_t n, const double* r, double* w,
 int sph_neighbour_pairs(const sph_params_t* prm, const sph_arrays_t* arr, int64_t capacity,
                         int64_t* pi_, int64_t* pj_, int64_t* npairs);
 int sph_eos(const sph_params_t* prm, int64_t n, const double* rho, double* p, double* c);
+/* CSF fields of the current state without stepping: colour, normal (unnormalised colour
+ * gradient) and curvature into arr->colour, st_nx, st_nz, kappa (all four required); when
+ * arr->ax and arr->az are given, the surface-tension acceleration alone (paper eq 24) there. */
+int sph_surface_tension_fields(void* ws_handle, const sph_params_t* prm,
+                               const sph_arrays_t* arr);
 
 #ifdef __cplusplus
 }

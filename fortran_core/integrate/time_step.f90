@@ -4,9 +4,16 @@
 !>           parity; the paper writes min over all particles of sqrt(h/|f_a|);
 !>   dt_cv = h / (max_a c_a + h max_ab (u_ab . r_ab)/(r_ab^2 + eta^2));
 !>   dt    = CFL min(dt_f, dt_cv).
+!> With surface tension (sigma > 0) the step is further capped by the capillary limit of
+!> Brackbill et al. (1992) / Morris (2000): dt <= 0.25 sqrt(rho0 h^3 / (2 pi sigma)), the time
+!> a capillary wave of wavelength ~h needs to cross a quarter of h. This is a departure from
+!> the paper's eqs 30-32 (which have no capillary term): without it a run whose capillary
+!> speed sqrt(2 pi sigma / (rho0 h)) approaches c0 (fine resolution, strong sigma) has no
+!> bound on the explicit surface-tension step. dt_f and dt_cv are reported unchanged.
 module time_step
   use sphjet_kinds, only: rp, ip, KIND_FLUID
   use sphjet_types, only: sph_params_t, state_t
+  use surface_tension, only: csf_dt
   implicit none
   private
   public :: cfl_time_step
@@ -49,6 +56,7 @@ contains
       dt_cv = dt_f
     end if
     dt_new = prm%cfl * min(dt_f, dt_cv)
+    if (prm%sigma > 0.0_rp) dt_new = min(dt_new, csf_dt(prm%rho0, prm%h, prm%sigma))
   end subroutine cfl_time_step
 
 end module time_step

@@ -1,21 +1,210 @@
-!> CSF surface tension (Morris 2000) pair loops. Placeholder until the module lands:
-!> it refuses nothing and adds nothing; sigma > 0 is refused by the C interface meanwhile.
+!> CSF surface tension (Morris 2000; paper eqs 14-24) over the sorted particles: three pair
+!> sweeps of the common traversal (colour, then normal, then curvature) with per-particle
+!> steps between them, and the acceleration a_s = -(sigma/rho) kappa n added to the pair
+!> accelerations (sorted order) before rates.f90 scatters them. The formulas are in
+!> physics/surface_tension.f90. Like every traversal here, each particle receives its
+!> contributions in a fixed order, so the result is bitwise independent of the thread count.
+!>
+!> Boundary particles do not enter: colour, normal and curvature are sums over fluid
+!> neighbours only, boundary particles get C = n = kappa = 0 and no force. A wall therefore
+!> counts as "not liquid": fluid along a flat wall has a colour gradient pointing away from the
+!> wall but (the normal being uniform along the wall) no curvature and hence no force, and
+!> at a wall's end (a nozzle lip) the free surface meets the wall as a non-wetting contact
+!> (no adhesion term). Counting boundary particles as liquid instead would make the outer
+!> faces of a thin nozzle wall look like a liquid surface and pull fluid inside the nozzle
+!> towards them. Walls hold the fluid through the boundary scheme only.
 module surface_tension_loops
+  use sphjet_kinds, only: rp
   use sphjet_types, only: sph_params_t, state_t
-  use sphjet_kernels, only: kernel_t
+  use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t
+  use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
+  use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
+                             csf_curvature_pair, csf_curvature, csf_acceleration
   implicit none
   private
-  public :: surface_tension_rates
+  public :: surface_tension_rates, FREE_SURFACE_DELTA
+
+  !> Free-surface delta (a departure from eq 24, on by default). Eqs 14-24 come from
+  !> two-phase CSF (Morris 2000), where the colour jumps 1 -> 0 across particles on both sides
+  !> of the interface. At a free surface there are no particles outside, so only the liquid
+  !> side of the smoothed jump is on particles and the difference form of eq 18 shrinks it
+  !> further: with a_s = -(sigma/rho) kappa n a static disc is in equilibrium at a pressure of
+  !> only 0.11-0.14 sigma/R (test_core_surface_tension, LaplaceBalance with this switch off).
+  !> With the switch on, n in eq 24 is replaced by d_a = 2 sum_b V_b grad_a W_ab, the
+  !> kernel-truncation vector (points into the liquid, zero inside a full support) doubled:
+  !> the symmetric pressure force of rates.f90 on a particle in a uniform pressure p is
+  !> -(p/rho) d_a, so a_s = -(sigma/rho) kappa d_a balances exactly the uniform pressure
+  !> p = -sigma kappa = sigma/R of the Laplace law, whatever the particle arrangement. Colour,
+  !> normal, filter and curvature (eqs 14-23) are the paper's; the fields written out are n.
+  logical, parameter :: FREE_SURFACE_DELTA = .true.
+
+  integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3
+
+  !> Per-particle fields in sorted order.
+  type :: csf_work_t
+    real(rp), allocatable :: v(:), c(:), nx(:), nz(:), nhx(:), nhz(:), flag(:), num(:), den(:)
+    real(rp), allocatable :: gx(:), gz(:)  !< sum_b V_b grad_a W_ab (free-surface delta)
+  end type csf_work_t
 
 contains
 
+  !> Adds a_s (sorted order) to s%ax, s%az and stores colour, normal n (unnormalised) and
+  !> curvature in particle order in st%colour, st%st_nx, st%st_nz, st%kappa when those
+  !> arrays are present (0 for boundary and inactive particles). s must hold the gathered
+  !> state (gather_sorted). Nothing is done when sigma = 0 and no field array is present.
   subroutine surface_tension_rates(prm, kern, st, s)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
-    if (.false.) print *, prm%sigma, kern%h, st%n, s%n
+    type(csf_work_t) :: wk
+    real(rp) :: w0, eps, kap, ax, az
+    real(rp), allocatable :: kappa(:)
+    integer :: n, k, i
+
+    n = s%n
+    if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
+    allocate(wk%v(n), wk%c(n), wk%nx(n), wk%nz(n), wk%nhx(n), wk%nhz(n), wk%flag(n), &
+             wk%num(n), wk%den(n), wk%gx(n), wk%gz(n), kappa(n))
+    w0 = kernel_w0(kern)
+    eps = csf_threshold(prm%h)
+
+    ! colour (eq 14), self term included
+    !$omp parallel do schedule(static)
+    do k = 1, n
+      wk%v(k) = s%m(k) / s%rho(k)
+      wk%c(k) = merge(wk%v(k) * w0, 0.0_rp, s%fluid(k))
+      wk%nx(k) = 0.0_rp
+      wk%nz(k) = 0.0_rp
+      wk%gx(k) = 0.0_rp
+      wk%gz(k) = 0.0_rp
+    end do
+    !$omp end parallel do
+    call sweep(PASS_COLOUR, kern, s, wk)
+
+    ! normal (eq 18), then filter and unit normal (eqs 20-21)
+    call sweep(PASS_NORMAL, kern, s, wk)
+    !$omp parallel do schedule(static)
+    do k = 1, n
+      if (s%fluid(k)) then
+        call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
+      else
+        wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
+      end if
+      wk%num(k) = 0.0_rp
+      wk%den(k) = wk%flag(k) * wk%v(k) * w0   ! self term of the denominator of eq 23
+    end do
+    !$omp end parallel do
+
+    ! curvature (eq 23) and acceleration (eq 24)
+    call sweep(PASS_CURVATURE, kern, s, wk)
+    !$omp parallel do schedule(static) private(kap, ax, az)
+    do k = 1, n
+      kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+      kappa(k) = kap
+      if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
+        if (FREE_SURFACE_DELTA) then
+          call csf_acceleration(prm%sigma, s%rho(k), kap, 2.0_rp * wk%gx(k), &
+                                2.0_rp * wk%gz(k), ax, az)
+        else
+          call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
+        end if
+        s%ax(k) = s%ax(k) + ax
+        s%az(k) = s%az(k) + az
+      end if
+    end do
+    !$omp end parallel do
+
+    ! fields in particle order
+    if (associated(st%colour) .and. associated(st%st_nx) .and. associated(st%st_nz) &
+        .and. associated(st%kappa)) then
+      !$omp parallel do schedule(static)
+      do i = 1, st%n
+        st%colour(i) = 0.0_rp
+        st%st_nx(i) = 0.0_rp
+        st%st_nz(i) = 0.0_rp
+        st%kappa(i) = 0.0_rp
+      end do
+      !$omp end parallel do
+      !$omp parallel do schedule(static) private(i)
+      do k = 1, n
+        i = s%grid%order(k)
+        st%colour(i) = wk%c(k)
+        st%st_nx(i) = wk%nx(k)
+        st%st_nz(i) = wk%nz(k)
+        st%kappa(i) = kappa(k)
+      end do
+      !$omp end parallel do
+    end if
   end subroutine surface_tension_rates
+
+  !> One sweep over the fluid-fluid pairs closer than 2h (the phase scheme of traversal.f90).
+  subroutine sweep(pass, kern, s, wk)
+    integer, intent(in) :: pass
+    type(kernel_t), intent(in) :: kern
+    type(sorted_t), intent(in) :: s
+    type(csf_work_t), intent(inout) :: wk
+    integer, allocatable :: list(:, :)
+    integer :: phase, row, npair, ip_, a, b, b0
+    real(rp) :: dx, dz, r2, wab, f, gx, gz, da1, da2, db1, db2
+
+    do phase = 0, 1
+      !$omp parallel private(list, npair, ip_, a, b, b0, dx, dz, r2, wab, f, gx, gz, &
+      !$omp&   da1, da2, db1, db2)
+      allocate(list(5, MAX_PAIRS_PER_CELL * s%grid%ncx))
+      !$omp do schedule(dynamic, 1)
+      do row = phase, s%grid%ncz - 1, 2
+        call row_cell_pairs(s%grid, row, list, npair)
+        do ip_ = 1, npair
+          do a = list(1, ip_), list(2, ip_)
+            if (.not. s%fluid(a)) cycle
+            b0 = list(3, ip_)
+            if (list(5, ip_) == 1) b0 = a + 1
+            do b = b0, list(4, ip_)
+              if (.not. s%fluid(b)) cycle
+              dx = s%x(a) - s%x(b)
+              dz = s%z(a) - s%z(b)
+              r2 = dx * dx + dz * dz
+              if (r2 >= kern%support2 .or. r2 <= 1.0e-18_rp) cycle
+              call kernel_eval(kern, sqrt(r2), wab, f)
+              select case (pass)
+              case (PASS_COLOUR)
+                wk%c(a) = wk%c(a) + wk%v(b) * wab
+                wk%c(b) = wk%c(b) + wk%v(a) * wab
+              case (PASS_NORMAL)
+                gx = f * dx
+                gz = f * dz
+                call csf_normal_pair(wk%v(a), wk%v(b), wk%c(a), wk%c(b), gx, gz, &
+                                     da1, da2, db1, db2)
+                wk%nx(a) = wk%nx(a) + da1
+                wk%nz(a) = wk%nz(a) + da2
+                wk%nx(b) = wk%nx(b) + db1
+                wk%nz(b) = wk%nz(b) + db2
+                wk%gx(a) = wk%gx(a) + wk%v(b) * gx
+                wk%gz(a) = wk%gz(a) + wk%v(b) * gz
+                wk%gx(b) = wk%gx(b) - wk%v(a) * gx
+                wk%gz(b) = wk%gz(b) - wk%v(a) * gz
+              case default
+                if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
+                gx = f * dx
+                gz = f * dz
+                call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                                        wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                                        gx, gz, wab, da1, da2, db1, db2)
+                wk%num(a) = wk%num(a) + da1
+                wk%den(a) = wk%den(a) + da2
+                wk%num(b) = wk%num(b) + db1
+                wk%den(b) = wk%den(b) + db2
+              end select
+            end do
+          end do
+        end do
+      end do
+      !$omp end do
+      deallocate(list)
+      !$omp end parallel
+    end do
+  end subroutine sweep
 
 end module surface_tension_loops

@@ -1,0 +1,123 @@
+!> CSF surface tension for a free surface, after Morris (2000) as the paper writes it
+!> (DIGEST section 1, eqs 14-24). Pure per-pair and per-particle formulas only; the
+!> traversals live in loops/surface_tension_loops.f90. With V_b = m_b / rho_b and
+!> grad_a W_ab = F_ab (r_a - r_b):
+!>   colour     C_a = sum_b V_b W_ab, self term V_a W(0) included               (eq 14)
+!>   normal     n_a = sum_b V_b (C_b - C_a) grad_a W_ab; it points into the liquid (eq 18)
+!>   filter     N_a = 1 if |n_a| > eps, eps = 0.01 / h                          (eq 20; the
+!>              paper prints the inequality reversed)
+!>   unit       nhat_a = n_a / |n_a| if N_a = 1, else 0                         (eq 21)
+!>   curvature  kappa_a = sum_b min(N_a, N_b) V_b (nhat_b - nhat_a) . grad_a W_ab
+!>                      / sum_b min(N_a, N_b) V_b W_ab                           (eq 23)
+!>              the denominator includes the self term N_a V_a W(0): it is the Shepard sum of
+!>              the particles whose normal is defined, so it is 1 where the whole support is
+!>              covered and the formula then reduces to the plain SPH divergence; without the
+!>              self term kappa would be too large by 1/(1 - V W(0)) (about 1.5 for Wendland
+!>              at h = 1.3 dx) even in the interior of a resolved interface band.
+!>   force      a_s,a = -(sigma / rho_a) kappa_a n_a                              (eq 24)
+!>              for a free surface the delta-times-normal n is replaced by 2 sum_b V_b grad_a W_ab
+!>              (a departure, explained in loops/surface_tension_loops.f90)
+!> Sign check: for a 2D disc of radius R, nhat = -e_r, kappa = div nhat = -1/R and
+!> a_s = (sigma / (rho R)) n points inward.
+!> Capillary time-step limit (Brackbill et al. 1992; Morris 2000 eq 39):
+!>   dt_st = 0.25 sqrt(rho h^3 / (2 pi sigma)); not part of the paper's eqs 30-32.
+module surface_tension
+  use sphjet_kinds, only: rp, pi
+  implicit none
+  private
+  public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
+            csf_curvature, csf_acceleration, csf_dt
+
+  real(rp), parameter :: EPS_H = 0.01_rp      !< eps = EPS_H / h (eq 20)
+  real(rp), parameter :: DT_ST_COEF = 0.25_rp  !< safety factor of the capillary limit
+
+contains
+
+  !> eps of the normal filter (eq 20): 0.01 / h.
+  pure function csf_threshold(h) result(eps)
+    real(rp), intent(in) :: h
+    real(rp) :: eps
+    eps = EPS_H / h
+  end function csf_threshold
+
+  !> Eq 18 for one pair (a, b), g = grad_a W_ab: the contribution to n_a is
+  !> V_b (C_b - C_a) g, and to n_b is V_a (C_a - C_b) grad_b W_ba = V_a (C_b - C_a) g.
+  pure subroutine csf_normal_pair(va, vb, ca, cb, gx, gz, nax, naz, nbx, nbz)
+    real(rp), intent(in) :: va, vb, ca, cb, gx, gz
+    real(rp), intent(out) :: nax, naz, nbx, nbz
+    real(rp) :: dc
+    dc = cb - ca
+    nax = vb * dc * gx
+    naz = vb * dc * gz
+    nbx = va * dc * gx
+    nbz = va * dc * gz
+  end subroutine csf_normal_pair
+
+  !> The two sums of eq 23 for one pair, g = grad_a W_ab, fa, fb the filter flags N:
+  !> a gets min(N_a,N_b) V_b (nhat_b - nhat_a) . g and min(N_a,N_b) V_b W; b gets
+  !> min(N_a,N_b) V_a (nhat_a - nhat_b) . (-g) (the same dot product) and min(N_a,N_b) V_a W.
+  pure subroutine csf_curvature_pair(fa, fb, va, vb, nhxa, nhza, nhxb, nhzb, gx, gz, w, &
+                                     numa, dena, numb, denb)
+    real(rp), intent(in) :: fa, fb, va, vb, nhxa, nhza, nhxb, nhzb, gx, gz, w
+    real(rp), intent(out) :: numa, dena, numb, denb
+    real(rp) :: f, d
+    f = min(fa, fb)
+    d = f * ((nhxb - nhxa) * gx + (nhzb - nhza) * gz)
+    numa = vb * d
+    numb = va * d
+    dena = f * vb * w
+    denb = f * va * w
+  end subroutine csf_curvature_pair
+
+  !> Filter and unit normal (eqs 20-21): flag = 1 and nhat = n/|n| if |n| > eps, else 0.
+  pure elemental subroutine csf_unit_normal(nx, nz, eps, nhx, nhz, flag)
+    real(rp), intent(in) :: nx, nz, eps
+    real(rp), intent(out) :: nhx, nhz, flag
+    real(rp) :: mag
+    mag = sqrt(nx * nx + nz * nz)
+    if (mag > eps) then
+      nhx = nx / mag
+      nhz = nz / mag
+      flag = 1.0_rp
+    else
+      nhx = 0.0_rp
+      nhz = 0.0_rp
+      flag = 0.0_rp
+    end if
+  end subroutine csf_unit_normal
+
+  !> Curvature from the two sums of eq 23; 0 where the particle has no valid normal (the
+  !> denominator then holds no self term and no neighbour) or the denominator vanishes.
+  pure elemental function csf_curvature(num, den, flag) result(kappa)
+    real(rp), intent(in) :: num, den, flag
+    real(rp) :: kappa
+    if (flag > 0.0_rp .and. den > 0.0_rp) then
+      kappa = num / den
+    else
+      kappa = 0.0_rp
+    end if
+  end function csf_curvature
+
+  !> Eq 24: a_s = -(sigma / rho) kappa d, d the interface delta times its normal: the colour
+  !> gradient n in the paper, 2 sum_b V_b grad_a W_ab for a free surface (see the loops).
+  pure elemental subroutine csf_acceleration(sigma, rho, kappa, nx, nz, ax, az)
+    real(rp), intent(in) :: sigma, rho, kappa, nx, nz
+    real(rp), intent(out) :: ax, az
+    real(rp) :: s
+    s = -sigma * kappa / rho
+    ax = s * nx
+    az = s * nz
+  end subroutine csf_acceleration
+
+  !> Capillary time-step limit 0.25 sqrt(rho h^3 / (2 pi sigma)); huge when sigma = 0.
+  pure function csf_dt(rho, h, sigma) result(dt)
+    real(rp), intent(in) :: rho, h, sigma
+    real(rp) :: dt
+    if (sigma > 0.0_rp) then
+      dt = DT_ST_COEF * sqrt(rho * h**3 / (2.0_rp * pi * sigma))
+    else
+      dt = huge(1.0_rp)
+    end if
+  end function csf_dt
+
+end module surface_tension
