@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "config/errors.hpp"
 #include "config/indat.hpp"
@@ -288,8 +289,9 @@ RunSummary run_simulation(const RunOptions& opts) {
             solver.check_state();
             if (r.removed > 0)
                 log.line(fmt::format("step {} t = {:.6g} s: {} particle(s) left the domain and "
-                                     "were removed ({} in all)",
-                                     st.step, st.time, r.removed, st.n_removed));
+                                     "were removed ({} in all); ids {}",
+                                     st.step, st.time, r.removed, st.n_removed,
+                                     fmt::join(r.removed_ids, " ")));
             if (output_due) write_output();
             if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
                 st.step % prm.filter_period == 0)

@@ -33,6 +33,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.dbc_period = std::max(p.dbc_period, 1);
     c.variable_dt = p.variable_dt ? 1 : 0;
     c.remove_out_of_domain = out.remove_out_of_domain ? 1 : 0;
+    c.st_delta = static_cast<int>(p.st_delta);
     c.h = p.h;
     c.rho0 = p.rho0;
     c.b = p.B;
@@ -92,6 +93,7 @@ Solver::Solver(const SimParams& params, const OutputSpec& output, ParticleSet pa
     if (params_.sigma > 0)
         for (auto* v : {&colour_, &st_nx_, &st_nz_, &kappa_}) v->assign(n, 0.0);
     prm_ = core_params(params_, output_, legacy_domain(ps_));
+    was_active_.assign(ps_.active.begin(), ps_.active.end());
     state_.dt = params_.dt;
     bind_arrays();
     ws_ = sph_workspace_create();
@@ -100,6 +102,20 @@ Solver::Solver(const SimParams& params, const OutputSpec& output, ParticleSet pa
         sph_workspace_destroy(ws_);
         throw SimulationError("core refused the case parameters or the wall links: " +
                               status_text(status));
+    }
+    if (params_.sigma > 0) {
+        // Surface-tension fields of the initial state, so that the t = 0 output has them
+        // (the steps compute them inside the rates). No acceleration is requested (ax, az
+        // null), so nothing the integrator keeps is touched.
+        sph_arrays_t a = arr_;
+        a.ax = nullptr;
+        a.az = nullptr;
+        const int st = sph_surface_tension_fields(ws_, &prm_, &a);
+        if (st != SPH_OK) {
+            sph_workspace_destroy(ws_);
+            throw SimulationError("core refused the surface-tension fields of the initial state: " +
+                                  status_text(st));
+        }
     }
 }
 
@@ -172,6 +188,12 @@ StepReport Solver::step() {
     StepReport r;
     r.dt_taken = info.dt;
     r.removed = info.n_removed;
+    if (info.n_removed > 0) {
+        for (std::size_t i = 0; i < ps_.size(); ++i)
+            if (!ps_.active[i] && was_active_[i]) r.removed_ids.push_back(ps_.id[i]);
+    }
+    if (info.n_removed > 0 || was_active_.empty())
+        was_active_.assign(ps_.active.begin(), ps_.active.end());
     state_.step += 1;
     state_.time += info.dt;
     state_.dt = info.dt_next;

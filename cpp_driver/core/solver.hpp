@@ -30,6 +30,7 @@ struct DomainBounds {
 struct StepReport {
     double dt_taken = 0;
     std::int64_t removed = 0;
+    std::vector<std::int64_t> removed_ids;  // ids of the particles removed in this step
 };
 
 class Solver {
@@ -81,6 +82,7 @@ private:
     std::vector<int> wall_prev_, wall_next_;
     std::vector<double> wall_nx_, wall_nz_, wall_db_, wall_df_;
     std::vector<double> colour_, st_nx_, st_nz_, kappa_;
+    std::vector<char> was_active_;  // active flags before the last step with a removal
     void* ws_ = nullptr;
 };
 
