@@ -71,7 +71,7 @@ def read_front_txt(path):
 class Table:
     def __init__(self):
         self.fails = 0
-        print(f"{'quantity':34s} {'t [s]':>7s} {'sphjet':>9s} {'reference':>9s} {'diff':>9s} {'tolerance':>10s}  result")
+        print(f"{'quantity':34s} {'t or T':>7s} {'sphjet':>9s} {'reference':>9s} {'diff':>9s} {'tolerance':>10s}  result")
 
     def check(self, name, t, ours, ref, tol, relative):
         if ours is None:
@@ -91,8 +91,9 @@ def fnum(r, key):
 
 
 def obstacle_coarse(args):
-    """Reference: the fine (dx = 0.002) legacy run's front.txt. Tolerance: 3 coarse spacings
-    (0.012 m at dx = 0.004) on the front and 5 on the tongue top; see the README."""
+    """Reference: the fine (dx = 0.002) legacy run's front.txt. Tolerances (absolute, m): the
+    front 3 coarse spacings, the tongue top over the obstacle 10; see
+    cases/dambreak_obstacle/README.md."""
     front_txt = os.path.join(args.source, "tests", "regression", "dambreak", "legacy_obstacle_front.txt")
     ref = read_front_txt(front_txt)
     case = os.path.join(args.source, "cases", "dambreak_obstacle", "obstacle_wendland.toml")
@@ -123,12 +124,13 @@ def martin_moyce(args):
     out = run_case(args, case, os.path.join(args.work, "run"), ["--tmax", str(args.tmax)])
     rows = analyse(args, out, os.path.join(args.work, "front.csv"), ["--column-width", str(args.a)])
     pts = sorted((float(r["T"]), float(r["Z"])) for r in rows if r["T"] and r["Z"])
+    print(f"Martin & Moyce: run's Z read at T {args.shift:+g}; series {args.series or 'all'}; T <= {args.tmax_T:g}")
     tab = Table()
     with open(data) as f:
         exp = list(csv.DictReader(l for l in f if not l.startswith("#")))
     for e in exp:
         T, Z = float(e["T"]), float(e["Z"])
-        if T > args.tmax_T:
+        if T > args.tmax_T or (args.series and e["series"] != args.series):
             continue
         zr = None
         for (t0, z0), (t1, z1) in zip(pts, pts[1:]):
@@ -156,7 +158,11 @@ def obstacle_legacy(args):
         tab.check("surge front xfront_all (rel.)", t, fnum(o, "xfront_all"), fnum(l, "xfront_all"), 0.03, True)
         if k >= 4:
             tab.check("highest point over obstacle (rel.)", t, fnum(o, "zmax_obst"), fnum(l, "zmax_obst"), 0.05, True)
-        tab.check("grid overlap (2 dx cells)", t, fnum(o, "overlap"), 1.0, 1.0 - args.min_overlap, False)
+    # The footprint of the fluid (cells of 2 dx) at every output to the end (0.6 s).
+    for o in ours:
+        if o["number" if "number" in o else "output"] != "0" and o.get("overlap"):
+            tab.check("grid overlap (2 dx cells)", float(o["time"]), fnum(o, "overlap"), 1.0,
+                      1.0 - args.min_overlap, False)
     return tab.fails
 
 
@@ -172,11 +178,12 @@ def main():
     ap.add_argument("--dx", type=float, default=0.004)
     ap.add_argument("--tmax", type=float, default=0.2)
     ap.add_argument("--front-tol", type=float, default=0.012)
-    ap.add_argument("--height-tol", type=float, default=0.02)
+    ap.add_argument("--height-tol", type=float, default=0.04)
     ap.add_argument("--case", default="dambreak_a25.toml")
     ap.add_argument("--a", type=float, default=0.05715)
     ap.add_argument("--tmax-T", type=float, default=3.0)
-    ap.add_argument("--shift", type=float, default=0.0)
+    ap.add_argument("--shift", type=float, default=0.0, help="compare the run's Z at T + SHIFT")
+    ap.add_argument("--series", help="only this series of the Martin & Moyce data")
     ap.add_argument("--z-tol", type=float, default=0.05)
     ap.add_argument("--min-overlap", type=float, default=0.9)
     args = ap.parse_args()
