@@ -95,7 +95,8 @@ DropMeasures measure_drop(const ParticleSet& ps, std::span<const double> curvatu
     return d;
 }
 
-Oscillation oscillation(std::span<const double> t, std::span<const double> d, double skip_before) {
+Oscillation oscillation(std::span<const double> t, std::span<const double> d, double skip_before,
+                        double noise_fraction) {
     if (t.size() != d.size()) throw std::invalid_argument("oscillation: t and d differ in size");
     std::vector<double> tt, dd;
     for (std::size_t k = 0; k < t.size(); ++k)
@@ -116,15 +117,13 @@ Oscillation oscillation(std::span<const double> t, std::span<const double> d, do
             cross_at.push_back(k);
         }
     }
-    o.crossings = cross.size();
-    if (cross.size() >= 2)
-        o.period = 2.0 * (cross.back() - cross.front()) / static_cast<double>(cross.size() - 1);
-    // extrema between successive crossings (and before the first one)
+    // extrema between successive crossings (and before the first one); half-cycle c ends at
+    // crossing c
     std::vector<double> te, la;
+    std::vector<std::size_t> te_cycle;
     std::size_t begin = 0;
-    for (std::size_t c = 0; c <= cross_at.size(); ++c) {
-        const std::size_t end = c < cross_at.size() ? cross_at[c] : tt.size();
-        if (c == cross_at.size()) break;  // the last half-cycle may be incomplete
+    for (std::size_t c = 0; c < cross_at.size(); ++c) {  // the last half-cycle may be incomplete
+        const std::size_t end = cross_at[c];
         std::size_t best = begin;
         for (std::size_t k = begin; k < end; ++k)
             if (std::abs(dd[k]) > std::abs(dd[best])) best = k;
@@ -132,9 +131,35 @@ Oscillation oscillation(std::span<const double> t, std::span<const double> d, do
         if (best > 0 && std::abs(dd[best]) > 0) {
             te.push_back(tt[best]);
             la.push_back(std::log(std::abs(dd[best])));
+            te_cycle.push_back(c);
         }
         begin = end;
     }
+    // Noise floor: a crossing is the oscillation's only while the half-cycles on both sides of
+    // it reach noise_fraction of the first extremum (the trailing, incomplete half-cycle
+    // included); from the first crossing that fails on, the oscillation has decayed into the
+    // noise, and that crossing, the later ones and their extrema are dropped.
+    if (!la.empty() && noise_fraction > 0) {
+        const double floor = noise_fraction * std::exp(la.front());
+        std::vector<double> amp(cross_at.size() + 1, 0.0);  // largest |d| per half-cycle
+        for (std::size_t c = 0, k = 0; c <= cross_at.size(); ++c) {
+            const std::size_t end = c < cross_at.size() ? cross_at[c] : tt.size();
+            for (; k < end; ++k) amp[c] = std::max(amp[c], std::abs(dd[k]));
+        }
+        for (std::size_t c = 0; c < cross_at.size(); ++c) {
+            if (amp[c] < floor || amp[c + 1] < floor) {
+                cross.resize(c);
+                std::size_t keep = 0;
+                while (keep < te_cycle.size() && te_cycle[keep] < c) ++keep;
+                te.resize(keep);
+                la.resize(keep);
+                break;
+            }
+        }
+    }
+    o.crossings = cross.size();
+    if (cross.size() >= 2)
+        o.period = 2.0 * (cross.back() - cross.front()) / static_cast<double>(cross.size() - 1);
     if (!la.empty()) o.amplitude0 = std::exp(la.front());
     if (te.size() >= 2) {
         double mt = 0, ml = 0;

@@ -21,7 +21,9 @@
 // A series (oscillation): the period from the zero crossings of D(t) - mean D (linear
 // interpolation between frames; period = 2 x the mean spacing of successive crossings), and
 // the decay rate from a least-squares fit of ln |D - mean D| at the extrema between
-// crossings.
+// crossings. A crossing counts only while the half-cycles on both sides of it reach
+// noise_fraction (default 0.1) of the first extremum; from the first one that does not, the
+// oscillation has decayed into the noise and later crossings and extrema are dropped.
 #pragma once
 
 #include <cstddef>
@@ -62,7 +64,7 @@ struct DropMeasures {
                                         double inner_fraction = 0.5);
 
 struct Oscillation {
-    std::size_t crossings = 0;          // zero crossings of D - mean D
+    std::size_t crossings = 0;          // zero crossings of D - mean D (above the noise floor)
     std::optional<double> period;       // [s], needs at least 2 crossings
     std::optional<double> decay_rate;   // [1/s], of the amplitude; needs 2 extrema
     double mean = 0;                    // mean of D over the series
@@ -70,8 +72,8 @@ struct Oscillation {
 };
 
 // Period and decay of a signal d(t) sampled at increasing times t. skip_before: samples
-// with t < skip_before are ignored (start-up transient).
+// with t < skip_before are ignored (start-up transient). noise_fraction: see above.
 [[nodiscard]] Oscillation oscillation(std::span<const double> t, std::span<const double> d,
-                                      double skip_before = 0.0);
+                                      double skip_before = 0.0, double noise_fraction = 0.1);
 
 }  // namespace sphjet::analysis

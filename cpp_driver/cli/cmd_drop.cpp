@@ -14,6 +14,7 @@
 //                                 weakly compressible model)
 //   speed_max_window              largest fluid speed in the window [m/s]
 //   kappa_R_mean, kappa_R_sd      surface curvature x R at the last snapshot (with the field)
+//   kappa0_R_mean, kappa0_R_sd    the same at the first snapshot (the initial drop, t = 0)
 //   period, omega                 mode-2 oscillation from D(t) (see drop.hpp); omega_theory
 //                                 = sqrt(6 sigma / (rho0 R^3)); period_error relative to
 //                                 2 pi / omega_theory; decay_rate [1/s]
@@ -132,20 +133,25 @@ void run_drop(const DropOptions& o) {
         if (std::isfinite(omega_th)) perr = *osc.period / (2 * std::numbers::pi / omega_th) - 1;
     }
     const auto& last = ms.back();
-    std::optional<double> kr, krsd;
+    std::optional<double> kr, krsd, kr0, krsd0;
     if (last.kappa_surface) {
         kr = last.kappa_surface->mean * R;
         krsd = last.kappa_surface->sd * R;
     }
+    if (ms.front().kappa_surface) {
+        kr0 = ms.front().kappa_surface->mean * R;
+        krsd0 = ms.front().kappa_surface->sd * R;
+    }
     std::cout << fmt::format(
         "SUMMARY snapshots={} t_end={} n_fluid={} radius={} sigma={} rho0={} area0={} area_end={} "
         "area_change={} ratio_end={} window_from={} p_inner={} p_surface={} laplace={} "
-        "laplace_ratio={} speed_max_window={} kappa_R_mean={} kappa_R_sd={} crossings={} period={} "
-        "omega={} omega_theory={} period_error={} decay_rate={}\n",
+        "laplace_ratio={} speed_max_window={} kappa_R_mean={} kappa_R_sd={} kappa0_R_mean={} "
+        "kappa0_R_sd={} crossings={} period={} omega={} omega_theory={} period_error={} "
+        "decay_rate={}\n",
         snaps.size(), num(t_end), last.n_fluid, num(R), num(sigma), num(rho0), num(ms.front().area),
         num(last.area), num(last.area / ms.front().area - 1), num(last.r_ratio()), num(from),
         num(p_inner), num(p_surface), num(laplace), num(ratio), num(nw > 0 ? std::optional(vmax) : std::nullopt),
-        num(kr), num(krsd), osc.crossings, num(osc.period), num(omega), num(omega_th), num(perr),
+        num(kr), num(krsd), num(kr0), num(krsd0), osc.crossings, num(osc.period), num(omega), num(omega_th), num(perr),
         num(osc.decay_rate));
 }
 

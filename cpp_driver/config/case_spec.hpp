@@ -48,9 +48,16 @@ struct LegacyRunInfo {
 };
 
 // Modern-format shapes (not expressible in a legacy case file).
+// lattice = "case" (default): the case lattice points inside the disc. lattice = "rings":
+// concentric rings (geometry/generator.hpp), a smooth edge for the surface-tension tests.
+// elongation e: the disc is stretched to an ellipse of semi-axes R (1 + e) along x and
+// R / (1 + e) along z (area kept; r(theta) = R (1 + e cos 2 theta) + O(e^2)), the mode-2
+// perturbation of the oscillating-drop test.
 struct FluidDisc {
     double xc = 0, zc = 0, radius = 0;
     double u0 = 0, w0 = 0;
+    bool rings = false;
+    double elongation = 0;
 };
 
 // A square of fluid, sides parallel to the axes (the classic surface-tension test: a square

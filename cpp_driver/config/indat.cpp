@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -137,11 +138,17 @@ double parse_real(const std::string& text, const std::string& where, const std::
     return v;
 }
 
+// A Fortran default INTEGER (32 bits), as legacy writes and reads every integer of these
+// files; a longer one would wrap (or, through a double, be undefined) when stored as int.
 long parse_int(const std::string& text, const std::string& where, const std::string& what) {
     char* end = nullptr;
+    errno = 0;
     const long v = text.empty() ? 0 : std::strtol(text.c_str(), &end, 10);
     if (text.empty() || end != text.c_str() + text.size())
         throw InputError(where, what + " is not an integer", "an integer", "'" + text + "'");
+    if (errno == ERANGE || v < INT32_MIN || v > INT32_MAX)
+        throw InputError(where, what + " is out of range", "an integer from -2147483648 to 2147483647",
+                         "'" + text + "'");
     return v;
 }
 
@@ -358,7 +365,7 @@ InitialState read_indat(const fs::path& indat) {
     const fs::path ipart = indat.parent_path() / "IPART";
     const auto pl = read_lines(ipart, " (IPART, needed beside " + file + ")");
     ParticleSet& ps = st.particles;
-    ps.x.reserve(static_cast<std::size_t>(np));
+    ps.x.reserve(std::min(static_cast<std::size_t>(np), pl.size()));  // np is checked below
     for (long k = 0; k < np; ++k) {
         const std::string where = ipart.string() + ":" + std::to_string(k + 1);
         if (static_cast<std::size_t>(k) >= pl.size())

@@ -1,6 +1,9 @@
 #include "config/legacy_case.hpp"
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <initializer_list>
@@ -152,10 +155,16 @@ public:
         std::size_t i = (t[0] == '+' || t[0] == '-') ? 1 : 0;
         bool ok = i < t.size();
         for (; i < t.size(); ++i) ok = ok && (t[i] >= '0' && t[i] <= '9');
-        if (!ok || t.size() > 12)
+        if (!ok)
             throw InputError(where(), label(what, name) + " is not an integer",
                              "an integer", in_quotes(t));
-        return std::strtol(t.c_str(), nullptr, 10);
+        // A Fortran default INTEGER: 32 bits (a longer one would wrap when stored as int).
+        errno = 0;
+        const long v = std::strtol(t.c_str(), nullptr, 10);
+        if (errno == ERANGE || v < INT32_MIN || v > INT32_MAX)
+            throw InputError(where(), label(what, name) + " is out of range",
+                             "an integer from -2147483648 to 2147483647", in_quotes(t));
+        return v;
     }
 
     double to_real(const std::string& t, std::string_view what, std::string_view name) const {
@@ -187,6 +196,11 @@ std::string num(double v) {
 
 // Single-precision value, as the legacy generator holds most of its reals.
 double f32(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+// More spacings across the box than this would not fit the generator's 32-bit particle
+// indices (nor any memory).
+constexpr double kMaxSpacings = 1e9;
+constexpr double kPi = 3.14159265358979323846;
 
 void require_positive(const Answers& a, std::string_view what, double v) {
     if (!(v > 0)) a.invalid(what, num(v), "a number > 0");
@@ -315,6 +329,10 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
         b = b * static_cast<float>(p.h_swl);
         b = b / 7.0f;
         p.B = b;
+        // Single precision overflows above 3.4e38 (coef 1e20 with h_SWL 1 does).
+        if (!(std::isfinite(b) && b > 0))
+            a.invalid("coefficient of speed of sound (with h_SWL)", num(p.coef) + " (B = " + num(b) + ")",
+                      "B = coef^2 rho0 g h_SWL / 7 finite and > 0 in single precision");
     }
 
     const long ibc = a.integer("boundary conditions");
@@ -350,8 +368,14 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
     if (!(spacing[0] > 0) || !(spacing[1] > 0))
         a.invalid("spacing dx,dz", num(spacing[0]) + ", " + num(spacing[1]), "two spacings > 0");
     p.dx = spacing[0], p.dz = spacing[1];
-    // The box holds N x L spacings (legacy rounds f32(LX)/dx to the nearest integer).
-    const long n_x = std::lround(f32(p.lx) / p.dx), n_z = std::lround(f32(p.lz) / p.dz);
+    // The box holds N x L spacings (legacy rounds f32(LX)/dx to the nearest integer; LX is
+    // single precision there, so above 3.4e38 it is infinite).
+    const double r_x = f32(p.lx) / p.dx, r_z = f32(p.lz) / p.dz;
+    if (!(r_x <= kMaxSpacings && r_z <= kMaxSpacings))
+        throw InputError(a.where(), "spacing too fine for the box (line " + std::to_string(box_line) + ")",
+                         "at most " + num(kMaxSpacings) + " spacings across LX and LZ (LX, LZ below 3.4e38)",
+                         num(r_x) + " x " + num(r_z));
+    const long n_x = std::lround(r_x), n_z = std::lround(r_z);
     if (n_x < 2 || n_z < 2)
         throw InputError(a.where(), "spacing too coarse for the box (line " + std::to_string(box_line) + ")",
                          "at least 2 spacings across LX and LZ",
@@ -411,6 +435,12 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
         o.beta_deg = a.real("obstacle inclination (beta)");
         if (!(o.beta_deg > 0 && o.beta_deg < 180))
             a.invalid("obstacle inclination (beta)", num(o.beta_deg), "an angle in (0, 180) degrees (90: upright)");
+        if (o.beta_deg != 90) {  // the inclined sides shift the top by height / tan(beta)
+            const double shift = (o.r.zmax - std::max(o.r.zmin, 0.0)) / std::tan(o.beta_deg * kPi / 180);
+            if (!(o.r.xmin + std::min(shift, 0.0) >= 0 && o.r.xmax + std::max(shift, 0.0) <= p.lx))
+                a.invalid("obstacle inclination (beta)", num(o.beta_deg) + " (the top shifted by " + num(shift) + ")",
+                          "inclined sides that stay inside the box 0 <= x <= LX = " + num(p.lx));
+        }
         spec.obstacles.push_back(o);
         another = a.flag("add another obstacle");
     }
@@ -482,6 +512,9 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
     // SPHYSICSgen_2D: single coefficient times a double root, kept in single.
     p.h = f32(static_cast<double>(static_cast<float>(info.h_coefficient)) *
               std::sqrt(p.dx * p.dx + p.dz * p.dz));
+    if (!(std::isfinite(p.h) && p.h > 0))
+        a.invalid("h coefficient", num(info.h_coefficient) + " (h = " + num(p.h) + ")",
+                  "h = coefficient sqrt(dx^2 + dz^2) finite and > 0 in single precision");
 
     const long riemann = a.integer("Riemann solver");
     if (riemann != 0)

@@ -109,6 +109,8 @@ constexpr KeySpec kKeys[] = {
     {"fluid.disc[].radius", Kind::Float},
     {"fluid.disc[].u0", Kind::Float},
     {"fluid.disc[].w0", Kind::Float},
+    {"fluid.disc[].lattice", Kind::String},
+    {"fluid.disc[].elongation", Kind::Float},
     {"fluid.square[].xc", Kind::Float},
     {"fluid.square[].zc", Kind::Float},
     {"fluid.square[].side", Kind::Float},
@@ -116,6 +118,7 @@ constexpr KeySpec kKeys[] = {
     {"fluid.square[].w0", Kind::Float},
     // [surface_tension]
     {"surface_tension.sigma", Kind::Float},
+    {"surface_tension.delta", Kind::String},
     // [gravity]
     {"gravity.gx", Kind::Float},
     {"gravity.gz", Kind::Float},
@@ -507,6 +510,116 @@ void check_keys(const Ctx& ctx, const toml::table& t, const std::string& pattern
 }
 
 // ---------------------------------------------------------------------------------------
+// Two toml++ 3.3 defects, kept away from it.
+// ---------------------------------------------------------------------------------------
+
+// toml++ 3.3 (the Debian 12 package) has two defects that malformed text reaches, both found
+// by tests/fuzz (-fsanitize=undefined on toml++ compiled header-only):
+//  - a table header whose key starts with a character that cannot start a key ("[^x]",
+//    "[[[1]]]", "[" at the end of a line) fails an assertion in parse_key() (abort without
+//    NDEBUG, an assumption that does not hold with it); fixed upstream in
+//    marzer/tomlplusplus pull 301;
+//  - a non-ASCII character where toml++ looks for whitespace (outside strings and comments,
+//    or after a backslash in a multi-line basic string) reaches TOML_UNREACHABLE in its
+//    Unicode tables (undefined behaviour); marzer/tomlplusplus issues 190 and 295, pull 305.
+// Both are syntax errors (TOML allows non-ASCII only in strings and comments; the format has
+// no multi-line strings): this finds the first, so that it is reported before toml++ reads
+// the text. A small lexer: it tracks comments and the four kinds of strings.
+struct TomlDefect {
+    std::size_t pos = 0;
+    std::string problem, expected;
+};
+
+std::optional<TomlDefect> toml_defect(std::string_view text) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    const auto key_start = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '"' || c == '\'';
+    };
+    const auto ascii = [](char c) { return static_cast<unsigned char>(c) < 0x80; };
+    enum class S { Normal, Comment, Basic, Literal, MlBasic, MlLiteral } s = S::Normal;
+    const std::size_t n = text.size();
+    std::size_t i = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // UTF-8 byte-order mark
+    bool line_begin = true;  // only blanks so far on this line (outside strings)
+    for (; i < n; ++i) {
+        const char c = text[i];
+        if (c == '\n') {
+            if (s == S::Comment || s == S::Basic || s == S::Literal) s = S::Normal;
+            line_begin = s == S::Normal;
+            continue;
+        }
+        switch (s) {
+            case S::Normal:
+                if (line_begin && blank(c)) break;
+                if (line_begin && c == '[') {  // a table header: the key must start right
+                    std::size_t j = i + 1;
+                    bool had_blank = false;
+                    while (j < n && blank(text[j])) ++j, had_blank = true;
+                    if (j < n && text[j] == '[' && !had_blank) {  // "[ [" toml++ reports itself
+                        ++j;
+                        while (j < n && blank(text[j])) ++j;
+                    }
+                    if (j < n && text[j] != ']' && !(had_blank && text[j] == '[') && !key_start(text[j]))
+                        return TomlDefect{j, "a table header without a key",
+                                          "a bare key (letters, digits, _ or -) or a quoted key after '[' or '[['"};
+                }
+                line_begin = false;
+                if (c == '#') {
+                    s = S::Comment;
+                } else if (c == '"' || c == '\'') {
+                    const bool multi = text.substr(i, 3) == std::string(3, c);
+                    s = c == '"' ? (multi ? S::MlBasic : S::Basic) : (multi ? S::MlLiteral : S::Literal);
+                    if (multi) i += 2;
+                } else if (!ascii(c)) {
+                    return TomlDefect{i, "a character that is not ASCII outside a string or comment",
+                                      "keys, values and separators in ASCII (other characters only in "
+                                      "strings and comments)"};
+                }
+                break;
+            case S::Comment:
+                break;
+            case S::Basic:
+                if (c == '\\' && i + 1 < n && text[i + 1] != '\n') ++i;  // the escaped character
+                else if (c == '"') s = S::Normal;
+                break;
+            case S::Literal:
+                if (c == '\'') s = S::Normal;
+                break;
+            case S::MlBasic:
+            case S::MlLiteral: {
+                const char q = s == S::MlBasic ? '"' : '\'';
+                if (s == S::MlBasic && c == '\\') {
+                    std::size_t j = i + 1;
+                    while (j < n && (blank(text[j]) || text[j] == '\r' || text[j] == '\n')) ++j;
+                    if (j < n && !ascii(text[j]))
+                        return TomlDefect{j, "a character that is not ASCII after a backslash in a multi-line string",
+                                          "an ASCII character (toml++ 3.3 cannot read this one)"};
+                    if (j == i + 1) i = j;  // an escape sequence: skip the escaped character
+                } else if (c == q && text.substr(i, 3) == std::string(3, q)) {
+                    std::size_t j = i;
+                    while (j < n && text[j] == q && j - i < 5) ++j;  // up to two quotes of content
+                    i = j - 1;
+                    s = S::Normal;
+                }
+                break;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+// "file:line:column" of byte pos (columns in bytes), and the character there, for messages.
+std::pair<std::string, std::string> toml_position(std::string_view text, std::size_t pos) {
+    std::size_t line = 1, start = 0;
+    for (std::size_t k = 0; k < pos; ++k)
+        if (text[k] == '\n') ++line, start = k + 1;
+    const unsigned char c = static_cast<unsigned char>(text[pos]);
+    std::string found = "'" + std::string(1, static_cast<char>(c)) + "'";
+    if (c == '\n' || c == '\r') found = "the end of the line";
+    else if (c < 0x20 || c >= 0x7f) found = "byte " + std::to_string(c);
+    return {std::to_string(line) + ":" + std::to_string(pos - start + 1), found};
+}
+
+// ---------------------------------------------------------------------------------------
 // Overrides: key.path=value, applied to the tree before validation.
 // ---------------------------------------------------------------------------------------
 
@@ -571,8 +684,11 @@ void apply_override(Ctx& ctx, toml::table& root, const std::string& text) {
     toml::table parsed;
     bool ok = false;
     try {
-        parsed = toml::parse("v = " + value);
-        ok = parsed.size() == 1 && parsed.get("v") != nullptr;
+        const std::string line = "v = " + value;
+        if (!toml_defect(line)) {
+            parsed = toml::parse(line);
+            ok = parsed.size() == 1 && parsed.get("v") != nullptr;
+        }
     } catch (const toml::parse_error&) {
         ok = false;
     }
@@ -733,6 +849,10 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
 
     // [surface_tension]
     if (auto f = top.sub("surface_tension").num("sigma")) non_negative(*f), p.sigma = f->value;
+    if (auto f = top.sub("surface_tension").string("delta"))
+        p.st_delta = choose<SurfaceTensionDelta>(
+            *f, {{"pressure_consistent", SurfaceTensionDelta::PressureConsistent},
+                 {"colour_gradient", SurfaceTensionDelta::ColourGradient}});
 
     // [fluid]: equation of state
     const Section fluid = top.sub("fluid");
@@ -770,6 +890,11 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                          "fluid.c0 [m/s], or fluid.coef with fluid.h_swl [m]", "nothing");
     }
 
+    // B overflows (c0 = 1e200) or underflows (rho0 = 1e-300) for extreme inputs.
+    if (!(std::isfinite(p.B) && p.B > 0))
+        fail(c0 ? *c0 : *coef, "gives a Tait constant B that is not a finite number > 0 (B = " + num(p.B) + " Pa)",
+             c0 ? "B = rho0 c0^2 / gamma finite and > 0" : "B = coef^2 rho0 |gz| h_swl / gamma finite and > 0");
+
     // [resolution]
     const Section res = top.sub("resolution");
     const auto dx = res.required_num("dx", "the particle spacing in x [m]");
@@ -800,6 +925,9 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         info.h_coefficient = h_coef->value;
     }
     if (h_over) positive(*h_over), p.h = h_over->value * p.dx;
+    if (!(std::isfinite(p.h) && p.h > 0))  // h_over_dx = 1e300 with dx = 1, dx = 1e-200 (dx^2 = 0)
+        fail(h ? *h : h_coef ? *h_coef : *h_over, "gives a smoothing length that is not a finite number > 0 (h = " +
+                 num(p.h) + " m)", "h finite and > 0");
 
     // Viscosity: numerics.alpha, fluid.nu or fluid.mu (at most one).
     const auto alpha = num_s.num("alpha");
@@ -816,6 +944,9 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     if (p.viscosity == ViscosityModel::Artificial) {
         if (alpha) non_negative(*alpha), p.visc_value = alpha->value;
         if (nu_phys) p.visc_value = alpha_from_nu(*nu_phys, p.h, p.c0());
+        if (nu_phys && !std::isfinite(p.visc_value))
+            fail(nu ? *nu : *mu, "gives an artificial viscosity alpha = 8 nu / (h c0) that is not finite (alpha = " +
+                     num(p.visc_value) + ")", "nu (or mu / rho0) with 8 nu / (h c0) finite");
     } else {
         if (alpha)
             fail(*alpha, "alpha is the artificial-viscosity coefficient but numerics.viscosity is \"laminar\"",
@@ -824,6 +955,9 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
             throw InputError(ctx.where(fluid.key_path("mu")), "missing required key",
                              "fluid.mu [Pa s] or fluid.nu [m^2/s] for laminar viscosity", "nothing");
         p.visc_value = *nu_phys;
+        if (!std::isfinite(p.visc_value))  // mu / rho0 with rho0 = 1e-300
+            fail(nu ? *nu : *mu, "gives a kinematic viscosity that is not finite (nu = " + num(p.visc_value) + ")",
+                 "mu / rho0 finite");
     }
 
     // [domain]
@@ -868,6 +1002,13 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         if (auto f = s.num("beta_deg")) {
             if (!(f->value > 0 && f->value < 180)) fail(*f, "out of range", "an angle in (0, 180) degrees");
             o.beta_deg = f->value;
+            if (o.beta_deg != 90) {  // the inclined sides shift the top by height / tan(beta)
+                const double shift =
+                    (o.r.zmax - std::max(o.r.zmin, 0.0)) / std::tan(o.beta_deg * 3.14159265358979323846 / 180);
+                if (!(o.r.xmin + std::min(shift, 0.0) >= 0 && o.r.xmax + std::max(shift, 0.0) <= box.lx))
+                    fail(*f, "inclined sides reach outside the box (the top shifted by " + num(shift) + " m)",
+                         "an angle whose sides stay in 0 <= x <= domain.lx = " + num(box.lx));
+            }
         }
         spec.obstacles.push_back(o);
     }
@@ -905,6 +1046,14 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         d.xc = xc.value, d.zc = zc.value, d.radius = r.value;
         s.get("u0", d.u0);
         s.get("w0", d.w0);
+        if (auto f = s.string("lattice"))
+            d.rings = choose<bool>(*f, {{"case", false}, {"rings", true}});
+        if (auto f = s.num("elongation")) {
+            if (!(f->value > -0.5 && f->value < 0.5)) fail(*f, "out of range", "a number in (-0.5, 0.5)");
+            d.elongation = f->value;
+            const double a = r.value * (1 + std::abs(f->value));
+            centred_inside(xc, zc, r, a, box, "fluid disc (stretched)");
+        }
         spec.fluid_discs.push_back(d);
     }
     for (const Section& s : fluid.array_of_tables("square")) {
@@ -964,6 +1113,10 @@ CaseSpec parse_modern_case(std::string_view text, const std::string& source_name
                            const std::vector<std::string>& overrides) {
     Ctx ctx{source_name, {}};
     toml::table root;
+    if (const auto bad = toml_defect(text)) {
+        const auto [at, found] = toml_position(text, bad->pos);
+        throw InputError(source_name + ":" + at, "TOML syntax error: " + bad->problem, bad->expected, found);
+    }
     try {
         root = toml::parse(text, source_name);
     } catch (const toml::parse_error& e) {
@@ -1115,6 +1268,10 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("xc", num(d.xc), "centre [m]");
         s += line("zc", num(d.zc), "m");
         s += line("radius", num(d.radius), "m");
+        s += line("lattice", str(d.rings ? "rings" : "case"),
+                  "case (numerics.lattice points inside) | rings (concentric rings, smooth edge)");
+        s += line("elongation", num(d.elongation),
+                  "e: stretched to semi-axes R(1+e) (x), R/(1+e) (z), area kept; 0 = round");
         s += line("u0", num(d.u0), "initial velocity [m/s]");
         s += line("w0", num(d.w0), "m/s");
     }
@@ -1129,6 +1286,9 @@ std::string write_modern_case(const CaseSpec& spec) {
 
     s += "\n[surface_tension]\n";
     s += line("sigma", num(p.sigma), "N/m, CSF (Morris 2000); 0 = off");
+    s += line("delta", str(to_string(p.st_delta)),
+              "pressure_consistent (free surface, right Laplace jump) | colour_gradient "
+              "(paper eq 24 as printed; about 0.13 of sigma at a free surface)");
 
     s += "\n[gravity]\n";
     s += line("gx", num(p.gx), "m/s^2");

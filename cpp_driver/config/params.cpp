@@ -46,4 +46,12 @@ std::string to_string(BoundaryType b) {
     return "unknown";
 }
 
+std::string to_string(SurfaceTensionDelta d) {
+    switch (d) {
+        case SurfaceTensionDelta::PressureConsistent: return "pressure_consistent";
+        case SurfaceTensionDelta::ColourGradient: return "colour_gradient";
+    }
+    return "unknown";
+}
+
 }  // namespace sphjet

@@ -13,6 +13,12 @@ enum class DensityFilter : int { None = 0, Shepard = 1, MLS = 2 };
 enum class ViscosityModel : int { Artificial = 1, Laminar = 2 };
 enum class BoundaryType : int { Repulsive = 1, Dynamic = 2 };
 enum class Lattice : int { SimpleCubic = 1, BodyCentred = 2 };
+// The delta of the CSF force (paper eq 24, a_s = -(sigma/rho) kappa delta): the numbering is
+// the core's (sph_params_t::st_delta). ColourGradient is eq 24 as printed (delta = the colour
+// gradient n of eq 18); PressureConsistent replaces it by 2 sum_b V_b grad_a W_ab so that the
+// force balances the discrete pressure force at the Laplace pressure at a free surface
+// (fortran_core/loops/surface_tension_loops.f90, cases/CASE_FORMAT.md).
+enum class SurfaceTensionDelta : int { PressureConsistent = 0, ColourGradient = 1 };
 
 struct SimParams {
     // Numerics
@@ -54,6 +60,7 @@ struct SimParams {
     // Body force and surface tension (this fork's additions)
     double gx = 0.0, gz = -9.81;       // gravity [m/s^2]
     double sigma = 0.0;                // surface tension coefficient [N/m]; 0 = off
+    SurfaceTensionDelta st_delta = SurfaceTensionDelta::PressureConsistent;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;
@@ -65,5 +72,6 @@ struct SimParams {
 [[nodiscard]] std::string to_string(DensityFilter f);
 [[nodiscard]] std::string to_string(ViscosityModel v);
 [[nodiscard]] std::string to_string(BoundaryType b);
+[[nodiscard]] std::string to_string(SurfaceTensionDelta d);
 
 }  // namespace sphjet

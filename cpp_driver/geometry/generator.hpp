@@ -42,6 +42,11 @@
 // state a legacy run starts from), rho0 when it is zero (a drop without gravity is at rest
 // at rho0; its surface-tension pressure is left to the solver's first steps). Computed in
 // double. Velocity: the shape's (u0, w0).
+// A disc may instead be built of concentric rings (FluidDisc::rings, case key
+// fluid.disc.lattice = "rings"): a centre particle and N = round(R/dx - 1/2) rings at spacing
+// ds = R / (N + 1/2), ring j at radius j ds with round(2 pi j) particles, each with the mass
+// rho x its share of the annulus, so that the volumes sum to pi R^2 (Builder::ring_disc). A disc with an
+// elongation e (either lattice) is the ellipse of semi-axes R (1 + e), R / (1 + e).
 #pragma once
 
 #include "config/case_spec.hpp"

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <ctime>
+#include <string_view>
 #include <system_error>
 #include <type_traits>
 
@@ -492,12 +493,14 @@ void visit_params(P& p, F&& f) {
     f("gx", p.gx, "m/s^2");
     f("gz", p.gz, "m/s^2");
     f("sigma", p.sigma, "N/m");
+    f("st_delta", p.st_delta, nullptr);
 }
 
 std::string enum_name(KernelType v) { return to_string(v); }
 std::string enum_name(DensityFilter v) { return to_string(v); }
 std::string enum_name(ViscosityModel v) { return to_string(v); }
 std::string enum_name(BoundaryType v) { return to_string(v); }
+std::string enum_name(SurfaceTensionDelta v) { return to_string(v); }
 std::string enum_name(Integrator v) {
     return v == Integrator::PredictorCorrector ? "predictor_corrector" : "unknown";
 }
@@ -536,6 +539,9 @@ SimParams read_params(hid_t loc) {
     SimParams p;
     visit_params(p, [loc](const char* name, auto& v, const char*) {
         using T = std::decay_t<decltype(v)>;
+        // Added after files were first written: files without it keep the default (for
+        // st_delta the pressure-consistent delta, the only model older builds had).
+        if (std::string_view(name) == "st_delta" && !has_attr(loc, name)) return;
         if constexpr (std::is_enum_v<T>) {
             v = static_cast<T>(read_attr_int64(loc, name));
             if (enum_name(v) == "unknown") {

@@ -30,6 +30,7 @@ typedef struct sph_params_t {
     int dbc_period;           /* steps between dynamic-boundary density updates */
     int variable_dt;          /* 1: dt from the CFL condition each step */
     int remove_out_of_domain; /* 1: remove leavers and count them; 0: fail */
+    int st_delta;             /* CSF delta in eq 24: 0 pressure-consistent (free surface), 1 colour gradient (paper) */
     double h;                 /* smoothing length [m] */
     double rho0;              /* reference density [kg/m^3] */
     double b;                 /* Tait B [Pa] */

@@ -20,24 +20,30 @@ module surface_tension_loops
   use sorted_state, only: sorted_t
   use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
-                             csf_curvature_pair, csf_curvature, csf_acceleration
+                             csf_curvature_pair, csf_curvature, csf_acceleration, &
+                             csf_surface_weight, ST_DELTA_COLOUR
   implicit none
   private
-  public :: surface_tension_rates, FREE_SURFACE_DELTA
+  public :: surface_tension_rates
 
-  !> Free-surface delta (a departure from eq 24, on by default). Eqs 14-24 come from
-  !> two-phase CSF (Morris 2000), where the colour jumps 1 -> 0 across particles on both sides
-  !> of the interface. At a free surface there are no particles outside, so only the liquid
-  !> side of the smoothed jump is on particles and the difference form of eq 18 shrinks it
-  !> further: with a_s = -(sigma/rho) kappa n a static disc is in equilibrium at a pressure of
-  !> only 0.11-0.14 sigma/R (test_core_surface_tension, LaplaceBalance with this switch off).
-  !> With the switch on, n in eq 24 is replaced by d_a = 2 sum_b V_b grad_a W_ab, the
-  !> kernel-truncation vector (points into the liquid, zero inside a full support) doubled:
-  !> the symmetric pressure force of rates.f90 on a particle in a uniform pressure p is
-  !> -(p/rho) d_a, so a_s = -(sigma/rho) kappa d_a balances exactly the uniform pressure
-  !> p = -sigma kappa = sigma/R of the Laplace law, whatever the particle arrangement. Colour,
-  !> normal, filter and curvature (eqs 14-23) are the paper's; the fields written out are n.
-  logical, parameter :: FREE_SURFACE_DELTA = .true.
+  !> The delta of eq 24, chosen at run time by prm%st_delta (case key surface_tension.delta):
+  !>  ST_DELTA_COLOUR (1, "colour_gradient"): a_s = -(sigma/rho) kappa n with n the colour
+  !>    gradient of eq 18, exactly as the paper prints it. Eqs 14-24 come from two-phase CSF
+  !>    (Morris 2000), where the colour jumps 1 -> 0 across particles on both sides of the
+  !>    interface. At a free surface there are no particles outside, so only the liquid side of
+  !>    the smoothed jump is on particles and the difference form of eq 18 shrinks it further:
+  !>    a static disc is in equilibrium at a pressure of only 0.11-0.14 sigma/R
+  !>    (test_core_surface_tension, LaplaceBalanceOfStaticDisc), i.e. the paper's force
+  !>    underestimates sigma by a factor 7-9 at a free surface.
+  !>  ST_DELTA_PRESSURE (0, "pressure_consistent", the default): n in eq 24 only is replaced by
+  !>    d_a = 2 sum_b V_b grad_a W_ab, the kernel-truncation vector (points into the liquid,
+  !>    zero inside a full support) doubled: the symmetric pressure force of rates.f90 on a
+  !>    particle in a uniform pressure p is -(p/rho) d_a, so a_s = -(sigma/rho) kappa d_a
+  !>    balances exactly the uniform pressure p = -sigma kappa = sigma/R of the Laplace law,
+  !>    whatever the particle arrangement. The force is applied with the surface weight of
+  !>    csf_surface_weight (1 on the outer rows, 0 in the interior where |n| h < 0.025).
+  !> Colour, normal, filter and curvature (eqs 14-23) are the paper's in both; the fields
+  !> written out are n. Any value other than ST_DELTA_COLOUR means the default.
 
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3
 
@@ -59,9 +65,10 @@ contains
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
     type(csf_work_t) :: wk
-    real(rp) :: w0, eps, kap, ax, az
+    real(rp) :: w0, eps, kap, ax, az, wt
     real(rp), allocatable :: kappa(:)
     integer :: n, k, i
+    logical :: colour_delta
 
     n = s%n
     if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
@@ -69,6 +76,7 @@ contains
              wk%num(n), wk%den(n), wk%gx(n), wk%gz(n), kappa(n))
     w0 = kernel_w0(kern)
     eps = csf_threshold(prm%h)
+    colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
 
     ! colour (eq 14), self term included
     !$omp parallel do schedule(static)
@@ -99,16 +107,16 @@ contains
 
     ! curvature (eq 23) and acceleration (eq 24)
     call sweep(PASS_CURVATURE, kern, s, wk)
-    !$omp parallel do schedule(static) private(kap, ax, az)
+    !$omp parallel do schedule(static) private(kap, ax, az, wt)
     do k = 1, n
       kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
       kappa(k) = kap
       if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
-        if (FREE_SURFACE_DELTA) then
-          call csf_acceleration(prm%sigma, s%rho(k), kap, 2.0_rp * wk%gx(k), &
-                                2.0_rp * wk%gz(k), ax, az)
-        else
+        if (colour_delta) then
           call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
+        else
+          wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+          call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
         end if
         s%ax(k) = s%ax(k) + ax
         s%az(k) = s%az(k) + az

@@ -15,8 +15,10 @@
 !>              self term kappa would be too large by 1/(1 - V W(0)) (about 1.5 for Wendland
 !>              at h = 1.3 dx) even in the interior of a resolved interface band.
 !>   force      a_s,a = -(sigma / rho_a) kappa_a n_a                              (eq 24)
-!>              for a free surface the delta-times-normal n is replaced by 2 sum_b V_b grad_a W_ab
-!>              (a departure, explained in loops/surface_tension_loops.f90)
+!>              with n the colour gradient of eq 18 (ST_DELTA_COLOUR, the paper), or, for a
+!>              free surface, with n replaced by d = 2 sum_b V_b grad_a W_ab
+!>              (ST_DELTA_PRESSURE, the default: a departure that makes the force balance the
+!>              discrete pressure force at p = sigma/R; see loops/surface_tension_loops.f90)
 !> Sign check: for a 2D disc of radius R, nhat = -e_r, kappa = div nhat = -1/R and
 !> a_s = (sigma / (rho R)) n points inward.
 !> Capillary time-step limit (Brackbill et al. 1992; Morris 2000 eq 39):
@@ -26,10 +28,18 @@ module surface_tension
   implicit none
   private
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
-            csf_curvature, csf_acceleration, csf_dt
+            csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
+            ST_DELTA_PRESSURE, ST_DELTA_COLOUR
+
+  !> Values of sph_params_t%st_delta (case key surface_tension.delta).
+  integer, parameter :: ST_DELTA_PRESSURE = 0  !< "pressure_consistent": d = 2 sum_b V_b grad_a W_ab
+  integer, parameter :: ST_DELTA_COLOUR = 1    !< "colour_gradient": n of eq 18 (paper eq 24)
 
   real(rp), parameter :: EPS_H = 0.01_rp      !< eps = EPS_H / h (eq 20)
   real(rp), parameter :: DT_ST_COEF = 0.25_rp  !< safety factor of the capillary limit
+  !> Ramp of the surface weight of the pressure-consistent force, in |n| h (see
+  !> csf_surface_weight): 0 below SURF_LO, 1 above SURF_HI.
+  real(rp), parameter :: SURF_LO = 0.025_rp, SURF_HI = 0.075_rp
 
 contains
 
@@ -108,6 +118,24 @@ contains
     ax = s * nx
     az = s * nz
   end subroutine csf_acceleration
+
+  !> Weight of the pressure-consistent force (ST_DELTA_PRESSURE only) at a particle with colour
+  !> gradient n: w = clamp((|n| h - SURF_LO) / (SURF_HI - SURF_LO), 0, 1). The filter of eq 20
+  !> (|n| > 0.01 / h) sits at the noise level of a free-surface colour function: on a ring disc
+  !> the two outer rows have |n| h = 0.13 and the third 0.017, but so have particles near
+  !> the centre where the arrangement is irregular (0.017-0.024), and their curvature from
+  !> eq 23 (neighbours with random unit normals) is of order 1/h. With the delta d of the
+  !> pressure-consistent force, nonzero wherever the arrangement is irregular, such a particle
+  !> gets a spurious force about R/h times the pressure noise it already has, which drove an
+  !> instability from the centre of a Laplace drop within 0.06 s. The weight keeps the force on
+  !> the outer rows and off the interior. Not applied to the paper's force (ST_DELTA_COLOUR),
+  !> which is eq 24 as printed; there n itself is small where |n| is.
+  pure elemental function csf_surface_weight(nx, nz, h) result(wt)
+    real(rp), intent(in) :: nx, nz, h
+    real(rp) :: wt
+    wt = (sqrt(nx * nx + nz * nz) * h - SURF_LO) / (SURF_HI - SURF_LO)
+    wt = min(1.0_rp, max(0.0_rp, wt))
+  end function csf_surface_weight
 
   !> Capillary time-step limit 0.25 sqrt(rho h^3 / (2 pi sigma)); huge when sigma = 0.
   pure function csf_dt(rho, h, sigma) result(dt)

@@ -110,6 +110,7 @@ SimParams unusual_params() {
     p.gx = 0.1;
     p.gz = -9.80665;
     p.sigma = 0.0728;
+    p.st_delta = SurfaceTensionDelta::ColourGradient;  // not the default
     return p;
 }
 
@@ -147,6 +148,7 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
         EXPECT_EQ(bits(x), bits(y));
     }
     EXPECT_EQ(a.variable_dt, b.variable_dt);
+    EXPECT_EQ(a.st_delta, b.st_delta);
 }
 
 RunState unusual_state() {
@@ -190,7 +192,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // field to the checkpoint (visit_params in io/h5_util.cpp, visit_state in io/checkpoint.cpp)
 // and to this test, then update the sizes here.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(SimParams), 224u) << "SimParams changed: update the checkpoint";
+    EXPECT_EQ(sizeof(SimParams), 232u) << "SimParams changed: update the checkpoint";
     EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
 }
 
@@ -359,6 +361,17 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
         ASSERT_GE(H5Adelete(g, "sigma"), 0);
     }
     expect_input_error(dir, "sigma");
+
+    // st_delta came later: a file without it reads as the pressure-consistent delta, the only
+    // surface-tension model of the builds that wrote such files.
+    write_sample(dir);
+    {
+        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
+        ASSERT_GE(H5Adelete(g, "st_delta"), 0);
+        ASSERT_GE(H5Adelete(g, "st_delta_name"), 0);
+    }
+    EXPECT_EQ(read_checkpoint(dir).params.st_delta, SurfaceTensionDelta::PressureConsistent);
     fs::remove_all(dir);
 }
 

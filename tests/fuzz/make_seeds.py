@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Rebuilds the generated seeds of tests/fuzz/corpus/ from the valid inputs of the project.
+
+    tests/fuzz/make_seeds.py SPHJET_BINARY [SHARED_DIR]
+
+legacy/  the hand-written small_*.txt (kept), copies of the legacy runs' case files
+         (SHARED_DIR/legacy/*/*.txt, default ../shared relative to the repository)
+indat/   for each small_*.txt legacy seed: `sphjet gen`, then INDAT, IPART and
+         NORMALS.init joined at the marker lines of fuzz_harness.hpp, plus the INDAT alone
+modern/  every cases/**/*.toml with overrides that coarsen the spacing (five to ten times,
+         so that the generator stays fast), the examples of cases/CASE_FORMAT.md, and one
+         seed with overrides of every kind (a table element, a bare word, a boolean)
+
+The tests/data/bad_cases files are used where they are (tools/fuzz.sh, the mutation test).
+"""
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+CORPUS = HERE / "corpus"
+
+
+def legacy(shared: pathlib.Path) -> None:
+    for src in sorted(shared.glob("legacy/*/*.txt")):
+        if src.name in ("front.txt", "stdout.txt"):
+            continue
+        shutil.copyfile(src, CORPUS / "legacy" / f"shared_{src.name}")
+
+
+def indat(sphjet: str) -> None:
+    for case in sorted((CORPUS / "legacy").glob("small_*.txt")):
+        with tempfile.TemporaryDirectory() as tmp:
+            subprocess.run([sphjet, "gen", str(case), "-o", tmp], check=True,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            t = pathlib.Path(tmp)
+            text = (t / "INDAT").read_text()
+            (CORPUS / "indat" / f"{case.stem}_indat_only").write_text(text)
+            text += "%%IPART%%\n" + (t / "IPART").read_text()
+            if (t / "NORMALS.init").exists():
+                text += "%%NORMALS.init%%\n" + (t / "NORMALS.init").read_text()
+            (CORPUS / "indat" / case.stem).write_text(text)
+
+
+def modern() -> None:
+    for src in sorted((ROOT / "cases").glob("**/*.toml")):
+        text = src.read_text()
+        res = text[text.find("[resolution]"):]
+        over = []
+        for key in ("dx", "dz"):
+            m = re.search(rf"^{key}\s*=\s*([0-9.eE+-]+)", res, re.M)
+            if m:
+                factor = 10 if float(m.group(1)) < 0.002 else 5
+                over.append(f"resolution.{key}={float(m.group(1)) * factor:g}")
+        (CORPUS / "modern" / f"{src.parent.name}_{src.stem}.toml").write_text(
+            text + "\n#%%OVERRIDES%%\n" + "\n".join(over) + "\n")
+    doc = (ROOT / "cases" / "CASE_FORMAT.md").read_text()
+    for k, block in enumerate(re.findall(r"```toml\n(.*?)```", doc, re.S)):
+        coarse = re.sub(r"^dx = [0-9.]+", "dx = 0.01", block, flags=re.M)
+        coarse = re.sub(r"^dz = [0-9.]+", "dz = 0.01", coarse, flags=re.M)
+        (CORPUS / "modern" / f"case_format_example_{k}.toml").write_text(coarse)
+    (CORPUS / "modern" / "overrides_all_kinds.toml").write_text(
+        (CORPUS / "modern" / "case_format_example_0.toml").read_text() +
+        "#%%OVERRIDES%%\n"
+        "fluid.block[0].u0=0.25\n"
+        "surface_tension.sigma = 0.05\n"
+        "numerics.kernel=cubic_spline\n"
+        "domain.wall_top=true\n"
+        "obstacle[0].density=2\n"
+        "output.format=\"hdf5\"\n"
+        "time.variable_dt=false\n")
+
+
+def main() -> None:
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    shared = pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else ROOT.parent / "shared"
+    for d in ("legacy", "indat", "modern"):
+        (CORPUS / d).mkdir(parents=True, exist_ok=True)
+    legacy(shared)
+    indat(sys.argv[1])
+    modern()
+
+
+if __name__ == "__main__":
+    main()
