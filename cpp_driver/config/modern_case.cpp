@@ -519,104 +519,79 @@ void check_keys(const Ctx& ctx, const toml::table& t, const std::string& pattern
 //    "[[[1]]]", "[" at the end of a line) fails an assertion in parse_key() (abort without
 //    NDEBUG, an assumption that does not hold with it); fixed upstream in
 //    marzer/tomlplusplus pull 301;
-//  - a non-ASCII character where toml++ looks for whitespace (outside strings and comments,
-//    or after a backslash in a multi-line basic string) reaches TOML_UNREACHABLE in its
-//    Unicode tables (undefined behaviour); marzer/tomlplusplus issues 190 and 295, pull 305.
-// Both are syntax errors (TOML allows non-ASCII only in strings and comments; the format has
-// no multi-line strings): this finds the first, so that it is reported before toml++ reads
-// the text. A small lexer: it tracks comments and the four kinds of strings.
-struct TomlDefect {
-    std::size_t pos = 0;
-    std::string problem, expected;
-};
+//  - a non-ASCII character where toml++ tests for whitespace (after a key, in the text it
+//    scans ahead of a bare value, after a backslash in a multi-line string) reaches
+//    TOML_UNREACHABLE in its Unicode tables: undefined behaviour in every build;
+//    marzer/tomlplusplus issues 190 and 295, fixed by pull 305.
 
-std::optional<TomlDefect> toml_defect(std::string_view text) {
+// The first line that starts (after blanks) with '[' or '[[' not followed by a key, ']' or
+// another '[' toml++ reports itself: its byte offset. Line by line, without regard to
+// strings, so a multi-line string or array holding such a line is reported too (the format
+// has neither).
+std::optional<std::size_t> bad_table_header(std::string_view text) {
     const auto blank = [](char c) { return c == ' ' || c == '\t'; };
     const auto key_start = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '"' || c == '\'';
     };
-    const auto ascii = [](char c) { return static_cast<unsigned char>(c) < 0x80; };
-    enum class S { Normal, Comment, Basic, Literal, MlBasic, MlLiteral } s = S::Normal;
-    const std::size_t n = text.size();
-    std::size_t i = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // UTF-8 byte-order mark
-    bool line_begin = true;  // only blanks so far on this line (outside strings)
-    for (; i < n; ++i) {
-        const char c = text[i];
-        if (c == '\n') {
-            if (s == S::Comment || s == S::Basic || s == S::Literal) s = S::Normal;
-            line_begin = s == S::Normal;
-            continue;
-        }
-        switch (s) {
-            case S::Normal:
-                if (line_begin && blank(c)) break;
-                if (line_begin && c == '[') {  // a table header: the key must start right
-                    std::size_t j = i + 1;
-                    bool had_blank = false;
-                    while (j < n && blank(text[j])) ++j, had_blank = true;
-                    if (j < n && text[j] == '[' && !had_blank) {  // "[ [" toml++ reports itself
-                        ++j;
-                        while (j < n && blank(text[j])) ++j;
-                    }
-                    if (j < n && text[j] != ']' && !(had_blank && text[j] == '[') && !key_start(text[j]))
-                        return TomlDefect{j, "a table header without a key",
-                                          "a bare key (letters, digits, _ or -) or a quoted key after '[' or '[['"};
-                }
-                line_begin = false;
-                if (c == '#') {
-                    s = S::Comment;
-                } else if (c == '"' || c == '\'') {
-                    const bool multi = text.substr(i, 3) == std::string(3, c);
-                    s = c == '"' ? (multi ? S::MlBasic : S::Basic) : (multi ? S::MlLiteral : S::Literal);
-                    if (multi) i += 2;
-                } else if (!ascii(c)) {
-                    return TomlDefect{i, "a character that is not ASCII outside a string or comment",
-                                      "keys, values and separators in ASCII (other characters only in "
-                                      "strings and comments)"};
-                }
-                break;
-            case S::Comment:
-                break;
-            case S::Basic:
-                if (c == '\\' && i + 1 < n && text[i + 1] != '\n') ++i;  // the escaped character
-                else if (c == '"') s = S::Normal;
-                break;
-            case S::Literal:
-                if (c == '\'') s = S::Normal;
-                break;
-            case S::MlBasic:
-            case S::MlLiteral: {
-                const char q = s == S::MlBasic ? '"' : '\'';
-                if (s == S::MlBasic && c == '\\') {
-                    std::size_t j = i + 1;
-                    while (j < n && (blank(text[j]) || text[j] == '\r' || text[j] == '\n')) ++j;
-                    if (j < n && !ascii(text[j]))
-                        return TomlDefect{j, "a character that is not ASCII after a backslash in a multi-line string",
-                                          "an ASCII character (toml++ 3.3 cannot read this one)"};
-                    if (j == i + 1) i = j;  // an escape sequence: skip the escaped character
-                } else if (c == q && text.substr(i, 3) == std::string(3, q)) {
-                    std::size_t j = i;
-                    while (j < n && text[j] == q && j - i < 5) ++j;  // up to two quotes of content
-                    i = j - 1;
-                    s = S::Normal;
-                }
-                break;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text = text.substr(3);  // UTF-8 byte-order mark
+    for (std::size_t b = 0; b < text.size();) {
+        std::size_t e = text.find('\n', b);
+        if (e == std::string_view::npos) e = text.size();
+        std::size_t i = b;
+        while (i < e && blank(text[i])) ++i;
+        if (i < e && text[i] == '[') {
+            ++i;
+            bool had_blank = false;
+            while (i < e && blank(text[i])) ++i, had_blank = true;
+            if (i < e && text[i] == '[' && !had_blank) {  // "[ [" is an error toml++ reports
+                ++i;
+                while (i < e && blank(text[i])) ++i;
             }
+            if (i < text.size() && text[i] != ']' && !(had_blank && text[i] == '[') && !key_start(text[i]))
+                return i;
         }
+        b = e + 1;
     }
     return std::nullopt;
 }
 
-// "file:line:column" of byte pos (columns in bytes), and the character there, for messages.
-std::pair<std::string, std::string> toml_position(std::string_view text, std::size_t pos) {
-    std::size_t line = 1, start = 0;
-    for (std::size_t k = 0; k < pos; ++k)
-        if (text[k] == '\n') ++line, start = k + 1;
-    const unsigned char c = static_cast<unsigned char>(text[pos]);
-    std::string found = "'" + std::string(1, static_cast<char>(c)) + "'";
-    if (c == '\n' || c == '\r') found = "the end of the line";
-    else if (c < 0x20 || c >= 0x7f) found = "byte " + std::to_string(c);
-    return {std::to_string(line) + ":" + std::to_string(pos - start + 1), found};
+// Length of the well-formed UTF-8 sequence of a non-ASCII character at s[i] (0: none).
+std::size_t utf8_length(std::string_view s, std::size_t i) {
+    const auto u = [&](std::size_t k) { return k < s.size() ? static_cast<unsigned char>(s[k]) : 0u; };
+    const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xBF) { return u(k) >= lo && u(k) <= hi; };
+    const unsigned c = u(i);
+    if (c >= 0xC2 && c <= 0xDF) return cont(i + 1) ? 2 : 0;
+    if (c == 0xE0) return cont(i + 1, 0xA0) && cont(i + 2) ? 3 : 0;
+    if ((c >= 0xE1 && c <= 0xEC) || c == 0xEE || c == 0xEF) return cont(i + 1) && cont(i + 2) ? 3 : 0;
+    if (c == 0xED) return cont(i + 1, 0x80, 0x9F) && cont(i + 2) ? 3 : 0;
+    if (c == 0xF0) return cont(i + 1, 0x90) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    if (c >= 0xF1 && c <= 0xF3) return cont(i + 1) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    if (c == 0xF4) return cont(i + 1, 0x80, 0x8F) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    return 0;
+}
+
+// The text toml++ is given: every non-ASCII character replaced by '?'. TOML allows those
+// characters only in comments and strings; every key and string value of this format is
+// ASCII, so a case file means the same after the replacement (a wrong value or key is
+// quoted with '?' in its message) and columns, counted in characters, stay the same.
+// Malformed UTF-8 is left for toml++ to report.
+std::string ascii_for_toml(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t n = utf8_length(text, i);
+        if (n == 0) {
+            out += text[i++];
+        } else {
+            out += '?';
+            i += n;
+        }
+    }
+    return out;
+}
+
+bool has_non_ascii(std::string_view s) {
+    return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
 }
 
 // ---------------------------------------------------------------------------------------
@@ -685,7 +660,7 @@ void apply_override(Ctx& ctx, toml::table& root, const std::string& text) {
     bool ok = false;
     try {
         const std::string line = "v = " + value;
-        if (!toml_defect(line)) {
+        if (!has_non_ascii(line) && !bad_table_header(line)) {  // see ascii_for_toml
             parsed = toml::parse(line);
             ok = parsed.size() == 1 && parsed.get("v") != nullptr;
         }
@@ -1113,12 +1088,22 @@ CaseSpec parse_modern_case(std::string_view text, const std::string& source_name
                            const std::vector<std::string>& overrides) {
     Ctx ctx{source_name, {}};
     toml::table root;
-    if (const auto bad = toml_defect(text)) {
-        const auto [at, found] = toml_position(text, bad->pos);
-        throw InputError(source_name + ":" + at, "TOML syntax error: " + bad->problem, bad->expected, found);
+    if (const auto bad = bad_table_header(text)) {
+        const std::size_t pos = *bad + (text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0);
+        std::size_t line = 1, start = 0;
+        for (std::size_t k = 0; k < pos; ++k)
+            if (text[k] == '\n') ++line, start = k + 1;
+        const unsigned char c = static_cast<unsigned char>(text[pos]);
+        std::string found = "'" + std::string(1, static_cast<char>(c)) + "'";
+        if (c == '\n' || c == '\r') found = "the end of the line";
+        else if (c < 0x20 || c >= 0x7f) found = "byte " + std::to_string(c);
+        throw InputError(source_name + ":" + std::to_string(line) + ":" + std::to_string(pos - start + 1),
+                         "TOML syntax error: a table header without a key",
+                         "a bare key (letters, digits, _ or -) or a quoted key after '[' or '[['", found);
     }
+    const std::string toml_text = ascii_for_toml(text);
     try {
-        root = toml::parse(text, source_name);
+        root = toml::parse(toml_text, source_name);
     } catch (const toml::parse_error& e) {
         const auto& b = e.source().begin;
         throw InputError(source_name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column),
