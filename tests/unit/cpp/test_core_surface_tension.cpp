@@ -9,7 +9,10 @@
 //    symmetric drop gives round-off, a jittered drop a small, stated remainder;
 //  - boundary particles neither contribute nor receive (fluid-only colour);
 //  - results are bitwise independent of the thread count; bad input is a status;
-//  - the time step respects the capillary limit 0.25 sqrt(rho0 h^3 / (2 pi sigma)).
+//  - the time step respects the capillary limit 0.25 sqrt(rho0 h^3 / (2 pi sigma));
+//  - the two deltas of eq 24 (st_delta 0 pressure-consistent, the default; 1 the paper's colour
+//    gradient): the Laplace balance of a static disc, and the surface weight that keeps the
+//    pressure-consistent force off the interior.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
