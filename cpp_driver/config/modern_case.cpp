@@ -510,10 +510,10 @@ void check_keys(const Ctx& ctx, const toml::table& t, const std::string& pattern
 }
 
 // ---------------------------------------------------------------------------------------
-// Two toml++ 3.3 defects, kept away from it.
+// Three toml++ 3.3 defects, kept away from it.
 // ---------------------------------------------------------------------------------------
 
-// toml++ 3.3 (the Debian 12 package) has two defects that malformed text reaches, both found
+// toml++ 3.3 (the Debian 12 package) has defects that malformed text reaches, all found
 // by tests/fuzz (-fsanitize=undefined on toml++ compiled header-only):
 //  - a table header whose key starts with a character that cannot start a key ("[^x]",
 //    "[[[1]]]", "[" at the end of a line) fails an assertion in parse_key() (abort without
@@ -590,6 +590,99 @@ std::string ascii_for_toml(std::string_view text) {
     return out;
 }
 
+// Two more defects fail the assertion !is_value_terminator in parse_value() (abort without
+// NDEBUG, an unmet assumption with it):
+//  - in an array, a '}' where a value is expected ("a = [}", "[1, }", also after blank lines
+//    and comments);
+//  - a bare value of ten characters with '-' at the 5th and 8th (a date's shape), then a
+//    space, one digit and a value terminator ("a = 1979-05-27 7 "): toml++ takes the space
+//    for the date-time separator and scans on past the digit. Never valid TOML (a time after
+//    the space needs hh:mm:ss).
+// The offset of the first, from a small lexer (comments and the four kinds of string): toml++
+// reaches either only through text that parses, which the lexer follows exactly.
+bool toml_terminator(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ',' || c == ']' || c == '}' || c == '#';
+}
+
+bool date_space_digit(std::string_view text, std::size_t i) {
+    if (i + 13 > text.size()) return false;
+    for (std::size_t k = i; k < i + 10; ++k)
+        if (toml_terminator(text[k])) return false;
+    const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    return digit(text[i]) && text[i + 4] == '-' && text[i + 7] == '-' && text[i + 10] == ' ' &&
+           digit(text[i + 11]) && toml_terminator(text[i + 12]);
+}
+
+std::optional<std::size_t> toml_assertion_hazard(std::string_view text) {
+    enum class S { Normal, Comment, Basic, Literal, MlBasic, MlLiteral } s = S::Normal;
+    std::vector<char> open;     // '[' (array) or '{' (inline table), innermost last
+    bool expect_value = false;  // just after '[' or ',' of an array
+    bool line_begin = true;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n') {
+            if (s == S::Comment || s == S::Basic || s == S::Literal) s = S::Normal;
+            line_begin = true;
+            continue;
+        }
+        switch (s) {
+            case S::Normal: {
+                const bool header = line_begin && open.empty();
+                if (c == ' ' || c == '\t' || c == '\r') break;
+                line_begin = false;
+                if (c == '#') {
+                    s = S::Comment;
+                    break;
+                }
+                if (expect_value && c == '}') return i;
+                if ((i == 0 || std::string_view(" \t=[,{").find(text[i - 1]) != std::string_view::npos) &&
+                    date_space_digit(text, i))
+                    return i;
+                expect_value = false;
+                if (c == '"' || c == '\'') {
+                    const bool multi = text.substr(i, 3) == std::string(3, c);
+                    s = c == '"' ? (multi ? S::MlBasic : S::Basic) : (multi ? S::MlLiteral : S::Literal);
+                    if (multi) i += 2;
+                } else if (c == '[' && !header) {
+                    open.push_back('['), expect_value = true;
+                } else if (c == '[' && header) {  // a table header: to the end of its line
+                    while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+                } else if (c == '{') {
+                    open.push_back('{');
+                } else if ((c == ']' || c == '}') && !open.empty()) {
+                    open.pop_back();
+                } else if (c == ',' && !open.empty() && open.back() == '[') {
+                    expect_value = true;
+                }
+                break;
+            }
+            case S::Comment:
+                break;
+            case S::Basic:
+                if (c == '\\' && i + 1 < text.size() && text[i + 1] != '\n') ++i;
+                else if (c == '"') s = S::Normal;
+                break;
+            case S::Literal:
+                if (c == '\'') s = S::Normal;
+                break;
+            case S::MlBasic:
+            case S::MlLiteral: {
+                const char q = s == S::MlBasic ? '"' : '\'';
+                if (s == S::MlBasic && c == '\\' && i + 1 < text.size() && text[i + 1] != '\n') {
+                    ++i;
+                } else if (c == q && text.substr(i, 3) == std::string(3, q)) {
+                    std::size_t j = i;
+                    while (j < text.size() && text[j] == q && j - i < 5) ++j;
+                    i = j - 1;
+                    s = S::Normal;
+                }
+                break;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
 bool has_non_ascii(std::string_view s) {
     return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
 }
@@ -660,7 +753,7 @@ void apply_override(Ctx& ctx, toml::table& root, const std::string& text) {
     bool ok = false;
     try {
         const std::string line = "v = " + value;
-        if (!has_non_ascii(line) && !bad_table_header(line)) {  // see ascii_for_toml
+        if (!has_non_ascii(line) && !bad_table_header(line) && !toml_assertion_hazard(line)) {
             parsed = toml::parse(line);
             ok = parsed.size() == 1 && parsed.get("v") != nullptr;
         }
@@ -1102,6 +1195,14 @@ CaseSpec parse_modern_case(std::string_view text, const std::string& source_name
                          "a bare key (letters, digits, _ or -) or a quoted key after '[' or '[['", found);
     }
     const std::string toml_text = ascii_for_toml(text);
+    if (const auto bad = toml_assertion_hazard(toml_text)) {
+        std::size_t line = 1, start = 0;
+        for (std::size_t k = 0; k < *bad; ++k)
+            if (toml_text[k] == '\n') ++line, start = k + 1;
+        throw InputError(source_name + ":" + std::to_string(line) + ":" + std::to_string(*bad - start + 1),
+                         "TOML syntax error", toml_text[*bad] == '}' ? "a value or ']'" : "a valid value",
+                         toml_text[*bad] == '}' ? "'}' in an array" : "a date followed by a space and one digit");
+    }
     try {
         root = toml::parse(toml_text, source_name);
     } catch (const toml::parse_error& e) {

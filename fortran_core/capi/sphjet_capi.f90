@@ -19,6 +19,7 @@ module sphjet_capi
   use repulsive_wall, only: wall_normal
   use eos_tait, only: tait_pressure, tait_sound_speed
   use surface_tension_loops, only: surface_tension_rates
+  use surface_tension, only: ST_DELTA_PRESSURE, ST_DELTA_COLOUR
   implicit none
   private
   public :: sph_workspace_create, sph_workspace_destroy, sph_set_threads, sph_get_threads, &
@@ -65,7 +66,8 @@ contains
       .and. any(prm%boundary == [BC_REPULSIVE, BC_DYNAMIC]) &
       .and. any(prm%viscosity == [VISC_ARTIFICIAL, VISC_LAMINAR]) &
       .and. prm%density_filter >= FILTER_NONE .and. prm%density_filter <= FILTER_MLS &
-      .and. prm%cfl > 0.0_rp .and. prm%sigma >= 0.0_rp
+      .and. prm%cfl > 0.0_rp .and. prm%sigma >= 0.0_rp &
+      .and. any(prm%st_delta == [ST_DELTA_PRESSURE, ST_DELTA_COLOUR])
     if (prm%boundary == BC_REPULSIVE) params_ok = params_ok .and. prm%h_swl > 0.0_rp &
       .and. prm%coef > 0.0_rp
   end function params_ok

@@ -43,7 +43,7 @@ module surface_tension_loops
   !>    whatever the particle arrangement. The force is applied with the surface weight of
   !>    csf_surface_weight (1 on the outer rows, 0 in the interior where |n| h < 0.025).
   !> Colour, normal, filter and curvature (eqs 14-23) are the paper's in both; the fields
-  !> written out are n. Any value other than ST_DELTA_COLOUR means the default.
+  !> written out are n. Other values are rejected by the C entry points (params_ok).
 
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3
 

@@ -340,6 +340,11 @@ TEST(CoreSurfaceTension, MissingFieldArraysIsAnError) {
     auto bad = prm;
     bad.sigma = -1;
     EXPECT_EQ(sph_surface_tension_fields(ws, &bad, &arr), SPH_ERR_ARGUMENT);
+    for (int delta : {-1, 2}) {  // only 0 (pressure-consistent) and 1 (colour gradient)
+        bad = prm;
+        bad.st_delta = delta;
+        EXPECT_EQ(sph_surface_tension_fields(ws, &bad, &arr), SPH_ERR_ARGUMENT) << delta;
+    }
     EXPECT_EQ(sph_surface_tension_fields(ws, &prm, &arr), SPH_OK);
     sph_workspace_destroy(ws);
 }

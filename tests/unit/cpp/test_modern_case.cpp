@@ -563,6 +563,9 @@ const BadCase kBad[] = {
      {"legacy.h_coefficient", "given twice"}},
     {"FormatVersion", "^", "format_version = 2\n", {"format_version", "unsupported"}},
     {"SyntaxError", "lx = 0.5", "lx = = 0.5", {"case.toml:9:", "TOML syntax error"}},
+    // Text that reaches an assertion in toml++ 3.3 (tests/fuzz/README.md) is a syntax error too.
+    {"SyntaxBraceInArray", "lx = 0.5", "lx = [1, }", {"case.toml:9:10", "'}' in an array"}},
+    {"SyntaxDateSpaceDigit", "lx = 0.5", "lx = 1979-05-27 7 ", {"case.toml:9:6", "a date followed by a space"}},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModernCase, Validation, ::testing::ValuesIn(kBad),
