@@ -21,7 +21,8 @@ module surface_tension_loops
   use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
-                             csf_surface_weight, ST_DELTA_COLOUR
+                             csf_surface_weight, csf_tangential_pair, csf_depth_table, &
+                             csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N
   implicit none
   private
   public :: surface_tension_rates
@@ -42,8 +43,12 @@ module surface_tension_loops
   !>    balances exactly the uniform pressure p = -sigma kappa = sigma/R of the Laplace law,
   !>    whatever the particle arrangement. The force is applied with the surface weight of
   !>    csf_surface_weight (1 on the outer rows, 0 in the interior where |n| h < 0.025).
-  !> Colour, normal, filter and curvature (eqs 14-23) are the paper's in both; the fields
-  !> written out are n. Other values are rejected by the C entry points (params_ok).
+  !>    Its curvature is the free-surface curvature of csf_surface_curvature: eq 23's numerator
+  !>    over a first-order consistent (tangential) denominator, moved from the particle's row
+  !>    to the surface by the depth read from the colour.
+  !> Colour, normal and filter (eqs 14-21) are the paper's in both, and so is the curvature
+  !> (eq 23) of ST_DELTA_COLOUR; the fields written out are n and the curvature used. Other
+  !> values are rejected by the C entry points (params_ok).
 
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3
 
@@ -51,6 +56,7 @@ module surface_tension_loops
   type :: csf_work_t
     real(rp), allocatable :: v(:), c(:), nx(:), nz(:), nhx(:), nhz(:), flag(:), num(:), den(:)
     real(rp), allocatable :: gx(:), gz(:)  !< sum_b V_b grad_a W_ab (free-surface delta)
+    real(rp), allocatable :: tden(:)       !< tangential denominator (free-surface curvature)
   end type csf_work_t
 
 contains
@@ -65,7 +71,7 @@ contains
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
     type(csf_work_t) :: wk
-    real(rp) :: w0, eps, kap, ax, az, wt
+    real(rp) :: w0, eps, kap, ax, az, wt, depth_tab(DEPTH_TABLE_N)
     real(rp), allocatable :: kappa(:)
     integer :: n, k, i
     logical :: colour_delta
@@ -73,7 +79,7 @@ contains
     n = s%n
     if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
     allocate(wk%v(n), wk%c(n), wk%nx(n), wk%nz(n), wk%nhx(n), wk%nhz(n), wk%flag(n), &
-             wk%num(n), wk%den(n), wk%gx(n), wk%gz(n), kappa(n))
+             wk%num(n), wk%den(n), wk%gx(n), wk%gz(n), wk%tden(n), kappa(n))
     w0 = kernel_w0(kern)
     eps = csf_threshold(prm%h)
     colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
@@ -102,14 +108,21 @@ contains
       end if
       wk%num(k) = 0.0_rp
       wk%den(k) = wk%flag(k) * wk%v(k) * w0   ! self term of the denominator of eq 23
+      wk%tden(k) = 0.0_rp                       ! no self term: (r_a - r_a) = 0
     end do
     !$omp end parallel do
 
     ! curvature (eq 23) and acceleration (eq 24)
     call sweep(PASS_CURVATURE, kern, s, wk)
+    if (.not. colour_delta) call csf_depth_table(kern, depth_tab)
     !$omp parallel do schedule(static) private(kap, ax, az, wt)
     do k = 1, n
-      kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+      if (colour_delta) then   ! eq 23 as printed
+        kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+      else                     ! free-surface curvature (physics/surface_tension.f90)
+        kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
+                                    csf_depth(wk%c(k), depth_tab, prm%h))
+      end if
       kappa(k) = kap
       if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
         if (colour_delta) then
@@ -204,6 +217,11 @@ contains
                 wk%den(a) = wk%den(a) + da2
                 wk%num(b) = wk%num(b) + db1
                 wk%den(b) = wk%den(b) + db2
+                call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                                         wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                                         dx, dz, f, da1, db1)
+                wk%tden(a) = wk%tden(a) + da1
+                wk%tden(b) = wk%tden(b) + db1
               end select
             end do
           end do

@@ -19,6 +19,18 @@
 !>              free surface, with n replaced by d = 2 sum_b V_b grad_a W_ab
 !>              (ST_DELTA_PRESSURE, the default: a departure that makes the force balance the
 !>              discrete pressure force at p = sigma/R; see loops/surface_tension_loops.f90)
+!>   free-surface curvature (ST_DELTA_PRESSURE only; a departure from eq 23): the numerator of
+!>              eq 23 over a first-order consistent denominator, the tangential component
+!>              sum_b min(N_a,N_b) V_b (r_b - r_a).t_a (grad_a W_ab).t_a with t_a normal to
+!>              nhat_a (1 in a full support, so it agrees with eq 23 there), which makes
+!>              the divergence of nhat exact for a circle of particles: -1/r at radius r.
+!>              The rows that carry the force lie inside the surface, at depth delta, so
+!>              their -1/r exceeds the surface's -1/R by O(delta/R) (5% at R/dx = 20);
+!>              kappa_s = kappa / (1 - kappa delta) moves it to the surface, with delta
+!>              read from the colour: C(delta) of a flat surface (csf_depth_table). Eq 23's
+!>              Shepard denominator instead under-normalises by a kernel-dependent factor
+!>              that cancels that bias for Wendland but not for the cubic spline
+!>              (cases/laplace_disc/README.md).
 !> Sign check: for a 2D disc of radius R, nhat = -e_r, kappa = div nhat = -1/R and
 !> a_s = (sigma / (rho R)) n points inward.
 !> Capillary time-step limit (Brackbill et al. 1992; Morris 2000 eq 39):
@@ -29,7 +41,8 @@ module surface_tension
   private
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
             csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
-            ST_DELTA_PRESSURE, ST_DELTA_COLOUR
+            csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
+            ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N
 
   !> Values of sph_params_t%st_delta (case key surface_tension.delta).
   integer, parameter :: ST_DELTA_PRESSURE = 0  !< "pressure_consistent": d = 2 sum_b V_b grad_a W_ab
@@ -40,6 +53,13 @@ module surface_tension
   !> Ramp of the surface weight of the pressure-consistent force, in |n| h (see
   !> csf_surface_weight): 0 below SURF_LO, 1 above SURF_HI.
   real(rp), parameter :: SURF_LO = 0.025_rp, SURF_HI = 0.075_rp
+
+  !> Points of the flat-surface colour table C(delta), delta = 0 ... 2h.
+  integer, parameter :: DEPTH_TABLE_N = 64
+  !> Smallest tangential denominator accepted (its value in a full support is 1).
+  real(rp), parameter :: TANGENTIAL_MIN = 0.05_rp
+  !> Smallest 1 - kappa delta accepted by the depth correction (noise on concave spots).
+  real(rp), parameter :: DEPTH_FACTOR_MIN = 0.5_rp
 
 contains
 
@@ -78,6 +98,93 @@ contains
     dena = f * vb * w
     denb = f * va * w
   end subroutine csf_curvature_pair
+
+  !> The tangential denominator of the free-surface curvature for one pair, d = r_a - r_b,
+  !> f = F_ab (grad_a W_ab = f d), t = nhat rotated by 90 degrees: a gets
+  !> min(N_a,N_b) V_b (r_b - r_a).t_a (f d).t_a = -min(N) V_b f (d.t_a)^2 (>= 0, f < 0), b the
+  !> same with V_a and t_b.
+  pure subroutine csf_tangential_pair(fa, fb, va, vb, nhxa, nhza, nhxb, nhzb, dx, dz, f, &
+                                      tana, tanb)
+    real(rp), intent(in) :: fa, fb, va, vb, nhxa, nhza, nhxb, nhzb, dx, dz, f
+    real(rp), intent(out) :: tana, tanb
+    real(rp) :: m, da, db
+    m = -min(fa, fb) * f
+    da = -dx * nhza + dz * nhxa   ! d . t_a, t_a = (-nhz, nhx)
+    db = -dx * nhzb + dz * nhxb
+    tana = m * vb * da * da
+    tanb = m * va * db * db
+  end subroutine csf_tangential_pair
+
+  !> The colour of a particle at depth delta below a flat free surface in a continuum of
+  !> liquid, C(delta) = 1/2 + int_0^delta P(y) dy with P(y) = int W(sqrt(x^2 + y^2)) dx the
+  !> kernel's profile across the surface; tab(k) at delta = 2h (k-1)/(DEPTH_TABLE_N-1).
+  !> Midpoint sums of 100 x 100 cells over the quarter support (10^4 kernel calls, about as
+  !> many as one pair sweep over 500 particles; relative error about 1e-4).
+  pure subroutine csf_depth_table(kern, tab)
+    use sphjet_kernels, only: kernel_t, kernel_eval
+    type(kernel_t), intent(in) :: kern
+    real(rp), intent(out) :: tab(DEPTH_TABLE_N)
+    integer, parameter :: NQ = 100
+    real(rp) :: prof(NQ), ymid, xmid, cell, w, f, r, acc, delta, ycut
+    integer :: i, j, k
+    cell = 2.0_rp * kern%h / NQ
+    do j = 1, NQ          ! P at the midpoints of the y cells, both signs of x
+      ymid = (j - 0.5_rp) * cell
+      acc = 0.0_rp
+      do i = 1, NQ
+        xmid = (i - 0.5_rp) * cell
+        r = sqrt(xmid * xmid + ymid * ymid)
+        if (r * r < kern%support2) then
+          call kernel_eval(kern, r, w, f)
+          acc = acc + w
+        end if
+      end do
+      prof(j) = 2.0_rp * acc * cell
+    end do
+    do k = 1, DEPTH_TABLE_N
+      delta = 2.0_rp * kern%h * (k - 1) / (DEPTH_TABLE_N - 1)
+      acc = 0.0_rp
+      do j = 1, NQ
+        ycut = min(max(delta - (j - 1) * cell, 0.0_rp), cell)   ! part of cell j below delta
+        acc = acc + prof(j) * ycut
+      end do
+      tab(k) = 0.5_rp + acc
+    end do
+  end subroutine csf_depth_table
+
+  !> Depth below the surface from the colour, inverting the table (linear between points):
+  !> 0 for C <= C(0) = 1/2, 2h for C >= C(2h).
+  pure function csf_depth(c, tab, h) result(delta)
+    real(rp), intent(in) :: c, tab(DEPTH_TABLE_N), h
+    real(rp) :: delta, t
+    integer :: k
+    if (c <= tab(1)) then
+      delta = 0.0_rp
+      return
+    end if
+    do k = 2, DEPTH_TABLE_N
+      if (c <= tab(k)) then
+        t = (c - tab(k - 1)) / max(tab(k) - tab(k - 1), tiny(1.0_rp))
+        delta = 2.0_rp * h * (k - 2 + t) / (DEPTH_TABLE_N - 1)
+        return
+      end if
+    end do
+    delta = 2.0_rp * h
+  end function csf_depth
+
+  !> Free-surface curvature from the numerator of eq 23, the tangential denominator tden and the
+  !> depth: kappa = num / tden, then kappa / (1 - kappa delta) (the factor kept >= 1/2);
+  !> 0 without a valid normal or with a denominator below TANGENTIAL_MIN.
+  pure elemental function csf_surface_curvature(num, tden, flag, delta) result(kappa)
+    real(rp), intent(in) :: num, tden, flag, delta
+    real(rp) :: kappa
+    if (flag > 0.0_rp .and. tden > TANGENTIAL_MIN) then
+      kappa = num / tden
+      kappa = kappa / max(DEPTH_FACTOR_MIN, 1.0_rp - kappa * delta)
+    else
+      kappa = 0.0_rp
+    end if
+  end function csf_surface_curvature
 
   !> Filter and unit normal (eqs 20-21): flag = 1 and nhat = n/|n| if |n| > eps, else 0.
   pure elemental subroutine csf_unit_normal(nx, nz, eps, nhx, nhz, flag)

@@ -409,16 +409,25 @@ double laplace_balance(int kernel, int nr, int st_delta) {
     return -sp / pp;
 }
 
+// The default model (free-surface curvature, pressure-consistent delta) converges to the
+// Laplace jump at first order in dx/R: measured 1.055 / 1.025 / 1.010 (cubic spline) and
+// 1.047 / 1.022 / 1.011 (Wendland) at R/dx = 10 / 20 / 40. Checked: the brief's 3% from
+// R/dx = 20 on, 6% at R/dx = 10, and the error falling with resolution. The paper's eq 24
+// holds only 0.11-0.14 of it at a free surface (band 0.08-0.20).
 TEST(CoreSurfaceTension, LaplaceBalanceOfStaticDisc) {
-    for (int kernel : {kCubic, kWendland})
+    for (int kernel : {kCubic, kWendland}) {
+        double previous_error = 1.0;
         for (int nr : {10, 20, 40}) {
             const double r0 = laplace_balance(kernel, nr, 0), r1 = laplace_balance(kernel, nr, 1);
             std::printf("kernel %d R/dx %d: p*/(sigma/R) = %.4f pressure_consistent, %.4f "
                         "colour_gradient (paper eq 24)\n", kernel, nr, r0, r1);
-            EXPECT_NEAR(r0, 1.0, 0.10);
+            EXPECT_NEAR(r0, 1.0, nr >= 20 ? 0.03 : 0.06) << "kernel " << kernel << " R/dx " << nr;
+            EXPECT_LT(std::abs(r0 - 1.0), previous_error) << "kernel " << kernel << " R/dx " << nr;
+            previous_error = std::abs(r0 - 1.0);
             EXPECT_GT(r1, 0.08);
             EXPECT_LT(r1, 0.20);
         }
+    }
 }
 
 // The surface weight of the pressure-consistent force (csf_surface_weight: 0 where
