@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "io/h5_util.hpp"
 
 namespace {
 
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
     prefer_passive_openmp_waits(argv);
     CLI::App app{"sphjet: 2D weakly compressible SPH (a modern fork of SPHysics 2D) with CSF "
                  "surface tension"};
-    app.set_version_flag("--version", std::string(SPHJET_VERSION) + " (" SPHJET_GIT_HASH ")");
+    app.set_version_flag("--version", std::string(SPHJET_VERSION) + " (" + sphjet::h5::git_hash() + ")");
     app.require_subcommand(1);
     sphjet::cli::set_command_line(argc, argv);
     sphjet::cli::register_run(app);

@@ -21,6 +21,7 @@
 #include "core/solver.hpp"
 #include "geometry/generator.hpp"
 #include "io/checkpoint.hpp"
+#include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
 
@@ -209,7 +210,7 @@ RunSummary run_simulation(const RunOptions& opts) {
     }
     const std::size_t np = solver.particles().size();
     const std::size_t nfluid = solver.particles().n_fluid();
-    log.line(fmt::format("sphjet {} ({}) {}", SPHJET_VERSION, SPHJET_GIT_HASH,
+    log.line(fmt::format("sphjet {} ({}) {}", SPHJET_VERSION, h5::git_hash(),
                          opts.resume ? "resuming" : "starting"));
     log.line(fmt::format("command: {}", opts.command_line), false);
     log.line(fmt::format("case: {} | particles {} (boundary {}, fluid {}) | h = {:.6g} m, "

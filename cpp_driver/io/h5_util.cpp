@@ -16,9 +16,7 @@
 #ifndef SPHJET_VERSION
 #define SPHJET_VERSION "unknown"
 #endif
-#ifndef SPHJET_GIT_HASH
-#define SPHJET_GIT_HASH "unknown"
-#endif
+#include "sphjet_git_hash.h"  // generated at build time (cpp_driver/git_hash.cmake)
 
 namespace sphjet::h5 {
 
