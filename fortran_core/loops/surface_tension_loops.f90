@@ -14,7 +14,7 @@
 !> faces of a thin nozzle wall look like a liquid surface and pull fluid inside the nozzle
 !> towards them. Walls hold the fluid through the boundary scheme only.
 module surface_tension_loops
-  use sphjet_kinds, only: rp
+  use sphjet_kinds, only: rp, KERNEL_WENDLAND
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t
@@ -50,7 +50,13 @@ module surface_tension_loops
   !> (eq 23) of ST_DELTA_COLOUR; the fields written out are n and the curvature used. Other
   !> values are rejected by the C entry points (params_ok).
 
-  integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3
+  integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3, &
+                        PASS_SURFACE_CURVATURE = 4
+
+  !> Flat-surface colour tables C(delta/h) of csf_depth_table, built once per kernel kind
+  !> (indexed by the kind; KERNEL_WENDLAND is the largest) on first use.
+  real(rp), save :: depth_cache(DEPTH_TABLE_N, KERNEL_WENDLAND)
+  logical, save :: depth_cached(KERNEL_WENDLAND) = .false.
 
   !> Per-particle fields in sorted order.
   type :: csf_work_t
@@ -71,7 +77,7 @@ contains
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
     type(csf_work_t) :: wk
-    real(rp) :: w0, eps, kap, ax, az, wt, depth_tab(DEPTH_TABLE_N)
+    real(rp) :: w0, eps, kap, ax, az, wt
     real(rp), allocatable :: kappa(:)
     integer :: n, k, i
     logical :: colour_delta
@@ -113,15 +119,24 @@ contains
     !$omp end parallel do
 
     ! curvature (eq 23) and acceleration (eq 24)
-    call sweep(PASS_CURVATURE, kern, s, wk)
-    if (.not. colour_delta) call csf_depth_table(kern, depth_tab)
+    if (colour_delta) then
+      call sweep(PASS_CURVATURE, kern, s, wk)
+    else
+      call sweep(PASS_SURFACE_CURVATURE, kern, s, wk)
+      !$omp critical (csf_depth_cache)
+      if (.not. depth_cached(kern%kind)) then
+        call csf_depth_table(kern%kind, depth_cache(:, kern%kind))
+        depth_cached(kern%kind) = .true.
+      end if
+      !$omp end critical (csf_depth_cache)
+    end if
     !$omp parallel do schedule(static) private(kap, ax, az, wt)
     do k = 1, n
       if (colour_delta) then   ! eq 23 as printed
         kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
       else                     ! free-surface curvature (physics/surface_tension.f90)
         kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
-                                    csf_depth(wk%c(k), depth_tab, prm%h))
+                                    csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
       end if
       kappa(k) = kap
       if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
@@ -206,7 +221,7 @@ contains
                 wk%gz(a) = wk%gz(a) + wk%v(b) * gz
                 wk%gx(b) = wk%gx(b) - wk%v(a) * gx
                 wk%gz(b) = wk%gz(b) - wk%v(a) * gz
-              case default
+              case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
                 if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
                 gx = f * dx
                 gz = f * dz
@@ -214,14 +229,17 @@ contains
                                         wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
                                         gx, gz, wab, da1, da2, db1, db2)
                 wk%num(a) = wk%num(a) + da1
-                wk%den(a) = wk%den(a) + da2
                 wk%num(b) = wk%num(b) + db1
-                wk%den(b) = wk%den(b) + db2
-                call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                         wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                         dx, dz, f, da1, db1)
-                wk%tden(a) = wk%tden(a) + da1
-                wk%tden(b) = wk%tden(b) + db1
+                if (pass == PASS_CURVATURE) then   ! Shepard denominator of eq 23
+                  wk%den(a) = wk%den(a) + da2
+                  wk%den(b) = wk%den(b) + db2
+                else                               ! tangential denominator
+                  call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                                           wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                                           dx, dz, f, da1, db1)
+                  wk%tden(a) = wk%tden(a) + da1
+                  wk%tden(b) = wk%tden(b) + db1
+                end if
               end select
             end do
           end do

@@ -118,15 +118,19 @@ contains
   !> The colour of a particle at depth delta below a flat free surface in a continuum of
   !> liquid, C(delta) = 1/2 + int_0^delta P(y) dy with P(y) = int W(sqrt(x^2 + y^2)) dx the
   !> kernel's profile across the surface; tab(k) at delta = 2h (k-1)/(DEPTH_TABLE_N-1).
-  !> Midpoint sums of 100 x 100 cells over the quarter support (10^4 kernel calls, about as
-  !> many as one pair sweep over 500 particles; relative error about 1e-4).
-  pure subroutine csf_depth_table(kern, tab)
-    use sphjet_kernels, only: kernel_t, kernel_eval
-    type(kernel_t), intent(in) :: kern
+  !> C depends on delta/h and the kernel kind only, so the table is built with h = 1 and
+  !> serves every h (callers keep one per kind). Midpoint sums of 100 x 100 cells over the
+  !> quarter support (relative error about 1e-4).
+  pure subroutine csf_depth_table(kind, tab)
+    use sphjet_kinds, only: ip
+    use sphjet_kernels, only: kernel_t, kernel_eval, kernel_setup
+    integer(ip), intent(in) :: kind
     real(rp), intent(out) :: tab(DEPTH_TABLE_N)
     integer, parameter :: NQ = 100
+    type(kernel_t) :: kern
     real(rp) :: prof(NQ), ymid, xmid, cell, w, f, r, acc, delta, ycut
     integer :: i, j, k
+    kern = kernel_setup(kind, 1.0_rp)
     cell = 2.0_rp * kern%h / NQ
     do j = 1, NQ          ! P at the midpoints of the y cells, both signs of x
       ymid = (j - 0.5_rp) * cell
