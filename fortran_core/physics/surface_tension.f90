@@ -157,13 +157,17 @@ contains
   end subroutine csf_depth_table
 
   !> Depth below the surface from the colour, inverting the table (linear between points):
-  !> 0 for C <= C(0) = 1/2, 2h for C >= C(2h).
+  !> 0 for C <= C(0) = 1/2, 2h for C >= C(2h) (the interior: answered without the search).
   pure function csf_depth(c, tab, h) result(delta)
     real(rp), intent(in) :: c, tab(DEPTH_TABLE_N), h
     real(rp) :: delta, t
     integer :: k
     if (c <= tab(1)) then
       delta = 0.0_rp
+      return
+    end if
+    if (c >= tab(DEPTH_TABLE_N)) then
+      delta = 2.0_rp * h
       return
     end if
     do k = 2, DEPTH_TABLE_N
@@ -173,7 +177,7 @@ contains
         return
       end if
     end do
-    delta = 2.0_rp * h
+    delta = 2.0_rp * h   ! not reached: tab is increasing and c < tab(DEPTH_TABLE_N)
   end function csf_depth
 
   !> Free-surface curvature from the numerator of eq 23, the tangential denominator tden and the
