@@ -12,13 +12,15 @@ import csv
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sphjet_runs import RunError, label_and_file  # noqa: E402
+
 
 def load(spec):
-    if ":" not in spec:
-        sys.exit(f"obstacle_tables: {spec!r}: expected LABEL:CSV")
-    label, path = spec.split(":", 1)
-    if not os.path.isfile(path):
-        sys.exit(f"obstacle_tables: {label}: {path}: no such file (write it with sphjet analyse)")
+    try:
+        label, path = label_and_file(spec)
+    except RunError as e:
+        sys.exit(f"obstacle_tables: {e} (write it with sphjet analyse)")
     with open(path) as f:
         return label, [r for r in csv.DictReader(f) if r["time"]]
 

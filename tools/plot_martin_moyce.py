@@ -19,6 +19,9 @@ import csv
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sphjet_runs import RunError, label_and_file  # noqa: E402
+
 
 def read_csv_rows(path):
     with open(path) as f:
@@ -71,11 +74,10 @@ def main():
     data = read_data(args.data)
     runs = []
     for spec in args.run:
-        if ":" not in spec:
-            sys.exit(f"plot_martin_moyce: --run {spec!r}: expected LABEL:CSV")
-        label, path = spec.split(":", 1)
-        if not os.path.isfile(path):
-            sys.exit(f"plot_martin_moyce: --run {label}: {path}: no such file")
+        try:
+            label, path = label_and_file(spec)
+        except RunError as e:
+            sys.exit(f"plot_martin_moyce: --run {e}")
         runs.append((label, read_run(path)))
 
     if args.series:

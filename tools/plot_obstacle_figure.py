@@ -9,7 +9,7 @@ Usage (Debian's python3 has matplotlib):
 
 Each RUN is a run directory (legacy PART files, or sphjet PART or HDF5 output; see
 tools/sphjet_runs.py). The output nearest each time is used (within --tol); its time is printed
-in the panel. Exits with status 2 and a message naming the directory when an input is missing.
+in the panel. Exits with status 1 and a message naming the directory when an input is missing.
 """
 import argparse
 import io

@@ -11,7 +11,7 @@ Usage (Debian's python3 has matplotlib and h5py):
 Top row: the fluid of RUN (HDF5 snapshots) at the output nearest each time, coloured by
 pressure, with the circle of the same area as the first snapshot (dashed); a run to 0.4 s
 writes its last output at 0.39 s (outputs are written on the legacy schedule). Bottom: r_ratio of
-each CSV against time and the target. Exits with status 2 and a message naming the input when
+each CSV against time and the target. Exits with status 1 and a message naming the input when
 one is missing or has no r_ratio column.
 """
 import argparse
@@ -21,24 +21,20 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sphjet_runs import Run, RunError  # noqa: E402
+from sphjet_runs import Run, RunError, label_and_file  # noqa: E402
 
 
 def die(msg):
-    print(f"plot_square_drop: {msg}", file=sys.stderr)
-    sys.exit(2)
+    sys.exit(f"plot_square_drop: {msg}")
 
 
 def read_ratio(path):
     """`sphjet drop --csv` table -> (times, r_ratio) lists."""
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        die(f"--ratio {path}: {e.strerror}")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
     if not rows or "r_ratio" not in rows[0] or "time" not in rows[0]:
         die(f"--ratio {path}: expected a `sphjet drop --csv` table with "
-                 f"columns time and r_ratio, found {list(rows[0]) if rows else 'no rows'}")
+            f"columns time and r_ratio, found {list(rows[0]) if rows else 'no rows'}")
     return [float(r["time"]) for r in rows], [float(r["r_ratio"]) for r in rows]
 
 
@@ -74,9 +70,10 @@ def main():
         die(f"{e}")
     series = []
     for spec in args.ratio:
-        label, sep, path = spec.rpartition(":")
-        if not sep or not label:
-            die(f"--ratio {spec!r}: expected LABEL:CSV")
+        try:
+            label, path = label_and_file(spec)
+        except RunError as e:
+            die(f"--ratio {e}")
         series.append((label, *read_ratio(path)))
 
     first = frames[0]

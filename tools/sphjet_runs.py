@@ -21,6 +21,17 @@ class RunError(Exception):
     pass
 
 
+def label_and_file(spec):
+    """A command-line 'LABEL:FILE' (a curve's legend and the CSV behind it) -> (label, file);
+    split at the first ':'. RunError naming the spec when it is malformed or the file missing."""
+    label, sep, path = spec.partition(":")
+    if not sep or not label or not path:
+        raise RunError(f"{spec!r}: expected LABEL:CSV")
+    if not os.path.isfile(path):
+        raise RunError(f"{label}: {path}: no such file")
+    return label, path
+
+
 def _read_part(path):
     """PART file -> (n, 7) array. Fixed width 16, so '-0.1E-01-0.2E+00' still parses."""
     rows = []
