@@ -37,6 +37,10 @@ module sphjet_types
     real(c_double) :: dom_zmin = 0.0_rp, dom_zmax = 0.0_rp
     real(c_double) :: rho_min = 0.0_rp, rho_max = 0.0_rp    !< sane density band [kg/m^3]
     real(c_double) :: dt_min = 0.0_rp        !< a step below this is a collapse [s]
+    real(c_double) :: gate_vx = 0.0_rp       !< moving boundary (gate) velocity from gate_t_start [m/s]
+    real(c_double) :: gate_vz = 0.0_rp
+    real(c_double) :: gate_t_start = 0.0_rp  !< time the gate starts moving [s]
+    real(c_double) :: gate_z_cap = 0.0_rp    !< a gate particle rises no higher [m]
   end type sph_params_t
 
   !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in
@@ -63,6 +67,7 @@ module sphjet_types
   !> What one step did (C struct sph_step_info_t).
   type, bind(C) :: sph_step_info_t
     real(c_double) :: dt = 0.0_rp        !< in: step to take; out: step taken [s]
+    real(c_double) :: time = 0.0_rp      !< in: time at the start of the step [s]
     real(c_double) :: dt_next = 0.0_rp   !< step for the next call [s]
     real(c_double) :: dt_f = 0.0_rp, dt_cv = 0.0_rp, dt_new = 0.0_rp  !< last CFL terms [s]
     real(c_double) :: visc_dt = 0.0_rp   !< max_ab (u_ab . r_ab)/(r^2 + eta^2) [1/s]

@@ -37,7 +37,7 @@ void run_gen(const GenOptions& o) {
         throw InputError(dir.string(), "the output path is not a directory", "a directory (or nothing)",
                          "a file");
     if (!o.force) {
-        for (const char* name : {"IPART", "INDAT", "NORMALS.init"})
+        for (const char* name : {"IPART", "INDAT", "NORMALS.init", "gate"})
             if (fs::exists(dir / name))
                 throw InputError((dir / name).string(), "the output directory already holds generated files",
                                  "a new or empty directory, or --force to overwrite", "an existing " +
@@ -55,6 +55,12 @@ void run_gen(const GenOptions& o) {
         fs::remove(dir / "NORMALS.init", ec);  // a stale one from an earlier repulsive case
     }
     write_indat(dir / "INDAT", st.params, ps.size(), ps.nb, ps.nbf, st.legacy);
+    const bool gate = ps.nbf < ps.nb;
+    if (gate) {
+        write_gate(dir / "gate", st.params, ps.nb, ps.nbf);
+    } else {
+        fs::remove(dir / "gate", ec);  // a stale one from an earlier case with a gate
+    }
 
     std::cout << fmt::format("sphjet gen: {} -> {}\n", o.case_file, dir.string());
     std::cout << fmt::format("  particles: np = {}  (boundary nb = {}, fixed nbf = {}, fluid = {})\n", ps.size(),
@@ -64,7 +70,7 @@ void run_gen(const GenOptions& o) {
     std::cout << fmt::format("  boundary: {}   kernel: {}   lattice: {}\n", to_string(st.params.boundary),
                              to_string(st.params.kernel),
                              st.params.lattice == Lattice::BodyCentred ? "BCC" : "SC");
-    std::cout << "  wrote IPART, INDAT" << (repulsive ? ", NORMALS.init" : "") << "\n";
+    std::cout << "  wrote IPART, INDAT" << (repulsive ? ", NORMALS.init" : "") << (gate ? ", gate" : "") << "\n";
     for (const std::string& w : spec.warnings) std::cerr << "sphjet gen: warning: " << w << "\n";
 }
 

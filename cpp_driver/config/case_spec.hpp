@@ -34,6 +34,18 @@ struct WallSpec {
     double x = 0, height = 0;
 };
 
+// Legacy "Add gate": a vertical column of moving boundary particles at x, z = k dz for
+// k = nint(zmin/dz) .. nint(zmax/dz), at rest until t_start, then moving with (vx, vz); each
+// particle stops rising at the top of the initial particles plus 0.1 h (SPHysics' zmax_ini).
+// With repulsive walls (modern format only) it is one wall line whose normal faces `facing`
+// (-1: the fluid stands on its left, -x; +1: on its right).
+struct GateSpec {
+    double x = 0, zmin = 0, zmax = 0;
+    double vx = 0, vz = 0;
+    double t_start = 0;
+    int facing = -1;
+};
+
 // What a legacy case file carries that the simulation does not use but INDAT records
 // (so that gen -> INDAT -> read_indat keeps them).
 struct LegacyRunInfo {
@@ -90,6 +102,7 @@ struct CaseSpec {
     std::vector<FluidSquare> fluid_squares;
     OutputSpec output;
     std::vector<WallSpec> walls;  // legacy "Add wall" (dynamic boundaries)
+    std::vector<GateSpec> gates;  // legacy "Add gate": at most one (legacy moves only the first)
     LegacyRunInfo legacy;
     // True for a legacy case file: fluid blocks are filled exactly as SPHYSICSgen2D fills them
     // (from the floor up, whatever ZMin says, and never above h_SWL). False: blocks, squares

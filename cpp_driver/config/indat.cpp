@@ -220,6 +220,15 @@ void write_ipart(const fs::path& path, const ParticleSet& ps) {
     write_atomically(path, s);
 }
 
+void write_gate(const fs::path& path, const SimParams& params, std::size_t nb, std::size_t nbf) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path.string(), "cannot write the gate file", "a writable place", "open failed");
+    out.precision(17);
+    out << "1\n" << nbf + 1 << "\n" << nb << "\n" << params.gate_vx << " " << params.gate_vz << "\n"
+        << params.gate_t_start << "\n";
+    if (!out) throw InputError(path.string(), "cannot write the gate file", "a writable place", "write failed");
+}
+
 void write_normals(const fs::path& path, const ParticleSet& ps) {
     if (ps.wall.size() != ps.nb)
         throw InputError(path.string(), "no wall links for the boundary particles",
@@ -333,9 +342,9 @@ InitialState read_indat(const fs::path& indat) {
     if (np < 1 || nb < 0 || nb > np)
         throw InputError(at(27), "invalid particle counts", "0 <= nb <= np and np >= 1",
                          "np = " + std::to_string(np) + ", nb = " + std::to_string(nb));
-    if (nbf != nb)
-        throw InputError(at(28), "unsupported moving boundary particles (sphjet does not implement them)",
-                         "nbf = nb = " + std::to_string(nb), "nbf = " + std::to_string(nbf));
+    if (nbf < 0 || nbf > nb)
+        throw InputError(at(28), "invalid particle counts", "0 <= nbf <= nb = " + std::to_string(nb),
+                         "nbf = " + std::to_string(nbf));
     p.variable_dt = one_of(29, {0, 1}, "0 or 1") == 1;
     p.dt = positive(30);
     p.tmax = positive(31);
@@ -389,6 +398,38 @@ InitialState read_indat(const fs::path& indat) {
                              "np = " + std::to_string(np) + " lines", "more");
     ps.nb = static_cast<std::size_t>(nb);
     ps.nbf = static_cast<std::size_t>(nbf);
+
+    // gate (moving boundary particles nbf+1..nb): the legacy generator's gate record.
+    if (nbf < nb) {
+        const fs::path gate = indat.parent_path() / "gate";
+        const std::string needed = " (gate, needed beside " + file + " when nbf = " + std::to_string(nbf) +
+                                   " < nb = " + std::to_string(nb) + ": the moving boundary particles of a gate)";
+        const auto gl = read_lines(gate, needed);
+        std::vector<std::vector<std::string>> rec;
+        for (const auto& l : gl)
+            if (auto t = tokens(l); !t.empty()) rec.push_back(t);
+        const auto g_at = [&](std::size_t r) { return gate.string() + ": record " + std::to_string(r + 1); };
+        const std::size_t sizes[5] = {1, 1, 1, 2, 1};
+        for (std::size_t r = 0; r < 5; ++r)
+            if (r >= rec.size() || rec[r].size() < sizes[r])
+                throw InputError(g_at(r), "malformed gate file", "5 records: 1, ngate_ini, ngate_end, \"Vx Vz\", tgate",
+                                 r >= rec.size() ? "end of file" : std::to_string(rec[r].size()) + " value(s)");
+        const long opt = parse_int(rec[0][0], g_at(0), "iopt_gate");
+        const long g0 = parse_int(rec[1][0], g_at(1), "ngate_ini");
+        const long g1 = parse_int(rec[2][0], g_at(2), "ngate_end");
+        if (opt != 1 || g0 != nbf + 1 || g1 != nb)
+            throw InputError(gate.string(), "unsupported moving boundary particles (only one gate, the particles "
+                                            "nbf+1..nb, is implemented)",
+                             "1, " + std::to_string(nbf + 1) + ", " + std::to_string(nb),
+                             std::to_string(opt) + ", " + std::to_string(g0) + ", " + std::to_string(g1));
+        p.gate_vx = parse_real(rec[3][0], g_at(3), "VXgate");
+        p.gate_vz = parse_real(rec[3][1], g_at(3), "VZgate");
+        p.gate_t_start = parse_real(rec[4][0], g_at(4), "tgate");
+        if (!(std::isfinite(p.gate_vx) && std::isfinite(p.gate_vz) && p.gate_t_start >= 0))
+            throw InputError(gate.string(), "invalid gate motion", "finite Vx, Vz and tgate >= 0",
+                             rec[3][0] + ", " + rec[3][1] + ", " + rec[4][0]);
+        p.gate_z_cap = *std::max_element(ps.z.begin(), ps.z.end()) + 0.1 * p.h;
+    }
 
     // NORMALS.init (repulsive boundaries): the wall links.
     if (p.boundary == BoundaryType::Repulsive) {

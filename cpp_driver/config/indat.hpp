@@ -32,9 +32,15 @@ void write_ipart(const std::filesystem::path& path, const ParticleSet& particles
 // NORMALS.init from the boundary particles' wall links (particles.wall, size nb).
 void write_normals(const std::filesystem::path& path, const ParticleSet& particles);
 
-// Reads INDAT, the IPART beside it and, for repulsive boundaries, the NORMALS.init beside it.
+// The legacy generator's `gate` file, written only when the case has a gate (nbf < nb): the
+// lines 1 (a gate), nbf + 1 and nb (its first and last particle, 1-based), "vx vz", t_start.
+void write_gate(const std::filesystem::path& path, const SimParams& params, std::size_t nb, std::size_t nbf);
+
+// Reads INDAT, the IPART beside it and, for repulsive boundaries, the NORMALS.init beside it;
+// with moving boundary particles (nbf < nb, a legacy gate) the `gate` file beside it, and
+// gate_z_cap = the top of the IPART particles + 0.1 h, as SPHysics sets its zmax_ini.
 // Options sphjet does not implement (other integrators, EoS, Riemann solvers, kernel
-// correction, periodicity, restart, moving boundary particles nbf < nb) are refused like the
+// correction, periodicity, restart, moving boundaries that are not one gate) are refused like the
 // legacy case reader refuses them; missing, short or malformed files give an InputError
 // naming the file and line. Values are taken as printed (0.3 reads as 0.300000012).
 // Particles: kinds from nb and nbf, ids 0..np-1, all active.

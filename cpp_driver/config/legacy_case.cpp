@@ -447,7 +447,32 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
 
     if (const long v = a.integer("add wavemaker"); v != 0)
         a.refuse("add wavemaker", v, v == 1 ? "wavemaker" : "", "0 (no wavemaker)");
-    if (const long v = a.integer("add gate"); v != 0) a.refuse("add gate", v, v == 1 ? "gate" : "", "0 (no gate)");
+    // Gate: SPHYSICSgen2D's "Add gate inside the box", then X, "ZZmin,ZZmax", "Vx,Vz", tgate,
+    // then "Add another gate". Legacy SPHysics moves only the first gate (its solver reads
+    // one gate record), so a second one is refused rather than silently frozen.
+    if (a.flag("add gate")) {
+        if (p.boundary == BoundaryType::Repulsive)
+            throw InputError(a.where(), "unsupported add gate with repulsive boundaries (the legacy "
+                                        "generator gives a gate no neighbour links)",
+                             "0 (no gate) with boundary conditions 1, or boundary conditions 2", "1");
+        GateSpec g;
+        g.x = a.real("gate position X");
+        if (!(g.x >= 0 && g.x <= p.lx)) a.invalid("gate position X", num(g.x), "0 <= X <= LX = " + num(p.lx));
+        const auto z = a.reals("gate ZZmin,ZZmax", {"ZZmin", "ZZmax"});
+        g.zmin = z[0], g.zmax = z[1];
+        if (!(g.zmin >= 0 && g.zmin <= g.zmax && g.zmax <= p.lz))
+            a.invalid("gate ZZmin,ZZmax", num(g.zmin) + ", " + num(g.zmax), "0 <= ZZmin <= ZZmax <= LZ = " + num(p.lz));
+        const auto v = a.reals("gate velocity Vx,Vz", {"Vx", "Vz"});
+        g.vx = v[0], g.vz = v[1];
+        if (!(std::isfinite(g.vx) && std::isfinite(g.vz)))
+            a.invalid("gate velocity Vx,Vz", num(g.vx) + ", " + num(g.vz), "finite velocities [m/s]");
+        g.t_start = a.real("gate start time tgate");
+        if (!(g.t_start >= 0)) a.invalid("gate start time tgate", num(g.t_start), "a time >= 0 [s]");
+        spec.gates.push_back(g);
+        if (const long more = a.integer("add another gate"); more != 0)
+            a.refuse("add another gate", more, more == 1 ? "a second gate; legacy SPHysics moves only the first" : "",
+                     "0 (one gate)");
+    }
     if (const long v = a.integer("add floating body"); v != 0)
         a.refuse("add floating body", v, v == 1 ? "floating bodies" : "", "0 (no floating body)");
 

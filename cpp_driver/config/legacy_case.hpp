@@ -7,8 +7,9 @@
 // Supported: new runs; kernels 1, 2, 3, 5; predictor-corrector; filters 0, 1, 2; artificial
 // and laminar viscosity; Tait EoS; repulsive (1) and dynamic (2) boundaries; BOX geometry
 // with a flat floor and no periodicity; "Add wall" (dynamic boundaries); rectangular
-// obstacles (solid with dynamic boundaries, with walls with either); fill regions on an SC
-// or BCC lattice. Everything else (restart, BEACH or external geometry, wavemaker, gate,
+// obstacles (solid with dynamic boundaries, with walls with either); one gate (dynamic
+// boundaries); fill regions on an SC or BCC lattice. Everything else (restart, BEACH or
+// external geometry, wavemaker, a second gate,
 // floating bodies, Riemann solvers, kernel correction, SPS, other EoS and integrators,
 // trapezoids, an inclined floor, boundary pressure correction, particle sets or drops as
 // initial condition) is refused with an InputError naming file:line, the option, what was

@@ -152,6 +152,14 @@ constexpr KeySpec kKeys[] = {
     {"obstacle[].zmin", Kind::Float},
     {"obstacle[].zmax", Kind::Float},
     {"obstacle[].beta_deg", Kind::Float},
+    // [gate]: legacy "Add gate"
+    {"gate.x", Kind::Float},
+    {"gate.zmin", Kind::Float},
+    {"gate.zmax", Kind::Float},
+    {"gate.vx", Kind::Float},
+    {"gate.vz", Kind::Float},
+    {"gate.t_start", Kind::Float},
+    {"gate.facing", Kind::String},
     // [[wall]]: legacy "Add wall"
     {"wall[].x", Kind::Float},
     {"wall[].height", Kind::Float},
@@ -1096,6 +1104,25 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         spec.walls.push_back(w);
     }
 
+    // [gate]
+    if (top.has("gate")) {
+        const Section s = top.sub("gate");
+        GateSpec g;
+        const auto x = s.required_num("x", "the gate position [m]");
+        const auto zmin = s.required_num("zmin", "the bottom of the gate [m]");
+        const auto zmax = s.required_num("zmax", "the top of the gate [m]");
+        inside(x, box.lx, "x", "gate");
+        inside(zmin, box.lz, "z", "gate");
+        inside(zmax, box.lz, "z", "gate");
+        if (!(zmax.value >= zmin.value)) fail(zmax, "empty gate", "zmax >= zmin = " + num(zmin.value));
+        g.x = x.value, g.zmin = zmin.value, g.zmax = zmax.value;
+        s.get("vx", g.vx);
+        s.get("vz", g.vz);
+        if (auto f = s.num("t_start")) non_negative(*f), g.t_start = f->value;
+        if (auto f = s.string("facing")) g.facing = choose<int>(*f, {{"left", -1}, {"right", 1}});
+        spec.gates.push_back(g);
+    }
+
     // Fluid regions
     for (const Section& s : fluid.array_of_tables("block")) {
         FluidBlock b;
@@ -1418,6 +1445,17 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("zmin", num(o.r.zmin), "m");
         s += line("zmax", num(o.r.zmax), "m");
         s += line("beta_deg", num(o.beta_deg), "inclination of the side walls");
+    }
+
+    for (const auto& g : spec.gates) {
+        s += "\n[gate]                          # legacy \"Add gate\": a column of moving boundary particles\n";
+        s += line("x", num(g.x), "position [m]");
+        s += line("zmin", num(g.zmin), "bottom [m]");
+        s += line("zmax", num(g.zmax), "top [m]");
+        s += line("vx", num(g.vx), "velocity from t_start [m/s]");
+        s += line("vz", num(g.vz), "m/s; each particle stops at the top of the initial particles + 0.1 h");
+        s += line("t_start", num(g.t_start), "s");
+        s += line("facing", str(g.facing > 0 ? "right" : "left"), "side of the fluid (repulsive walls): left | right");
     }
 
     for (const auto& w : spec.walls) {

@@ -61,6 +61,11 @@ struct SimParams {
     double gx = 0.0, gz = -9.81;       // gravity [m/s^2]
     double sigma = 0.0;                // surface tension coefficient [N/m]; 0 = off
     SurfaceTensionDelta st_delta = SurfaceTensionDelta::PressureConsistent;
+    // Moving boundary particles (a legacy gate, CaseSpec::gates): from t >= gate_t_start they
+    // move with (gate_vx, gate_vz), each stopping at z = gate_z_cap; at rest before.
+    double gate_vx = 0.0, gate_vz = 0.0;  // [m/s]
+    double gate_t_start = 0.0;            // [s]
+    double gate_z_cap = 0.0;              // [m]; the generator sets it (top particle + 0.1 h)
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -180,7 +180,7 @@ RunSummary run_simulation(const RunOptions& opts) {
                 if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
                     name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
                     name == "case.toml" || name == "INDAT" || name == "IPART" ||
-                    name == "NORMALS.init")
+                    name == "NORMALS.init" || name == "gate")
                     fs::remove(e.path());
             }
         }
@@ -197,6 +197,7 @@ RunSummary run_simulation(const RunOptions& opts) {
         write_indat(dir / "INDAT", prm, particles.size(), particles.nb, particles.nbf, spec.legacy);
         write_ipart(dir / "IPART", particles);
         if (prm.boundary == BoundaryType::Repulsive) write_normals(dir / "NORMALS.init", particles);
+        if (particles.nbf < particles.nb) write_gate(dir / "gate", prm, particles.nb, particles.nbf);
     }
 
     if (opts.threads > 0) Solver::set_threads(opts.threads);

@@ -55,6 +55,10 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.rho_min = out.rho_min_factor * p.rho0;
     c.rho_max = out.rho_max_factor * p.rho0;
     c.dt_min = out.dt_min;
+    c.gate_vx = p.gate_vx;
+    c.gate_vz = p.gate_vz;
+    c.gate_t_start = p.gate_t_start;
+    c.gate_z_cap = p.gate_z_cap;
     return c;
 }
 
@@ -177,6 +181,7 @@ void Solver::fail(int status, std::int64_t particle, const std::string& where) c
 StepReport Solver::step() {
     sph_step_info_t info{};
     info.dt = state_.dt;
+    info.time = state_.time;
     info.dbc_counter = state_.dbc_counter;
     const int status = sph_step(ws_, &prm_, &arr_, &info);
     if (status == SPH_ERR_DT_COLLAPSE) {

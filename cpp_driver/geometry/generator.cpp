@@ -31,6 +31,7 @@ public:
         box_walls();
         for (const WallSpec& w : spec_.walls) inner_wall(w);
         for (const ObstacleSpec& o : spec_.obstacles) obstacle(o);
+        for (const GateSpec& g : spec_.gates) gate(g);
         boundary_density_and_mass();
 
         if (spec_.legacy_fill) {
@@ -74,6 +75,13 @@ public:
                              "particle " + std::to_string(i + 1) + " at x = " + std::to_string(ps_.x[i]) +
                                  ", z = " + std::to_string(ps_.z[i]) + ": rho = " + std::to_string(ps_.rho[i]) +
                                  ", p = " + std::to_string(ps_.p[i]) + ", m = " + std::to_string(ps_.m[i]));
+        }
+
+        if (!spec_.gates.empty()) {
+            // SPHysics' zmax_ini: the top of the initial particles plus 0.1 h.
+            const GateSpec& g = spec_.gates.front();
+            p_.gate_vx = g.vx, p_.gate_vz = g.vz, p_.gate_t_start = g.t_start;
+            p_.gate_z_cap = *std::max_element(ps_.z.begin(), ps_.z.end()) + 0.1 * p_.h;
         }
 
         InitialState s;
@@ -168,6 +176,27 @@ private:
             boundary(w.x, k * p_.dz);
             if ((k + 0.5) * p_.dz <= w.height) boundary(w.x + 0.5 * p_.dx, (k + 0.5) * p_.dz);
         }
+    }
+
+    // Legacy "Add gate": one column of moving boundary particles at x, z = k dz for
+    // k = nint(zmin/dz) .. nint(zmax/dz) (SPHYSICSgen2D's gate; its staggered second column
+    // is empty there, YYmax = 0). Repulsive walls: one wall line, linked so that its normal
+    // faces the fluid (bottom to top for facing -1, the right wall's orientation).
+    void gate(const GateSpec& g) {
+        if (spec_.gates.size() > 1)
+            throw InputError(spec_.source, "more than one gate", "at most one gate (legacy moves only the first)",
+                             std::to_string(spec_.gates.size()));
+        const std::size_t first = ps_.size();
+        const long k0 = nint(g.zmin / p_.dz), k1 = nint(g.zmax / p_.dz);
+        for (long k = k0; k <= k1; ++k) {
+            ps_.push(g.x, k * p_.dz, 0, 0, 0, 0, 0, ParticleKind::MovingBoundary);
+            ps_.nb = ps_.size();
+            if (repulsive_) links_.push_back({});
+        }
+        if (ps_.size() == first)
+            throw InputError(spec_.source, "the gate holds no particle", "zmin <= zmax",
+                             std::to_string(g.zmin) + ", " + std::to_string(g.zmax));
+        if (repulsive_) link_line(first, ps_.size() - first, g.facing > 0);
     }
 
     void obstacle(const ObstacleSpec& o) {

@@ -2,7 +2,7 @@
 // shapes of the modern format.
 //
 // Order and placement follow SPHYSICSgen2D exactly (legacy order: fixed boundary particles,
-// then fluid; no moving boundaries are generated, so nbf = nb):
+// then the moving ones of a gate, then fluid; nbf = nb without a gate):
 //   1. box walls: left (x = 0), right (x = N dx), bottom (z = 0), where N = nint(LX/dx).
 //      Dynamic boundaries: two staggered layers per wall (inner layer on the wall line, outer
 //      layer half a spacing outside and half a spacing lower / further). Repulsive boundaries:
@@ -13,7 +13,10 @@
 //   3. obstacles: rectangles (optionally with inclined sides) on a lattice of dx/ndens;
 //      solid (dynamic) or outline walls (two staggered layers for dynamic, one line with
 //      links for repulsive boundaries).
-//   4. fluid: per region, columns in x, and per column rows in z; at each lattice node the
+//   4. a gate (legacy "Add gate"): one column of moving boundary particles (nbf < nb), and
+//      the gate's motion into SimParams (gate_z_cap = top of the initial particles + 0.1 h,
+//      SPHysics' zmax_ini); with repulsive walls one wall line with links (modern format).
+//   5. fluid: per region, columns in x, and per column rows in z; at each lattice node the
 //      SC point and then (BCC) the point offset by (dx/2, dz/2).
 // Density and mass: boundaries rho0 with p = 0 and mass 0.5 rho0 dx dz (dynamic, two layers)
 // or rho0 dx dz (repulsive). Fluid: hydrostatic rho = rho0 (1 + rho0 g (zref - z)/B)^(1/gamma),

@@ -492,6 +492,10 @@ void visit_params(P& p, F&& f) {
     f("gz", p.gz, "m/s^2");
     f("sigma", p.sigma, "N/m");
     f("st_delta", p.st_delta, nullptr);
+    f("gate_vx", p.gate_vx, "m/s");
+    f("gate_vz", p.gate_vz, "m/s");
+    f("gate_t_start", p.gate_t_start, "s");
+    f("gate_z_cap", p.gate_z_cap, "m");
 }
 
 std::string enum_name(KernelType v) { return to_string(v); }
@@ -539,7 +543,10 @@ SimParams read_params(hid_t loc) {
         using T = std::decay_t<decltype(v)>;
         // Added after files were first written: files without it keep the default (for
         // st_delta the pressure-consistent delta, the only model older builds had).
-        if (std::string_view(name) == "st_delta" && !has_attr(loc, name)) return;
+        // The gate_* fields likewise (no moving boundary particles before them).
+        if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_")) &&
+            !has_attr(loc, name))
+            return;
         if constexpr (std::is_enum_v<T>) {
             v = static_cast<T>(read_attr_int64(loc, name));
             if (enum_name(v) == "unknown") {

@@ -52,6 +52,10 @@ typedef struct sph_params_t {
     double rho_min;           /* sane density band [kg/m^3]; rho_max <= 0 disables */
     double rho_max;
     double dt_min;            /* a step below this is a collapse [s] */
+    double gate_vx;           /* moving boundary (gate) velocity from gate_t_start [m/s] */
+    double gate_vz;
+    double gate_t_start;      /* time the gate starts moving [s] */
+    double gate_z_cap;        /* a gate particle rises no higher [m] */
 } sph_params_t;
 
 typedef struct sph_arrays_t {
@@ -91,6 +95,7 @@ typedef struct sph_arrays_t {
 
 typedef struct sph_step_info_t {
     double dt;                /* in: step to take [s] */
+    double time;              /* in: time at the start of the step [s] */
     double dt_next;           /* out: step for the next call [s] */
     double dt_f;              /* out: force and CFL time-step terms of the corrector [s] */
     double dt_cv;

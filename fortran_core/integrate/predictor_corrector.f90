@@ -9,7 +9,7 @@
 !> then advances its clock by that new step, not by the one just taken (this fork advances
 !> by the step taken; the driver keeps the legacy clock too, for comparisons).
 module predictor_corrector
-  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, BC_DYNAMIC, SPH_OK
+  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
@@ -62,6 +62,9 @@ contains
     if (prm%variable_dt /= 0) then
       call cfl_time_step(prm, st, vmax, dtf, dtcv, dt_p)
     end if
+    ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
+    ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
+    ! barrier costs a thread wake-up, a large share of a small case's step.
     !$omp parallel do schedule(static)
     do i = 1, n
       st%xo(i) = st%x(i)
@@ -69,9 +72,9 @@ contains
       st%uo(i) = st%u(i)
       st%wo(i) = st%w(i)
       st%rhoo(i) = st%rho(i)
+      if (i > nb) call advance_one(prm, st, i, dt2)
     end do
     !$omp end parallel do
-    call advance_fluid(prm, st, dt2)
     dbc_now = .false.
     if (dbc) then
       info%dbc_counter = info%dbc_counter + 1
@@ -93,18 +96,22 @@ contains
       info%dt_cv = dtcv
       info%dt_new = dt_c
     end if
-    call advance_fluid(prm, st, dt2)
+    ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
+    ! non-boundary particle, in one pass (one barrier instead of three).
     !$omp parallel do schedule(static)
     do i = nb + 1, n
-      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
-      st%rho(i) = 2.0_rp * st%rho(i) - st%rhoo(i)
-      st%x(i) = 2.0_rp * st%x(i) - st%xo(i)
-      st%z(i) = 2.0_rp * st%z(i) - st%zo(i)
-      st%u(i) = 2.0_rp * st%u(i) - st%uo(i)
-      st%w(i) = 2.0_rp * st%w(i) - st%wo(i)
+      call advance_one(prm, st, i, dt2)
+      if (st%active(i) /= 0 .and. st%kind(i) == KIND_FLUID) then
+        st%rho(i) = 2.0_rp * st%rho(i) - st%rhoo(i)
+        st%x(i) = 2.0_rp * st%x(i) - st%xo(i)
+        st%z(i) = 2.0_rp * st%z(i) - st%zo(i)
+        st%u(i) = 2.0_rp * st%u(i) - st%uo(i)
+        st%w(i) = 2.0_rp * st%w(i) - st%wo(i)
+      end if
+      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
+      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
     end do
     !$omp end parallel do
-    call update_eos(prm, st, nb + 1, n)
     if (dbc_now) then
       do i = 1, nb
         st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
@@ -113,6 +120,8 @@ contains
       call update_eos(prm, st, 1, nb)
     end if
 
+    call move_gate(prm, st, info%time, dt)
+
     info%visc_dt = vmax
     info%dt_next = merge(min(dt_p, dt_c), dt, prm%variable_dt /= 0)
     call check_domain(prm, st, info%n_removed, info%bad_particle, status)
@@ -120,25 +129,40 @@ contains
     if (status /= SPH_OK) return
   end subroutine pc_step
 
-  !> Half step of the fluid from the start-of-step values with the current rates:
-  !> rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g); then EoS.
-  subroutine advance_fluid(prm, st, dt2)
+  !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'
+  !> movingGate does: from t >= gate_t_start by (gate_vx, gate_vz) dt, z capped at
+  !> gate_z_cap, velocity set to the gate's (it enters the pair forces); at rest before.
+  subroutine move_gate(prm, st, time, dt)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
-    real(rp), intent(in) :: dt2
+    real(rp), intent(in) :: time, dt
     integer :: i
-    !$omp parallel do schedule(static)
-    do i = st%nb + 1, st%n
-      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
-      st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
-      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
-      st%x(i) = st%xo(i) + dt2 * (st%u(i) + st%xsph_u(i))
-      st%z(i) = st%zo(i) + dt2 * (st%w(i) + st%xsph_w(i))
-      st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gx)
-      st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gz)
+    if (time < prm%gate_t_start) return
+    do i = 1, st%nb
+      if (st%kind(i) /= KIND_MOVING_BOUNDARY) cycle
+      st%x(i) = st%x(i) + prm%gate_vx * dt
+      st%z(i) = min(st%z(i) + prm%gate_vz * dt, prm%gate_z_cap)
+      st%u(i) = prm%gate_vx
+      st%w(i) = prm%gate_vz
     end do
-    !$omp end parallel do
-  end subroutine advance_fluid
+  end subroutine move_gate
+
+  !> Half step of fluid particle i (nothing for another particle or an inactive one) from its
+  !> start-of-step values with the current rates: rho = rho^n + dt2 drho/dt,
+  !> r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g); then p and c from the EoS.
+  subroutine advance_one(prm, st, i, dt2)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    integer, intent(in) :: i
+    real(rp), intent(in) :: dt2
+    if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) return
+    st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
+    st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
+    st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+    st%x(i) = st%xo(i) + dt2 * (st%u(i) + st%xsph_u(i))
+    st%z(i) = st%zo(i) + dt2 * (st%w(i) + st%xsph_w(i))
+    st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gx)
+    st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gz)
+  end subroutine advance_one
 
 end module predictor_corrector

@@ -161,17 +161,11 @@ contains
 
     if (prm%sigma > 0.0_rp) call surface_tension_rates(prm, kern, st, s)
 
-    ! scatter back to particle order; inactive particles get zero rates
-    !$omp parallel do schedule(static)
-    do i = 1, st%n
-      st%ax(i) = 0.0_rp
-      st%az(i) = 0.0_rp
-      st%ar(i) = 0.0_rp
-      st%xsph_u(i) = 0.0_rp
-      st%xsph_w(i) = 0.0_rp
-    end do
-    !$omp end parallel do
-    !$omp parallel do schedule(static) private(i)
+    ! Scatter back to particle order; inactive particles get zero rates. The sorted slots are
+    ! exactly the active particles, so the two loops write disjoint entries and need no
+    ! barrier between them (nowait): one barrier per scatter, not two.
+    !$omp parallel private(i)
+    !$omp do schedule(static)
     do k = 1, n
       i = s%grid%order(k)
       st%ax(i) = s%ax(k)
@@ -180,7 +174,18 @@ contains
       st%xsph_u(i) = prm%xsph_eps * s%xu(k)
       st%xsph_w(i) = prm%xsph_eps * s%xw(k)
     end do
-    !$omp end parallel do
+    !$omp end do nowait
+    !$omp do schedule(static)
+    do i = 1, st%n
+      if (st%active(i) /= 0) cycle
+      st%ax(i) = 0.0_rp
+      st%az(i) = 0.0_rp
+      st%ar(i) = 0.0_rp
+      st%xsph_u(i) = 0.0_rp
+      st%xsph_w(i) = 0.0_rp
+    end do
+    !$omp end do
+    !$omp end parallel
   end subroutine compute_rates
 
 end module rates

@@ -8,7 +8,8 @@
 !>       wall neighbour on that side (the force stays constant while sliding along the wall),
 !>   eps = eps_z + eps_dyn: depth correction (1 near the bottom, 0.02 + |1 - z/h_SWL| + dynamic
 !>       head below still water, 0.02 + dynamic head above) and eps_dyn = min(40 |u_n|/c0, 1)
-!>       for approaching particles.
+!>       for approaching particles. The dynamic head is that of the wall's normal velocity
+!>       (legacy: its whole velocity; the same for walls at rest, see below).
 !> beta = coef/10 scales the force with the speed-of-sound coefficient of the case.
 module repulsive_wall
   use sphjet_kinds, only: rp, pi
@@ -49,7 +50,11 @@ contains
     end if
 
     eps_z = abs(1.0_rp - z_wall / h_swl)
-    dyn_head = (u_wall * u_wall + w_wall * w_wall) / (2.0_rp * abs(g) * h_swl)
+    ! Dynamic head of the wall's motion along its normal (a wall pushing into the water). Legacy
+    ! squares the whole wall velocity; the only moving walls here are gates, which slide along
+    ! themselves, and that velocity would scale the push by 1 + v^2 / (2 g h_SWL) (x5 for a
+    ! 3 m/s gate in a 0.11 m column) and throw the water through a fast gate. Walls at rest: same.
+    dyn_head = (u_wall * nx + w_wall * nz)**2 / (2.0_rp * abs(g) * h_swl)
     if (eps_z > 1.0_rp - eps_min) then
       eps_z = 1.0_rp
     else if (z_fluid > h_swl) then
@@ -88,8 +93,13 @@ contains
     tx = xnext - xprev
     tz = znext - zprev
     len = sqrt(tx * tx + tz * tz)
-    nx = -tz / len
-    nz = tx / len
+    if (len > 0.0_rp) then
+      nx = -tz / len
+      nz = tx / len
+    else  ! neighbours on top of each other (a gate stacked at its cap): no normal, no push
+      nx = 0.0_rp
+      nz = 0.0_rp
+    end if
     dback = sqrt((x - xprev)**2 + (z - zprev)**2)
     dfwd = sqrt((xnext - x)**2 + (znext - z)**2)
     if (dback <= 0.0_rp) dback = 1.0e-3_rp * h

@@ -111,6 +111,10 @@ SimParams unusual_params() {
     p.gz = -9.80665;
     p.sigma = 0.0728;
     p.st_delta = SurfaceTensionDelta::ColourGradient;  // not the default
+    p.gate_vx = 0.01 / 3.0;
+    p.gate_vz = 1.5;
+    p.gate_t_start = 0.02;
+    p.gate_z_cap = 0.6 + 1e-3 / 7.0;
     return p;
 }
 
@@ -144,7 +148,11 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
                                {a.trec_ini, b.trec_ini},
                                {a.gx, b.gx},
                                {a.gz, b.gz},
-                               {a.sigma, b.sigma}}) {
+                               {a.sigma, b.sigma},
+                               {a.gate_vx, b.gate_vx},
+                               {a.gate_vz, b.gate_vz},
+                               {a.gate_t_start, b.gate_t_start},
+                               {a.gate_z_cap, b.gate_z_cap}}) {
         EXPECT_EQ(bits(x), bits(y));
     }
     EXPECT_EQ(a.variable_dt, b.variable_dt);
@@ -192,7 +200,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // field to the checkpoint (visit_params in io/h5_util.cpp, visit_state in io/checkpoint.cpp)
 // and to this test, then update the sizes here.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(SimParams), 232u) << "SimParams changed: update the checkpoint";
+    EXPECT_EQ(sizeof(SimParams), 264u) << "SimParams changed: update the checkpoint";
     EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
 }
 
@@ -372,6 +380,19 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
         ASSERT_GE(H5Adelete(g, "st_delta_name"), 0);
     }
     EXPECT_EQ(read_checkpoint(dir).params.st_delta, SurfaceTensionDelta::PressureConsistent);
+
+    // So did the gate's motion: a file without it has no gate (all zero).
+    write_sample(dir);
+    {
+        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
+        for (const char* name : {"gate_vx", "gate_vz", "gate_t_start", "gate_z_cap"}) ASSERT_GE(H5Adelete(g, name), 0);
+    }
+    const SimParams old = read_checkpoint(dir).params;
+    EXPECT_EQ(old.gate_vx, 0.0);
+    EXPECT_EQ(old.gate_vz, 0.0);
+    EXPECT_EQ(old.gate_t_start, 0.0);
+    EXPECT_EQ(old.gate_z_cap, 0.0);
     fs::remove_all(dir);
 }
 

@@ -2,6 +2,7 @@
 // it, and every malformed or unsupported case gives an InputError that names the file and
 // line, the option, and what was found (tests/data/bad_cases holds one file per fault, each
 // a copy of the small valid case below with one line changed).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 
 #include "config/errors.hpp"
 #include "config/legacy_case.hpp"
+#include "geometry/generator.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;
@@ -124,6 +126,41 @@ TEST(LegacyCase, SeveralFillRegionsObstaclesAndWalls) {
     EXPECT_EQ(s.fluid_blocks.size(), 2u);
 }
 
+// Legacy "Add gate": the lines after it are read as SPHYSICSgen2D asks them, the generator
+// places one column of moving boundary particles after the fixed ones (nbf < nb) at z = k dz,
+// and the motion goes into the parameters with SPHysics' cap (top particle + 0.1 h).
+TEST(LegacyCase, GateIsReadAndPlacedAsMovingBoundary) {
+    std::string text = kValidCase;
+    const std::string from = "0                 Add gate (1=y)\n";
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, from.size(), "1  Add gate\n0.42  X\n0.0,0.5  ZZmin,ZZmax\n0.0,1.25  Vx,Vz\n0.01  tgate\n0  another\n");
+    const CaseSpec s = parse_legacy_case(text, "gate.txt");
+    ASSERT_EQ(s.gates.size(), 1u);
+    EXPECT_DOUBLE_EQ(s.gates[0].x, 0.42);
+    EXPECT_DOUBLE_EQ(s.gates[0].zmax, 0.5);
+    EXPECT_DOUBLE_EQ(s.gates[0].vz, 1.25);
+    EXPECT_DOUBLE_EQ(s.gates[0].t_start, 0.01);
+
+    const InitialState st = generate(s);
+    const ParticleSet& ps = st.particles;
+    ASSERT_EQ(ps.nb - ps.nbf, 11u);  // z = 0, 0.05, ..., 0.5
+    double ztop = 0;
+    for (std::size_t i = 0; i < ps.size(); ++i) ztop = std::max(ztop, ps.z[i]);
+    for (std::size_t k = 0; k < 11; ++k) {
+        const std::size_t i = ps.nbf + k;
+        EXPECT_EQ(ps.kind[i], static_cast<int>(ParticleKind::MovingBoundary));
+        EXPECT_DOUBLE_EQ(ps.x[i], 0.42);
+        EXPECT_NEAR(ps.z[i], 0.05 * static_cast<double>(k), 1e-12);
+        EXPECT_DOUBLE_EQ(ps.rho[i], st.params.rho0);
+    }
+    for (std::size_t i = 0; i < ps.nbf; ++i) EXPECT_EQ(ps.kind[i], static_cast<int>(ParticleKind::FixedBoundary));
+    EXPECT_EQ(ps.kind[ps.nb], static_cast<int>(ParticleKind::Fluid));
+    EXPECT_DOUBLE_EQ(st.params.gate_vz, 1.25);
+    EXPECT_DOUBLE_EQ(st.params.gate_t_start, 0.01);
+    EXPECT_DOUBLE_EQ(st.params.gate_z_cap, ztop + 0.1 * st.params.h);
+}
+
 TEST(LegacyCase, FortranStyleNumbersAreAccepted) {
     std::string text = kValidCase;
     const auto at = text.find("0.3               Viscosity value");
@@ -177,7 +214,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"floor_inclined.txt", 19, {"inclination of floor", "found 10"}},
         BadCase{"periodic_x.txt", 20, {"periodic", "0,0,0"}},
         BadCase{"wavemaker.txt", 23, {"wavemaker"}},
-        BadCase{"gate.txt", 24, {"gate"}},
+        BadCase{"gate_second.txt", 29, {"another gate", "moves only the first", "0 (one gate)"}},
+        BadCase{"gate_repulsive.txt", 24, {"gate", "repulsive", "no neighbour links"}},
+        BadCase{"gate_inverted_z.txt", 26, {"gate ZZmin,ZZmax", "0.6, 0.2", "ZZmin <= ZZmax"}},
         BadCase{"floating_body.txt", 25, {"floating bod"}},
         BadCase{"drop.txt", 26, {"initial conditions", "round drop"}},
         BadCase{"correct_pressure.txt", 27, {"correct pressure at boundaries"}},
