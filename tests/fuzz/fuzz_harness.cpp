@@ -152,21 +152,31 @@ Outcome run_legacy(std::string_view data, double generate_cap) {
 
 Outcome run_indat(std::string_view data, const fs::path& dir) {
     fs::create_directories(dir);
-    const std::size_t ip = find_marker(data, kIpartMarker, 0);
-    const std::size_t nm = find_marker(data, kNormalsMarker, ip == std::string_view::npos ? 0 : ip);
-    const std::size_t indat_end = std::min(ip, nm);
-    write_file(dir / "INDAT", data.substr(0, indat_end));
-    std::error_code ec;
-    if (ip != std::string_view::npos) {
-        const std::size_t b = std::min(data.size(), ip + kIpartMarker.size() + 1);
-        write_file(dir / "IPART", data.substr(b, nm == std::string_view::npos ? std::string_view::npos : nm - b));
-    } else {
-        fs::remove(dir / "IPART", ec);
+    // Each marker searched after the previous one found; a section runs to the next marker found.
+    const std::string_view markers[3] = {kIpartMarker, kNormalsMarker, kGateMarker};
+    const char* files[3] = {"IPART", "NORMALS.init", "gate"};
+    std::size_t at[3];
+    std::size_t from = 0;
+    for (int k = 0; k < 3; ++k) {
+        at[k] = find_marker(data, markers[k], from);
+        if (at[k] != std::string_view::npos) from = at[k];
     }
-    if (nm != std::string_view::npos)
-        write_file(dir / "NORMALS.init", data.substr(std::min(data.size(), nm + kNormalsMarker.size() + 1)));
-    else
-        fs::remove(dir / "NORMALS.init", ec);
+    const auto next_after = [&](int k) {
+        for (int j = k + 1; j < 3; ++j)
+            if (at[j] != std::string_view::npos) return at[j];
+        return std::string_view::npos;
+    };
+    write_file(dir / "INDAT", data.substr(0, std::min({at[0], at[1], at[2]})));
+    std::error_code ec;
+    for (int k = 0; k < 3; ++k) {
+        if (at[k] == std::string_view::npos) {
+            fs::remove(dir / files[k], ec);
+            continue;
+        }
+        const std::size_t b = std::min(data.size(), at[k] + markers[k].size() + 1);
+        const std::size_t e = next_after(k);
+        write_file(dir / files[k], data.substr(b, e == std::string_view::npos ? std::string_view::npos : e - b));
+    }
     InitialState st;
     try {
         st = read_indat(dir / "INDAT");

@@ -39,12 +39,14 @@ enum class Outcome {
 // Legacy case file: parse_legacy_case, then generate when estimate <= generate_cap.
 Outcome run_legacy(std::string_view data, double generate_cap);
 
-// INDAT, IPART, NORMALS.init in one input, split at lines holding exactly the markers:
-//   <INDAT> "\n%%IPART%%\n" <IPART> "\n%%NORMALS.init%%\n" <NORMALS.init>
-// A file whose marker is missing is not written (read_indat then meets a missing file).
+// INDAT, IPART, NORMALS.init and gate in one input, split at lines holding exactly the markers:
+//   <INDAT> "\n%%IPART%%\n" <IPART> "\n%%NORMALS.init%%\n" <NORMALS.init> "\n%%gate%%\n" <gate>
+// (each marker optional, in this order). A file whose marker is missing is not written
+// (read_indat then meets a missing file).
 // The files are written to dir (created if needed), then read_indat(dir / "INDAT").
 inline constexpr std::string_view kIpartMarker = "%%IPART%%";
 inline constexpr std::string_view kNormalsMarker = "%%NORMALS.init%%";
+inline constexpr std::string_view kGateMarker = "%%gate%%";
 Outcome run_indat(std::string_view data, const std::filesystem::path& dir);
 
 // Modern TOML case; after a line "#%%OVERRIDES%%" (a TOML comment, so the part above is

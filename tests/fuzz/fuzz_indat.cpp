@@ -1,6 +1,6 @@
-// libFuzzer target: read_indat on INDAT, IPART and NORMALS.init, split from one input at the
-// marker lines "%%IPART%%" and "%%NORMALS.init%%" and written to a private temporary
-// directory (removed at exit).
+// libFuzzer target: read_indat on INDAT, IPART, NORMALS.init and gate, split from one input at
+// the marker lines "%%IPART%%", "%%NORMALS.init%%" and "%%gate%%" and written to a private
+// temporary directory (removed at exit).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>

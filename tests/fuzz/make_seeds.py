@@ -5,8 +5,8 @@
 
 legacy/  the hand-written small_*.txt (kept), copies of the legacy runs' case files
          (SHARED_DIR/legacy/*/*.txt, default ../shared relative to the repository)
-indat/   for each small_*.txt legacy seed: `sphjet gen`, then INDAT, IPART and
-         NORMALS.init joined at the marker lines of fuzz_harness.hpp, plus the INDAT alone
+indat/   for each small_*.txt legacy seed: `sphjet gen`, then INDAT, IPART,
+         NORMALS.init and gate joined at the marker lines of fuzz_harness.hpp, plus the INDAT alone
 modern/  every cases/**/*.toml with overrides that coarsen the spacing (five to ten times,
          so that the generator stays fast), the examples of cases/CASE_FORMAT.md, and one
          seed with overrides of every kind (a table element, a bare word, a boolean)
@@ -43,6 +43,8 @@ def indat(sphjet: str) -> None:
             text += "%%IPART%%\n" + (t / "IPART").read_text()
             if (t / "NORMALS.init").exists():
                 text += "%%NORMALS.init%%\n" + (t / "NORMALS.init").read_text()
+            if (t / "gate").exists():
+                text += "%%gate%%\n" + (t / "gate").read_text()
             (CORPUS / "indat" / case.stem).write_text(text)
 
 

@@ -334,7 +334,7 @@ TEST(ParserMutations, LegacyCaseReaderGivesOnlyInputErrors) {
 
 TEST(ParserMutations, IndatReaderGivesOnlyInputErrors) {
     const fs::path dir = scratch_dir("indat");
-    const Tally t = campaign("indat", {kFuzzDir / "corpus" / "indat", kFuzzDir / "regressions" / "indat"}, 2000,
+    const Tally t = campaign("indat", {kFuzzDir / "corpus" / "indat", kFuzzDir / "regressions" / "indat"}, 3000,
                              0x5eedd47aULL, [&](const std::string& d) { return run_indat(d, dir); });
     fs::remove_all(dir);
     report("indat", t);
