@@ -38,7 +38,8 @@ struct WallSpec {
 // k = nint(zmin/dz) .. nint(zmax/dz), at rest until t_start, then moving with (vx, vz); each
 // particle stops rising at the top of the initial particles plus 0.1 h (SPHysics' zmax_ini).
 // With repulsive walls (modern format only) it is one wall line whose normal faces `facing`
-// (-1: the fluid stands on its left, -x; +1: on its right).
+// (-1: the fluid stands on its left, -x; +1: on its right), moving as one piece and stopping
+// when its lowest particle reaches that height.
 struct GateSpec {
     double x = 0, zmin = 0, zmax = 0;
     double vx = 0, vz = 0;

@@ -196,6 +196,11 @@ private:
         if (ps_.size() == first)
             throw InputError(spec_.source, "the gate holds no particle", "zmin <= zmax",
                              std::to_string(g.zmin) + ", " + std::to_string(g.zmax));
+        if (repulsive_ && ps_.size() - first < 2)
+            throw InputError(spec_.source, "a gate with repulsive walls needs two particles or more (its normal "
+                                           "comes from its neighbours)",
+                             "zmax - zmin >= dz = " + std::to_string(p_.dz),
+                             std::to_string(g.zmin) + " .. " + std::to_string(g.zmax));
         if (repulsive_) link_line(first, ps_.size() - first, g.facing > 0);
     }
 
@@ -376,7 +381,7 @@ private:
         return x >= r.xmin - t && x <= r.xmax + t && z >= r.zmin - t && z <= r.zmax + t;
     }
 
-    // Not on or just beside a wall line, nor within half a spacing of an obstacle.
+    // Not on or just beside a wall line, nor within half a spacing of an obstacle or a gate.
     [[nodiscard]] bool clear(double x, double z) const {
         const double dx = p_.dx, dz = p_.dz;
         if (x < -tol() || x > n_ * dx + tol() || z < -tol()) return false;
@@ -392,6 +397,8 @@ private:
             if (x > xlo - 0.5 * dx && x < xhi + 0.5 * dx && z > o.r.zmin - 0.5 * dz && z < o.r.zmax + 0.5 * dz)
                 return false;
         }
+        for (const GateSpec& g : spec_.gates)
+            if (std::abs(x - g.x) < 0.5 * dx && z > g.zmin - 0.5 * dz && z < g.zmax + 0.5 * dz) return false;
         return true;
     }
 
@@ -492,6 +499,7 @@ void check_spec(const CaseSpec& spec) {
         n += lattice(a, a, std::min(p.dx, p.dz), std::min(p.dx, p.dz));
     }
     for (const auto& w : spec.walls) n += 2 * (std::abs(w.height) / p.dz + 2);
+    for (const auto& g : spec.gates) n += std::abs(g.zmax - g.zmin) / p.dz + 2;
     for (const auto& o : spec.obstacles) {
         const double k = std::max(1, o.density);
         n += lattice(o.r.xmax - o.r.xmin, o.r.zmax, p.dx / k, p.dz / k);
@@ -510,6 +518,15 @@ void check_spec(const CaseSpec& spec) {
                          std::to_string(static_cast<int>(p.boundary)));
     if (p.lattice != Lattice::SimpleCubic && p.lattice != Lattice::BodyCentred)
         throw InputError(where, "invalid lattice", "SC (1) or BCC (2)", std::to_string(static_cast<int>(p.lattice)));
+    for (const GateSpec& g : spec.gates) {
+        // A gate that moves more than h in a step jumps over fluid particles; with a variable
+        // step the core caps the step at CFL h / |v| instead.
+        const double v = std::hypot(g.vx, g.vz);
+        if (!p.variable_dt && p.h > 0 && v * p.dt > p.h)
+            throw InputError(where, "the gate moves more than h per step at the fixed time step",
+                             "|gate velocity| dt <= h = " + std::to_string(p.h) + " m (or a variable time step)",
+                             "|v| = " + std::to_string(v) + " m/s, dt = " + std::to_string(p.dt) + " s");
+    }
     if (spec.fluid_blocks.empty() && spec.fluid_squares.empty() && spec.fluid_discs.empty())
         throw InputError(where, "no fluid in the case", "at least one fluid region", "none");
 }

@@ -365,9 +365,11 @@ LegacyRun read_legacy_run(const fs::path& dir) {
 }
 
 void mark_outside_container(ParticleSet& ps) {
-    if (ps.nb == 0) return;
+    // The fixed boundary particles only: a gate moves (legacy_domain in core/solver.cpp).
+    const std::size_t n = ps.nbf > 0 ? ps.nbf : ps.nb;
+    if (n == 0) return;
     double xmin = ps.x[0], xmax = ps.x[0], zmin = ps.z[0];
-    for (std::size_t i = 1; i < ps.nb; ++i) {
+    for (std::size_t i = 1; i < n; ++i) {
         xmin = std::min(xmin, ps.x[i]);
         xmax = std::max(xmax, ps.x[i]);
         zmin = std::min(zmin, ps.z[i]);

@@ -9,7 +9,7 @@
 !> then advances its clock by that new step, not by the one just taken (this fork advances
 !> by the step taken; the driver keeps the legacy clock too, for comparisons).
 module predictor_corrector
-  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, SPH_OK
+  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
@@ -44,7 +44,7 @@ contains
     type(sorted_t), intent(inout) :: s
     type(sph_step_info_t), intent(inout) :: info
     integer(ip), intent(out) :: status
-    real(rp) :: dt, dt2, vmax, dt_p, dt_c, dtf, dtcv
+    real(rp) :: dt, dt2, vmax, dt_p, dt_c, dtf, dtcv, vgate
     logical :: dbc, dbc_now
     integer :: i, nb, n
 
@@ -56,11 +56,14 @@ contains
     vmax = 0.0_rp
     dt_p = dt
     dt_c = dt
+    ! The gate's speed in the next step (it moves from t_start on), for the step bound.
+    vgate = 0.0_rp
+    if (st%nb > 0 .and. info%time + dt >= prm%gate_t_start) vgate = sqrt(prm%gate_vx**2 + prm%gate_vz**2)
 
     ! ---- predictor ----
     call compute_rates(prm, kern, st, s, vmax)
     if (prm%variable_dt /= 0) then
-      call cfl_time_step(prm, st, vmax, dtf, dtcv, dt_p)
+      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_p)
     end if
     ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
     ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
@@ -91,7 +94,7 @@ contains
     ! ---- corrector ----
     call compute_rates(prm, kern, st, s, vmax)
     if (prm%variable_dt /= 0) then
-      call cfl_time_step(prm, st, vmax, dtf, dtcv, dt_c)
+      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_c)
       info%dt_f = dtf
       info%dt_cv = dtcv
       info%dt_new = dt_c
@@ -130,14 +133,37 @@ contains
   end subroutine pc_step
 
   !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'
-  !> movingGate does: from t >= gate_t_start by (gate_vx, gate_vz) dt, z capped at
-  !> gate_z_cap, velocity set to the gate's (it enters the pair forces); at rest before.
+  !> movingGate does: from t >= gate_t_start (t = this step's start, sphjet's clock) by
+  !> (gate_vx, gate_vz) dt (the step taken; legacy moves by the next step's dt), velocity set
+  !> to the gate's (it enters the pair forces); at rest before. Dynamic boundaries, as legacy:
+  !> each particle's z is capped at gate_z_cap (a lifted gate gathers there). Repulsive walls
+  !> (sphjet only): the line moves rigidly and stops, w = 0, when its lowest particle reaches
+  !> the cap, so that its particles never coincide (their normals come from their neighbours).
   subroutine move_gate(prm, st, time, dt)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     real(rp), intent(in) :: time, dt
     integer :: i
+    real(rp) :: dzm, zlow
     if (time < prm%gate_t_start) return
+    if (prm%boundary == BC_REPULSIVE) then
+      dzm = prm%gate_vz * dt
+      if (dzm > 0.0_rp) then
+        zlow = huge(1.0_rp)
+        do i = 1, st%nb
+          if (st%kind(i) == KIND_MOVING_BOUNDARY) zlow = min(zlow, st%z(i))
+        end do
+        dzm = min(dzm, max(prm%gate_z_cap - zlow, 0.0_rp))
+      end if
+      do i = 1, st%nb
+        if (st%kind(i) /= KIND_MOVING_BOUNDARY) cycle
+        st%x(i) = st%x(i) + prm%gate_vx * dt
+        st%z(i) = st%z(i) + dzm
+        st%u(i) = prm%gate_vx
+        st%w(i) = dzm / dt
+      end do
+      return
+    end if
     do i = 1, st%nb
       if (st%kind(i) /= KIND_MOVING_BOUNDARY) cycle
       st%x(i) = st%x(i) + prm%gate_vx * dt

@@ -21,13 +21,14 @@ module time_step
 
 contains
 
-  subroutine cfl_time_step(prm, st, vmax, dt_f, dt_cv, dt_new)
+  subroutine cfl_time_step(prm, st, vmax, vgate, dt_f, dt_cv, dt_new)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(in) :: st
     real(rp), intent(in) :: vmax
+    real(rp), intent(in) :: vgate  !< speed of the gate in the next step [m/s]; 0 = none
     real(rp), intent(out) :: dt_f, dt_cv, dt_new
     integer :: i, imax
-    real(rp) :: amax, a2, cmax, fmag, vgate
+    real(rp) :: amax, a2, cmax, fmag
 
     amax = -1.0_rp
     cmax = -1.0_rp
@@ -60,7 +61,6 @@ contains
     if (prm%sigma > 0.0_rp) dt_new = min(dt_new, csf_dt(prm%rho0, prm%h, prm%sigma))
     ! A moving gate crosses at most CFL h per step (legacy has no such bound: a gate faster
     ! than about h / dt then jumps over fluid particles and the run blows up).
-    vgate = sqrt(prm%gate_vx**2 + prm%gate_vz**2)
     if (vgate > 0.0_rp) dt_new = min(dt_new, prm%cfl * prm%h / vgate)
   end subroutine cfl_time_step
 

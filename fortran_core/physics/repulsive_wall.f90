@@ -96,7 +96,8 @@ contains
     if (len > 0.0_rp) then
       nx = -tz / len
       nz = tx / len
-    else  ! neighbours on top of each other (a gate stacked at its cap): no normal, no push
+    else  ! neighbours on top of each other (not expected: a repulsive gate stops before its
+          ! particles meet): no normal, no push
       nx = 0.0_rp
       nz = 0.0_rp
     end if

@@ -13,7 +13,15 @@ and cases/dambreak/dambreak_a25_gate.toml (repulsive walls), both a column a = 0
    thirds of what passes with no gate (at most 55 particles), i.e. that it acts as a gate.
 2. motion (dynamic boundaries, vz = 1 m/s from t = 0): at the last output, every gate particle
    has x unchanged and z = z0 + vz t within 1e-6 m (the time is printed with 9 digits;
-   round-off is 1e-15), none above the cap; the fluid is past the gate line (it opened).
+   round-off is 1e-15); the fluid is past the gate line (it opened). Then vz = 3 m/s from
+   t_start = 0.01 s to 0.06 s: z = min(z0 + vz (t - t_start), cap) within vz x 1e-4 s (the
+   gate starts with the first step that begins at or after t_start, steps are < 1e-4 s), the
+   top particles gathered at the cap (top initial particle + 0.1 h; within 1e-7 m, the
+   precision of the cap recomputed here from IPART's 8 digits), none above.
+2b. repulsive gate, vz = 3 m/s: it moves as one piece and stops when its lowest particle
+   reaches the cap (spacing dz kept, lowest particle at the cap within 1e-7 m, velocity 0),
+   and a run stopped before that and resumed from its checkpoint ends bitwise equal to the
+   straight run (the wall normals are recomputed on resume from positions that never meet).
 3. legacy chain: `sphjet gen` writes the `gate` file beside INDAT/IPART, and a run from that
    INDAT ends 50 steps with every particle within 1e-6 m of the run from the case file (IPART
    prints 8 digits, so positions start 1e-8 m apart: measured 1e-8 m after 50 steps; a gate
@@ -121,6 +129,38 @@ def main():
           f"gate ({nb - nbf} particles, expected 52: z = k dz, k = 1 .. nint(0.12 / dz) = 52) at t = {t:.6f} s: largest |r - (r0 + v t)| = {err:.2e} m (< 1e-6)")
     xmax = max(r[0] for r in last[nb:])
     check(xmax > X_GATE + 0.005, f"opened gate lets the water through: front {xmax:.4f} m > gate + 5 mm")
+
+    out = os.path.join(work, "moving_dynamic_late")
+    run(sphjet, dbc_toml, out, "--tmax", "0.06", "--set", "gate.vz=3", "--set", "gate.t_start=0.01")
+    k, t = outputs(out)[-1]
+    last = part(os.path.join(out, f"PART_{k:04d}"))
+    err = max(abs(last[i][1] - min(ipart[i][1] + 3.0 * max(t - 0.01, 0.0), cap)) for i in range(nbf, nb))
+    # the cap recomputed here from IPART (8 digits) and h (6 digits) is good to ~1e-8 m
+    at_cap = sum(1 for i in range(nbf, nb) if abs(last[i][1] - cap) < 1e-7)
+    above = sum(1 for i in range(nbf, nb) if last[i][1] > cap + 1e-7)
+    check(err <= 3.0 * 1e-4 and at_cap >= 1 and above == 0,
+          f"gate from t_start = 0.01 s at 3 m/s, t = {t:.6f} s: largest |z - min(z0 + v (t - t_start), cap)| "
+          f"= {err:.2e} m (<= 3e-4), {at_cap} particles at the cap {cap:.6f} m, {above} above it")
+
+    # 2b. repulsive gate: rigid, stops at the cap, resume across the stop
+    straight, stopped = os.path.join(work, "rigid_straight"), os.path.join(work, "rigid_resumed")
+    run(sphjet, rep_toml, straight, "--tmax", "0.075", "--set", "gate.vz=3")
+    run(sphjet, rep_toml, stopped, "--tmax", "0.075", "--set", "gate.vz=3", "--max-steps", "400")
+    p = subprocess.run([sphjet, "run", "--resume", stopped, "--tmax", "0.075", "-j", "2", "-q"],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"FAIL: resume of {stopped} exited {p.returncode}\n{p.stderr}")
+    nb_r, nbf_r = counts(straight)
+    end = part(os.path.join(straight, "EPART"))
+    ip_r = part(os.path.join(straight, "IPART"))
+    cap_r = max(r[1] for r in ip_r) + 0.1 * 0.00297426
+    zs = [end[i][1] for i in range(nbf_r, nb_r)]
+    spacing = max(abs((zs[j + 1] - zs[j]) - 0.002286) for j in range(len(zs) - 1))
+    still = max(abs(end[i][3]) for i in range(nbf_r, nb_r))
+    same = open(os.path.join(straight, "EPART"), "rb").read() == open(os.path.join(stopped, "EPART"), "rb").read()
+    check(abs(min(zs) - cap_r) < 1e-7 and spacing < 1e-9 and still == 0.0 and same,
+          f"repulsive gate stops whole at the cap: lowest particle {min(zs):.9f} m (cap {cap_r:.9f}), spacing "
+          f"error {spacing:.1e} m, |w| {still}; resumed after 400 steps = straight run: {same}")
 
     # 3. legacy chain
     gen = os.path.join(work, "gen")
