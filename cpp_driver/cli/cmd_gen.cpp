@@ -48,19 +48,8 @@ void run_gen(const GenOptions& o) {
     if (ec) throw InputError(dir.string(), "cannot create the output directory", "a writable place", ec.message());
 
     // Everything is built before anything is written; each file is replaced whole.
-    write_ipart(dir / "IPART", ps);
-    if (repulsive) {
-        write_normals(dir / "NORMALS.init", ps);
-    } else {
-        fs::remove(dir / "NORMALS.init", ec);  // a stale one from an earlier repulsive case
-    }
-    write_indat(dir / "INDAT", st.params, ps.size(), ps.nb, ps.nbf, st.legacy);
+    write_legacy_inputs(dir, st.params, ps, st.legacy);
     const bool gate = ps.nbf < ps.nb;
-    if (gate) {
-        write_gate(dir / "gate", st.params, ps.nb, ps.nbf);
-    } else {
-        fs::remove(dir / "gate", ec);  // a stale one from an earlier case with a gate
-    }
 
     std::cout << fmt::format("sphjet gen: {} -> {}\n", o.case_file, dir.string());
     std::cout << fmt::format("  particles: np = {}  (boundary nb = {}, fixed nbf = {}, fluid = {})\n", ps.size(),

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "config/errors.hpp"
 
 namespace sphjet {
@@ -220,15 +222,6 @@ void write_ipart(const fs::path& path, const ParticleSet& ps) {
     write_atomically(path, s);
 }
 
-void write_gate(const fs::path& path, const SimParams& params, std::size_t nb, std::size_t nbf) {
-    std::ofstream out(path);
-    if (!out) throw InputError(path.string(), "cannot write the gate file", "a writable place", "open failed");
-    out.precision(17);
-    out << "1\n" << nbf + 1 << "\n" << nb << "\n" << params.gate_vx << " " << params.gate_vz << "\n"
-        << params.gate_t_start << "\n";
-    if (!out) throw InputError(path.string(), "cannot write the gate file", "a writable place", "write failed");
-}
-
 void write_normals(const fs::path& path, const ParticleSet& ps) {
     if (ps.wall.size() != ps.nb)
         throw InputError(path.string(), "no wall links for the boundary particles",
@@ -276,6 +269,24 @@ void write_normals(const fs::path& path, const ParticleSet& ps) {
         s += e16_8(xf) + " " + e16_8(zf) + " \n";
     }
     write_atomically(path, s);
+}
+
+void write_legacy_inputs(const fs::path& dir, const SimParams& params, const ParticleSet& ps,
+                         const LegacyRunInfo& info) {
+    std::error_code ec;
+    write_ipart(dir / "IPART", ps);
+    if (params.boundary == BoundaryType::Repulsive) {
+        write_normals(dir / "NORMALS.init", ps);
+    } else {
+        fs::remove(dir / "NORMALS.init", ec);  // a stale one from an earlier repulsive case
+    }
+    write_indat(dir / "INDAT", params, ps.size(), ps.nb, ps.nbf, info);
+    if (ps.nbf < ps.nb) {  // the gate record, as SPHYSICSgen2D writes it (1-based particles)
+        write_atomically(dir / "gate", fmt::format("1\n{}\n{}\n{:.17g} {:.17g}\n{:.17g}\n", ps.nbf + 1, ps.nb,
+                                                   params.gate_vx, params.gate_vz, params.gate_t_start));
+    } else {
+        fs::remove(dir / "gate", ec);  // a stale one from an earlier case with a gate
+    }
 }
 
 InitialState read_indat(const fs::path& indat) {
@@ -428,7 +439,7 @@ InitialState read_indat(const fs::path& indat) {
         if (!(std::isfinite(p.gate_vx) && std::isfinite(p.gate_vz) && p.gate_t_start >= 0))
             throw InputError(gate.string(), "invalid gate motion", "finite Vx, Vz and tgate >= 0",
                              rec[3][0] + ", " + rec[3][1] + ", " + rec[4][0]);
-        p.gate_z_cap = *std::max_element(ps.z.begin(), ps.z.end()) + 0.1 * p.h;
+        p.gate_z_cap = gate_z_cap(ps, p.h);
     }
 
     // NORMALS.init (repulsive boundaries): the wall links.

@@ -32,9 +32,12 @@ void write_ipart(const std::filesystem::path& path, const ParticleSet& particles
 // NORMALS.init from the boundary particles' wall links (particles.wall, size nb).
 void write_normals(const std::filesystem::path& path, const ParticleSet& particles);
 
-// The legacy generator's `gate` file, written only when the case has a gate (nbf < nb): the
-// lines 1 (a gate), nbf + 1 and nb (its first and last particle, 1-based), "vx vz", t_start.
-void write_gate(const std::filesystem::path& path, const SimParams& params, std::size_t nb, std::size_t nbf);
+// What the legacy generator writes for a case, into dir: IPART, INDAT, NORMALS.init for
+// repulsive walls and, with a gate (nbf < nb), the `gate` file (the lines 1, nbf + 1 and nb:
+// its first and last particle, 1-based, "vx vz", t_start). A NORMALS.init or gate left by an
+// earlier case that this one does not have is removed.
+void write_legacy_inputs(const std::filesystem::path& dir, const SimParams& params, const ParticleSet& particles,
+                         const LegacyRunInfo& info);
 
 // Reads INDAT, the IPART beside it and, for repulsive boundaries, the NORMALS.init beside it;
 // with moving boundary particles (nbf < nb, a legacy gate) the `gate` file beside it, and

@@ -1,6 +1,26 @@
 #include "core/particles.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace sphjet {
+
+DomainBounds legacy_domain(const ParticleSet& ps) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const std::size_t n = ps.nbf > 0 ? ps.nbf : ps.nb;
+    if (n == 0) return {-inf, inf, -inf, inf};
+    DomainBounds d{inf, -inf, inf, inf};
+    for (std::size_t i = 0; i < n; ++i) {
+        d.xmin = std::min(d.xmin, ps.x[i]);
+        d.xmax = std::max(d.xmax, ps.x[i]);
+        d.zmin = std::min(d.zmin, ps.z[i]);
+    }
+    return d;
+}
+
+double gate_z_cap(const ParticleSet& ps, double h) {
+    return *std::max_element(ps.z.begin(), ps.z.end()) + 0.1 * h;
+}
 
 void ParticleSet::resize(std::size_t n) {
     x.resize(n);

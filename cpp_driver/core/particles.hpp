@@ -18,6 +18,22 @@ struct WallLink {
     int next = -1;
 };
 
+// Domain outside which fluid particles leave the simulation.
+struct DomainBounds {
+    double xmin, xmax, zmin, zmax;
+};
+
+struct ParticleSet;
+
+// Legacy rule: the extent of the fixed boundary particles (all boundary particles when none is
+// fixed), open at the top; no boundary: unbounded. A gate (moving, nbf..nb) does not count:
+// legacy fixes the bounds once, and a moved gate must not shift them on a resume.
+[[nodiscard]] DomainBounds legacy_domain(const ParticleSet& ps);
+
+// Where the particles of a gate stop rising: the top of the particles plus 0.1 h, as
+// SPHysics sets its zmax_ini (applied to the initial particles).
+[[nodiscard]] double gate_z_cap(const ParticleSet& ps, double h);
+
 struct ParticleSet {
     std::vector<double> x, z;      // position [m]
     std::vector<double> u, w;      // velocity [m/s]

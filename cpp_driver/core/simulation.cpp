@@ -194,10 +194,7 @@ RunSummary run_simulation(const RunOptions& opts) {
 
     if (legacy_out && !opts.resume) {
         // The legacy post-processing chain reads INDAT and IPART beside the PART files.
-        write_indat(dir / "INDAT", prm, particles.size(), particles.nb, particles.nbf, spec.legacy);
-        write_ipart(dir / "IPART", particles);
-        if (prm.boundary == BoundaryType::Repulsive) write_normals(dir / "NORMALS.init", particles);
-        if (particles.nbf < particles.nb) write_gate(dir / "gate", prm, particles.nb, particles.nbf);
+        write_legacy_inputs(dir, prm, particles, spec.legacy);
     }
 
     if (opts.threads > 0) Solver::set_threads(opts.threads);

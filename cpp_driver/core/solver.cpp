@@ -11,21 +11,6 @@
 
 namespace sphjet {
 
-DomainBounds legacy_domain(const ParticleSet& ps) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    // The fixed boundary particles: a gate (moving, nbf..nb) inside the box does not widen the
-    // bounds at the start, and must not move them on a resume (legacy fixes them once).
-    const std::size_t n = ps.nbf > 0 ? ps.nbf : ps.nb;
-    if (n == 0) return {-inf, inf, -inf, inf};
-    DomainBounds d{inf, -inf, inf, inf};
-    for (std::size_t i = 0; i < n; ++i) {
-        d.xmin = std::min(d.xmin, ps.x[i]);
-        d.xmax = std::max(d.xmax, ps.x[i]);
-        d.zmin = std::min(d.zmin, ps.z[i]);
-    }
-    return d;
-}
-
 sph_params_t core_params(const SimParams& p, const OutputSpec& out, const DomainBounds& dom) {
     sph_params_t c{};
     c.kernel = static_cast<int>(p.kernel);

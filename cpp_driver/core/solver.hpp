@@ -15,14 +15,6 @@
 
 namespace sphjet {
 
-// Domain outside which fluid particles leave the simulation.
-struct DomainBounds {
-    double xmin, xmax, zmin, zmax;
-};
-
-// Legacy rule: the extent of the boundary particles, open at the top; no boundary: unbounded.
-[[nodiscard]] DomainBounds legacy_domain(const ParticleSet& ps);
-
 // sph_params_t from the case parameters.
 [[nodiscard]] sph_params_t core_params(const SimParams& p, const OutputSpec& out,
                                        const DomainBounds& dom);

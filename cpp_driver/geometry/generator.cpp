@@ -78,10 +78,9 @@ public:
         }
 
         if (!spec_.gates.empty()) {
-            // SPHysics' zmax_ini: the top of the initial particles plus 0.1 h.
             const GateSpec& g = spec_.gates.front();
             p_.gate_vx = g.vx, p_.gate_vz = g.vz, p_.gate_t_start = g.t_start;
-            p_.gate_z_cap = *std::max_element(ps_.z.begin(), ps_.z.end()) + 0.1 * p_.h;
+            p_.gate_z_cap = gate_z_cap(ps_, p_.h);
         }
 
         InitialState s;
@@ -183,9 +182,6 @@ private:
     // is empty there, YYmax = 0). Repulsive walls: one wall line, linked so that its normal
     // faces the fluid (bottom to top for facing -1, the right wall's orientation).
     void gate(const GateSpec& g) {
-        if (spec_.gates.size() > 1)
-            throw InputError(spec_.source, "more than one gate", "at most one gate (legacy moves only the first)",
-                             std::to_string(spec_.gates.size()));
         const std::size_t first = ps_.size();
         const long k0 = nint(g.zmin / p_.dz), k1 = nint(g.zmax / p_.dz);
         for (long k = k0; k <= k1; ++k) {
@@ -518,6 +514,9 @@ void check_spec(const CaseSpec& spec) {
                          std::to_string(static_cast<int>(p.boundary)));
     if (p.lattice != Lattice::SimpleCubic && p.lattice != Lattice::BodyCentred)
         throw InputError(where, "invalid lattice", "SC (1) or BCC (2)", std::to_string(static_cast<int>(p.lattice)));
+    if (spec.gates.size() > 1)
+        throw InputError(where, "more than one gate", "at most one gate (legacy moves only the first)",
+                         std::to_string(spec.gates.size()));
     for (const GateSpec& g : spec.gates) {
         // A gate that moves more than h in a step jumps over fluid particles; with a variable
         // step the core caps the step at CFL h / |v| instead.

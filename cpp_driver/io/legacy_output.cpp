@@ -365,17 +365,9 @@ LegacyRun read_legacy_run(const fs::path& dir) {
 }
 
 void mark_outside_container(ParticleSet& ps) {
-    // The fixed boundary particles only: a gate moves (legacy_domain in core/solver.cpp).
-    const std::size_t n = ps.nbf > 0 ? ps.nbf : ps.nb;
-    if (n == 0) return;
-    double xmin = ps.x[0], xmax = ps.x[0], zmin = ps.z[0];
-    for (std::size_t i = 1; i < n; ++i) {
-        xmin = std::min(xmin, ps.x[i]);
-        xmax = std::max(xmax, ps.x[i]);
-        zmin = std::min(zmin, ps.z[i]);
-    }
+    const DomainBounds d = legacy_domain(ps);
     for (std::size_t i = ps.nb; i < ps.size(); ++i)
-        if (ps.x[i] > xmax || ps.x[i] < xmin || ps.z[i] < zmin) ps.active[i] = 0;
+        if (ps.x[i] > d.xmax || ps.x[i] < d.xmin || ps.z[i] < d.zmin) ps.active[i] = 0;
 }
 
 ParticleSet load_output(const LegacyRun& run, const RunOutput& out, std::optional<std::size_t> nb_override,

@@ -127,7 +127,7 @@ struct LegacyRun {
                                       std::optional<std::size_t> nb_override = {},
                                       std::optional<std::size_t> nbf_override = {});
 
-// Marks fluid particles outside the boundary particles' extent inactive (see load_output).
+// Marks fluid particles outside legacy_domain (the fixed boundary particles' extent) inactive.
 void mark_outside_container(ParticleSet& ps);
 
 }  // namespace sphjet

@@ -31,11 +31,26 @@ contains
     integer :: i
     !$omp parallel do schedule(static)
     do i = first, last
-      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+      call eos_one(prm, st, i)
     end do
     !$omp end parallel do
   end subroutine update_eos
+
+  !> p and c of particle i from its density.
+  subroutine eos_one(prm, st, i)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    integer, intent(in) :: i
+    st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
+    st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+  end subroutine eos_one
+
+  !> Whether particle i is fluid still in the domain (the particles the integrator advances).
+  pure logical function moving_fluid(st, i)
+    type(state_t), intent(in) :: st
+    integer, intent(in) :: i
+    moving_fluid = st%active(i) /= 0 .and. st%kind(i) == KIND_FLUID
+  end function moving_fluid
 
   subroutine pc_step(prm, kern, st, s, info, status)
     type(sph_params_t), intent(in) :: prm
@@ -75,7 +90,12 @@ contains
       st%uo(i) = st%u(i)
       st%wo(i) = st%w(i)
       st%rhoo(i) = st%rho(i)
-      if (i > nb) call advance_one(prm, st, i, dt2)
+      if (i > nb) then
+        if (moving_fluid(st, i)) then
+          call half_step(prm, st, i, dt2)
+          call eos_one(prm, st, i)
+        end if
+      end if
     end do
     !$omp end parallel do
     dbc_now = .false.
@@ -100,19 +120,19 @@ contains
       info%dt_new = dt_c
     end if
     ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
-    ! non-boundary particle, in one pass (one barrier instead of three).
+    ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
+    ! final density: the half step's p and c would be overwritten unread).
     !$omp parallel do schedule(static)
     do i = nb + 1, n
-      call advance_one(prm, st, i, dt2)
-      if (st%active(i) /= 0 .and. st%kind(i) == KIND_FLUID) then
+      if (moving_fluid(st, i)) then
+        call half_step(prm, st, i, dt2)
         st%rho(i) = 2.0_rp * st%rho(i) - st%rhoo(i)
         st%x(i) = 2.0_rp * st%x(i) - st%xo(i)
         st%z(i) = 2.0_rp * st%z(i) - st%zo(i)
         st%u(i) = 2.0_rp * st%u(i) - st%uo(i)
         st%w(i) = 2.0_rp * st%w(i) - st%wo(i)
       end if
-      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+      call eos_one(prm, st, i)
     end do
     !$omp end parallel do
     if (dbc_now) then
@@ -144,51 +164,44 @@ contains
     type(state_t), intent(inout) :: st
     real(rp), intent(in) :: time, dt
     integer :: i
+    logical :: rigid
     real(rp) :: dzm, zlow
     if (time < prm%gate_t_start) return
-    if (prm%boundary == BC_REPULSIVE) then
-      dzm = prm%gate_vz * dt
-      if (dzm > 0.0_rp) then
-        zlow = huge(1.0_rp)
-        do i = 1, st%nb
-          if (st%kind(i) == KIND_MOVING_BOUNDARY) zlow = min(zlow, st%z(i))
-        end do
-        dzm = min(dzm, max(prm%gate_z_cap - zlow, 0.0_rp))
-      end if
+    rigid = prm%boundary == BC_REPULSIVE
+    dzm = prm%gate_vz * dt
+    if (rigid .and. dzm > 0.0_rp) then
+      zlow = huge(1.0_rp)
       do i = 1, st%nb
-        if (st%kind(i) /= KIND_MOVING_BOUNDARY) cycle
-        st%x(i) = st%x(i) + prm%gate_vx * dt
-        st%z(i) = st%z(i) + dzm
-        st%u(i) = prm%gate_vx
-        st%w(i) = dzm / dt
+        if (st%kind(i) == KIND_MOVING_BOUNDARY) zlow = min(zlow, st%z(i))
       end do
-      return
+      dzm = min(dzm, max(prm%gate_z_cap - zlow, 0.0_rp))
     end if
     do i = 1, st%nb
       if (st%kind(i) /= KIND_MOVING_BOUNDARY) cycle
       st%x(i) = st%x(i) + prm%gate_vx * dt
-      st%z(i) = min(st%z(i) + prm%gate_vz * dt, prm%gate_z_cap)
       st%u(i) = prm%gate_vx
-      st%w(i) = prm%gate_vz
+      if (rigid) then
+        st%z(i) = st%z(i) + dzm
+        st%w(i) = dzm / dt
+      else
+        st%z(i) = min(st%z(i) + dzm, prm%gate_z_cap)
+        st%w(i) = prm%gate_vz
+      end if
     end do
   end subroutine move_gate
 
-  !> Half step of fluid particle i (nothing for another particle or an inactive one) from its
-  !> start-of-step values with the current rates: rho = rho^n + dt2 drho/dt,
-  !> r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g); then p and c from the EoS.
-  subroutine advance_one(prm, st, i, dt2)
+  !> Half step of fluid particle i from its start-of-step values with the current rates:
+  !> rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g).
+  subroutine half_step(prm, st, i, dt2)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
     real(rp), intent(in) :: dt2
-    if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) return
     st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
-    st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-    st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
     st%x(i) = st%xo(i) + dt2 * (st%u(i) + st%xsph_u(i))
     st%z(i) = st%zo(i) + dt2 * (st%w(i) + st%xsph_w(i))
     st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gx)
     st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gz)
-  end subroutine advance_one
+  end subroutine half_step
 
 end module predictor_corrector
