@@ -41,6 +41,10 @@ module sphjet_types
     real(c_double) :: gate_vz = 0.0_rp
     real(c_double) :: gate_t_start = 0.0_rp  !< time the gate starts moving [s]
     real(c_double) :: gate_z_cap = 0.0_rp    !< a gate particle rises no higher [m]
+    real(c_double) :: drive_u = 0.0_rp       !< driven nozzle: plug speed along the axis [m/s]; 0 = no nozzle
+    real(c_double) :: drive_x0 = 0.0_rp, drive_z0 = 0.0_rp  !< orifice centre [m]
+    real(c_double) :: drive_ex = 0.0_rp, drive_ez = -1.0_rp !< unit jet axis (flow direction)
+    real(c_double) :: drive_half_width = 0.0_rp  !< plug half-width across the axis [m]
   end type sph_params_t
 
   !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in

@@ -2,6 +2,7 @@
 // Both readers (legacy SPHysics case file, modern TOML) produce a CaseSpec.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,29 @@ struct FluidSquare {
     double u0 = 0, w0 = 0;
 };
 
+// A driven nozzle (modern format [nozzle], the paper's jets; cases/jet/README.md): a
+// channel of width d0 and length `length` upstream of the orifice, filled with fluid that
+// moves as a rigid plug at u0 along the axis and becomes free fluid when it crosses the
+// orifice line ("a tank filled with particles serves as the nozzle"). With `walls`, a
+// boundary line runs along each side of the channel, half a spacing outside the fluid, from
+// the orifice to the nozzle's back end. The axis is one of the four lattice directions.
+struct NozzleSpec {
+    double x0 = 0, z0 = 0;      // orifice centre [m]
+    double ex = 0, ez = -1;     // jet axis (unit, flow direction): down, up, left or right
+    double d0 = 0;              // orifice width [m]
+    double length = 0;          // nozzle length upstream of the orifice [m]
+    double u0 = 0;              // jet speed [m/s]
+    bool walls = true;
+};
+
+// Breakup detection while the run goes (modern format [breakup]; analysis/jet_monitor.hpp).
+struct BreakupSpec {
+    double link_over_h = 1.5;       // the paper: broken where two particles along the axis are > 1.5 h apart
+    double band_over_d0 = 0.5;      // particles within band_over_d0 * d0 of the axis are "along the axis"
+    double check_every = 0;         // [s] between checks; 0 = every output
+    double stop_after = -1;         // [s] after the first breakup the run stops; < 0 = never
+};
+
 enum class OutputFormat { Legacy, Hdf5, Both };
 
 struct OutputSpec {
@@ -104,6 +128,8 @@ struct CaseSpec {
     OutputSpec output;
     std::vector<WallSpec> walls;  // legacy "Add wall" (dynamic boundaries)
     std::vector<GateSpec> gates;  // legacy "Add gate": at most one (legacy moves only the first)
+    std::optional<NozzleSpec> nozzle;    // a driven nozzle (a jet), modern format only
+    std::optional<BreakupSpec> breakup;  // breakup detection (with a nozzle)
     LegacyRunInfo legacy;
     // True for a legacy case file: fluid blocks are filled exactly as SPHYSICSgen2D fills them
     // (from the floor up, whatever ZMin says, and never above h_SWL). False: blocks, squares

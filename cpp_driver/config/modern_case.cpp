@@ -160,6 +160,19 @@ constexpr KeySpec kKeys[] = {
     {"gate.vz", Kind::Float},
     {"gate.t_start", Kind::Float},
     {"gate.facing", Kind::String},
+    // [nozzle]: a driven nozzle (the jets)
+    {"nozzle.x0", Kind::Float},
+    {"nozzle.z0", Kind::Float},
+    {"nozzle.axis", Kind::String},
+    {"nozzle.d0", Kind::Float},
+    {"nozzle.length_over_d0", Kind::Float},
+    {"nozzle.u0", Kind::Float},
+    {"nozzle.walls", Kind::Bool},
+    // [breakup]: breakup detection while the run goes
+    {"breakup.link_over_h", Kind::Float},
+    {"breakup.band_over_d0", Kind::Float},
+    {"breakup.check_every", Kind::Float},
+    {"breakup.stop_after", Kind::Float},
     // [[wall]]: legacy "Add wall"
     {"wall[].x", Kind::Float},
     {"wall[].height", Kind::Float},
@@ -1123,6 +1136,72 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         spec.gates.push_back(g);
     }
 
+    // [nozzle] and [breakup]: a jet
+    if (top.has("nozzle")) {
+        const Section s = top.sub("nozzle");
+        NozzleSpec nz;
+        const auto x0 = s.required_num("x0", "the orifice centre x [m]");
+        const auto z0 = s.required_num("z0", "the orifice centre z [m]");
+        const auto d0 = s.required_num("d0", "the orifice width D0 [m]");
+        const auto u0 = s.required_num("u0", "the jet speed u0 [m/s]");
+        positive(d0);
+        if (!(u0.value > 0)) fail(u0, "the jet speed must be positive (the plug moves out of the nozzle)", "u0 > 0");
+        nz.x0 = x0.value, nz.z0 = z0.value, nz.d0 = d0.value, nz.u0 = u0.value;
+        double len_over_d0 = 15.0;
+        if (auto f = s.num("length_over_d0")) positive(*f), len_over_d0 = f->value;
+        nz.length = len_over_d0 * nz.d0;
+        if (auto f = s.string("axis")) {
+            const auto dir = choose<std::pair<double, double>>(
+                *f, {{"down", {0.0, -1.0}}, {"up", {0.0, 1.0}}, {"left", {-1.0, 0.0}}, {"right", {1.0, 0.0}}});
+            nz.ex = dir.first, nz.ez = dir.second;
+        }
+        s.get("walls", nz.walls);
+        // The nozzle, its walls (half a spacing outside the fluid) and the orifice in the box.
+        const double across = 0.5 * nz.d0 + (nz.walls ? std::max(p.dx, p.dz) : 0.0);
+        const double back_x = nz.x0 - nz.ex * nz.length, back_z = nz.z0 - nz.ez * nz.length;
+        const double xlo = std::min(nz.x0, back_x) - std::abs(nz.ez) * across;
+        const double xhi = std::max(nz.x0, back_x) + std::abs(nz.ez) * across;
+        const double zlo = std::min(nz.z0, back_z) - std::abs(nz.ex) * across;
+        const double zhi = std::max(nz.z0, back_z) + std::abs(nz.ex) * across;
+        const double tol = 1e-9 * std::max({box.lx, box.lz, 1.0});
+        if (xlo < -tol || xhi > box.lx + tol)
+            fail(x0, "nozzle outside the box",
+                 "the nozzle (from the orifice " + num(nz.length) + " m back against the axis, " + num(2 * across) +
+                     " m wide with its walls) within x in [0, domain.lx = " + num(box.lx) + "]: x from " + num(xlo) +
+                     " to " + num(xhi));
+        if (zlo < -tol || zhi > box.lz + tol)
+            fail(z0, "nozzle outside the box",
+                 "the nozzle (from the orifice " + num(nz.length) + " m back against the axis, " + num(2 * across) +
+                     " m wide with its walls) within z in [0, domain.lz = " + num(box.lz) + "]: z from " + num(zlo) +
+                     " to " + num(zhi));
+        // The breakup axis runs from the orifice along e to the box edge; it must stay in the
+        // box for a jet to be followed (at least 2 d0 of it).
+        const double room = nz.ex > 0 ? box.lx - nz.x0 : nz.ex < 0 ? nz.x0 : nz.ez > 0 ? box.lz - nz.z0 : nz.z0;
+        if (!(room >= 2 * nz.d0))
+            throw InputError(s.string("axis") ? s.string("axis")->where : x0.where,
+                 "the breakup axis leaves the domain at once",
+                 "at least 2 d0 = " + num(2 * nz.d0) + " m of axis from the orifice to the box edge along the jet",
+                 num(room) + " m");
+        spec.nozzle = nz;
+        p.drive_u = nz.u0;
+        p.drive_x0 = nz.x0, p.drive_z0 = nz.z0, p.drive_ex = nz.ex, p.drive_ez = nz.ez;
+        // Half a spacing beyond the outer fluid rows, so that every plug particle is driven
+        // and the walls (a spacing out) are not.
+        p.drive_half_width = 0.5 * nz.d0 + 0.25 * std::max(p.dx, p.dz);
+        p.domain_box = true;
+
+        BreakupSpec bk;
+        const Section b = top.sub("breakup");
+        if (auto f = b.num("link_over_h")) positive(*f), bk.link_over_h = f->value;
+        if (auto f = b.num("band_over_d0")) positive(*f), bk.band_over_d0 = f->value;
+        if (auto f = b.num("check_every")) non_negative(*f), bk.check_every = f->value;
+        if (auto f = b.num("stop_after")) non_negative(*f), bk.stop_after = f->value;
+        spec.breakup = bk;
+    } else if (top.has("breakup")) {
+        throw InputError(ctx.where("breakup"), "[breakup] needs a jet",
+                         "a [nozzle] table (the breakup axis starts at its orifice)", "no [nozzle]");
+    }
+
     // Fluid regions
     for (const Section& s : fluid.array_of_tables("block")) {
         FluidBlock b;
@@ -1167,9 +1246,9 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         throw InputError(ctx.where(fluid.key_path("h_swl")), "missing required key",
                          "fluid.coef and fluid.h_swl with legacy.fill = true (the legacy fill stops at h_swl)",
                          "nothing");
-    if (spec.fluid_blocks.empty() && spec.fluid_discs.empty() && spec.fluid_squares.empty())
+    if (spec.fluid_blocks.empty() && spec.fluid_discs.empty() && spec.fluid_squares.empty() && !spec.nozzle)
         throw InputError(ctx.file + ": fluid", "no fluid in the case",
-                         "at least one [[fluid.block]], [[fluid.disc]] or [[fluid.square]]",
+                         "at least one [[fluid.block]], [[fluid.disc]] or [[fluid.square]], or a [nozzle]",
                          "none");
 
     // [output]
@@ -1456,6 +1535,27 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("vz", num(g.vz), "m/s; each particle stops at the top of the initial particles + 0.1 h");
         s += line("t_start", num(g.t_start), "s");
         s += line("facing", str(g.facing > 0 ? "right" : "left"), "side of the fluid (repulsive walls): left | right");
+    }
+
+    if (spec.nozzle) {
+        const NozzleSpec& nz = *spec.nozzle;
+        const char* axis = nz.ex > 0 ? "right" : nz.ex < 0 ? "left" : nz.ez > 0 ? "up" : "down";
+        s += "\n[nozzle]                        # a driven nozzle: the fluid in it moves out at u0 as a plug\n";
+        s += line("x0", num(nz.x0), "orifice centre [m]");
+        s += line("z0", num(nz.z0), "m");
+        s += line("axis", str(axis), "jet direction: down | up | left | right");
+        s += line("d0", num(nz.d0), "orifice width D0 [m]");
+        s += line("length_over_d0", num(nz.length / nz.d0), "nozzle length upstream of the orifice / D0");
+        s += line("u0", num(nz.u0), "jet speed [m/s]");
+        s += line("walls", boolean(nz.walls), "boundary lines along the nozzle sides");
+    }
+    if (spec.breakup) {
+        const BreakupSpec& b = *spec.breakup;
+        s += "\n[breakup]                       # breakup detection while the run goes\n";
+        s += line("link_over_h", num(b.link_over_h), "broken where two particles along the axis are more than this x h apart");
+        s += line("band_over_d0", num(b.band_over_d0), "particles within this x D0 of the axis count");
+        s += line("check_every", num(b.check_every), "s between checks; 0 = every output");
+        if (b.stop_after >= 0) s += line("stop_after", num(b.stop_after), "s after the first breakup the run stops");
     }
 
     for (const auto& w : spec.walls) {

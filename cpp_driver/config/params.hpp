@@ -66,6 +66,17 @@ struct SimParams {
     double gate_vx = 0.0, gate_vz = 0.0;  // [m/s]
     double gate_t_start = 0.0;            // [s]
     double gate_z_cap = 0.0;              // [m]; the generator sets it (top particle + 0.1 h)
+    // A driven nozzle (CaseSpec::nozzle, the jets): the fluid particles whose start-of-step
+    // position lies upstream of the orifice line through (drive_x0, drive_z0) across the unit
+    // axis (drive_ex, drive_ez), within drive_half_width of the axis, move as a rigid plug at
+    // drive_u along the axis (fortran_core/integrate/nozzle_drive.f90). drive_u = 0: none.
+    double drive_u = 0.0;                     // [m/s]
+    double drive_x0 = 0.0, drive_z0 = 0.0;    // orifice centre [m]
+    double drive_ex = 0.0, drive_ez = -1.0;   // jet axis (unit)
+    double drive_half_width = 0.0;            // [m]
+    // Where fluid leaves the domain: false (legacy) beyond the fixed boundary particles'
+    // extent (x and floor; no top); true the box [0, lx] x [0, lz] (open jets, no box walls).
+    bool domain_box = false;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -18,6 +18,7 @@
 #include "config/indat.hpp"
 #include "config/legacy_case.hpp"
 #include "config/modern_case.hpp"
+#include "core/jet_run.hpp"
 #include "core/solver.hpp"
 #include "geometry/generator.hpp"
 #include "io/checkpoint.hpp"
@@ -180,7 +181,7 @@ RunSummary run_simulation(const RunOptions& opts) {
                 if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
                     name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
                     name == "case.toml" || name == "INDAT" || name == "IPART" ||
-                    name == "NORMALS.init" || name == "gate")
+                    name == "NORMALS.init" || name == "gate" || name == "jet.csv" || name == "drops.csv")
                     fs::remove(e.path());
             }
         }
@@ -238,6 +239,10 @@ RunSummary run_simulation(const RunOptions& opts) {
     }
     const auto extra = extra_fields(solver);
     if (h5 && !opts.resume) h5->write(solver.particles(), st, extra);
+    std::optional<JetRun> jet;
+    if (spec.nozzle)
+        jet.emplace(spec, dir, opts.resume, solver.particles(), st.time, st.step,
+                    [&log](const std::string& s) { log.line(s); });
 
     auto write_output = [&]() {
         st.n_outputs += 1;
@@ -292,6 +297,15 @@ RunSummary run_simulation(const RunOptions& opts) {
                                      st.step, st.time, r.removed, st.n_removed,
                                      fmt::join(r.removed_ids, " ")));
             if (output_due) write_output();
+            if (jet) {
+                jet->after_step(solver.particles(), st.time, st.step, output_due);
+                if (jet->stop_due(st.time)) {
+                    log.line(fmt::format("stopping at t = {:.6g} s: [breakup] stop_after = {:g} s after the first "
+                                         "breakup (t = {:.6g} s)",
+                                         st.time, spec.breakup->stop_after, *jet->first_breakup_time()));
+                    break;
+                }
+            }
             if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
                 st.step % prm.filter_period == 0)
                 solver.density_filter();
@@ -347,6 +361,7 @@ RunSummary run_simulation(const RunOptions& opts) {
         write_part(dir / "EPART", solver.particles());
     }
     sum.outputs = st.n_outputs;
+    if (jet) jet->finish(hdf5_out);
     log.line(fmt::format("done: {} steps ({} in all) to t = {:.6g} s (SPHysics clock {:.6g} s) in "
                          "{:.2f} s wall; {:.3g} particle-steps/s; {} outputs; {} particles left "
                          "the domain",

@@ -11,6 +11,15 @@
 
 namespace sphjet {
 
+namespace {
+// Fluid beyond these bounds leaves the run: the box for open jets (SimParams::domain_box),
+// else the legacy rule (legacy_domain).
+DomainBounds run_domain(const SimParams& p, const ParticleSet& ps) {
+    if (p.domain_box) return {0.0, p.lx, 0.0, p.lz};
+    return legacy_domain(ps);
+}
+}  // namespace
+
 sph_params_t core_params(const SimParams& p, const OutputSpec& out, const DomainBounds& dom) {
     sph_params_t c{};
     c.kernel = static_cast<int>(p.kernel);
@@ -47,6 +56,12 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.gate_vz = p.gate_vz;
     c.gate_t_start = p.gate_t_start;
     c.gate_z_cap = p.gate_z_cap;
+    c.drive_u = p.drive_u;
+    c.drive_x0 = p.drive_x0;
+    c.drive_z0 = p.drive_z0;
+    c.drive_ex = p.drive_ex;
+    c.drive_ez = p.drive_ez;
+    c.drive_half_width = p.drive_half_width;
     return c;
 }
 
@@ -84,7 +99,7 @@ Solver::Solver(const SimParams& params, const OutputSpec& output, ParticleSet pa
     }
     if (params_.sigma > 0)
         for (auto* v : {&colour_, &st_nx_, &st_nz_, &kappa_}) v->assign(n, 0.0);
-    prm_ = core_params(params_, output_, legacy_domain(ps_));
+    prm_ = core_params(params_, output_, run_domain(params_, ps_));
     was_active_.assign(ps_.active.begin(), ps_.active.end());
     state_.dt = params_.dt;
     bind_arrays();

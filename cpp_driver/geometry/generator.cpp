@@ -7,6 +7,7 @@
 #include <string>
 
 #include "config/errors.hpp"
+#include "geometry/nozzle.hpp"
 
 namespace sphjet {
 namespace {
@@ -32,7 +33,9 @@ public:
         for (const WallSpec& w : spec_.walls) inner_wall(w);
         for (const ObstacleSpec& o : spec_.obstacles) obstacle(o);
         for (const GateSpec& g : spec_.gates) gate(g);
+        if (spec_.nozzle) nozzle_walls(*spec_.nozzle);
         boundary_density_and_mass();
+        if (spec_.nozzle) nozzle_fluid(*spec_.nozzle);
 
         if (spec_.legacy_fill) {
             for (const FluidBlock& b : spec_.fluid_blocks) legacy_fill(b);
@@ -198,6 +201,24 @@ private:
                              "zmax - zmin >= dz = " + std::to_string(p_.dz),
                              std::to_string(g.zmin) + " .. " + std::to_string(g.zmax));
         if (repulsive_) link_line(first, ps_.size() - first, g.facing > 0);
+    }
+
+    // A driven nozzle (geometry/nozzle.hpp): its walls are fixed boundary particles.
+    void nozzle_walls(const NozzleSpec& nz) {
+        for (const NozzleWall& w : nozzle_layout(nz, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h).walls) {
+            const std::size_t first = ps_.size();
+            for (const NozzlePoint& q : w.points) boundary(q.x, q.z);
+            if (repulsive_) link_line(first, w.points.size(), w.reversed);
+        }
+    }
+
+    // The nozzle's plug: fluid at rho0 (p = 0) moving at u0 along the axis; its mass is rho0
+    // times its share of the nozzle's cross-section, so the plug's volume is d0 x length.
+    void nozzle_fluid(const NozzleSpec& nz) {
+        const NozzleLayout lay = nozzle_layout(nz, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h);
+        const double m = p_.rho0 * lay.spacing_across * lay.spacing_along;
+        for (const NozzlePoint& q : lay.fluid)
+            ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, p_.rho0, 0.0, m, ParticleKind::Fluid);
     }
 
     void obstacle(const ObstacleSpec& o) {
@@ -496,6 +517,7 @@ void check_spec(const CaseSpec& spec) {
     }
     for (const auto& w : spec.walls) n += 2 * (std::abs(w.height) / p.dz + 2);
     for (const auto& g : spec.gates) n += std::abs(g.zmax - g.zmin) / p.dz + 2;
+    if (spec.nozzle) n += lattice(spec.nozzle->d0 + 4 * std::max(p.dx, p.dz), spec.nozzle->length, std::min(p.dx, p.dz), std::min(p.dx, p.dz));
     for (const auto& o : spec.obstacles) {
         const double k = std::max(1, o.density);
         n += lattice(o.r.xmax - o.r.xmin, o.r.zmax, p.dx / k, p.dz / k);
@@ -526,8 +548,23 @@ void check_spec(const CaseSpec& spec) {
                              "|gate velocity| dt <= h = " + std::to_string(p.h) + " m (or a variable time step)",
                              "|v| = " + std::to_string(v) + " m/s, dt = " + std::to_string(p.dt) + " s");
     }
-    if (spec.fluid_blocks.empty() && spec.fluid_squares.empty() && spec.fluid_discs.empty())
-        throw InputError(where, "no fluid in the case", "at least one fluid region", "none");
+    if (spec.fluid_blocks.empty() && spec.fluid_squares.empty() && spec.fluid_discs.empty() && !spec.nozzle)
+        throw InputError(where, "no fluid in the case", "at least one fluid region or a nozzle", "none");
+    if (spec.nozzle) {
+        const NozzleSpec& nz = *spec.nozzle;
+        if (!(nz.u0 > 0)) throw InputError(where, "nozzle: the jet speed must be positive", "u0 > 0", std::to_string(nz.u0));
+        if (!(nz.d0 > 0) || !(nz.length > 0))
+            throw InputError(where, "nozzle: empty nozzle", "d0 > 0 and length > 0",
+                             std::to_string(nz.d0) + ", " + std::to_string(nz.length));
+        if (!((nz.ex == 0 && std::abs(nz.ez) == 1) || (nz.ez == 0 && std::abs(nz.ex) == 1)))
+            throw InputError(where, "nozzle: the axis must be a lattice direction", "down, up, left or right",
+                             std::to_string(nz.ex) + ", " + std::to_string(nz.ez));
+        // The plug is a rigid block: at least two particles across it.
+        const double dl = nz.ex == 0 ? p.dx : p.dz;
+        if (std::lround(nz.d0 / dl) < 2)
+            throw InputError(where, "nozzle: spacing too coarse for the orifice", "at least 2 particles across d0",
+                             "d0 = " + std::to_string(nz.d0) + " m, spacing " + std::to_string(dl) + " m");
+    }
 }
 
 }  // namespace

@@ -496,6 +496,13 @@ void visit_params(P& p, F&& f) {
     f("gate_vz", p.gate_vz, "m/s");
     f("gate_t_start", p.gate_t_start, "s");
     f("gate_z_cap", p.gate_z_cap, "m");
+    f("drive_u", p.drive_u, "m/s");
+    f("drive_x0", p.drive_x0, "m");
+    f("drive_z0", p.drive_z0, "m");
+    f("drive_ex", p.drive_ex, "1");
+    f("drive_ez", p.drive_ez, "1");
+    f("drive_half_width", p.drive_half_width, "m");
+    f("domain_box", p.domain_box, nullptr);
 }
 
 std::string enum_name(KernelType v) { return to_string(v); }
@@ -544,7 +551,9 @@ SimParams read_params(hid_t loc) {
         // Added after files were first written: files without it keep the default (for
         // st_delta the pressure-consistent delta, the only model older builds had).
         // The gate_* fields likewise (no moving boundary particles before them).
-        if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_")) &&
+        // The drive_* fields and domain_box likewise (no driven nozzle before them).
+        if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_") ||
+             std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box") &&
             !has_attr(loc, name))
             return;
         if constexpr (std::is_enum_v<T>) {

@@ -56,6 +56,12 @@ typedef struct sph_params_t {
     double gate_vz;
     double gate_t_start;      /* time the gate starts moving [s] */
     double gate_z_cap;        /* a gate particle rises no higher [m] */
+    double drive_u;           /* driven nozzle: plug speed along the axis [m/s]; 0 = no nozzle */
+    double drive_x0;          /* orifice centre [m] */
+    double drive_z0;
+    double drive_ex;          /* unit jet axis (flow direction) */
+    double drive_ez;
+    double drive_half_width;  /* plug half-width across the axis [m] */
 } sph_params_t;
 
 typedef struct sph_arrays_t {

@@ -8,6 +8,7 @@
 !> The step for the next call is min of the CFL steps of both stages; note that SPHysics
 !> then advances its clock by that new step, not by the one just taken (this fork advances
 !> by the step taken; the driver keeps the legacy clock too, for comparisons).
+!> A driven nozzle (sphjet's jets, nozzle_drive) moves the fluid inside it as a rigid plug.
 module predictor_corrector
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
@@ -17,6 +18,7 @@ module predictor_corrector
   use time_step, only: cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
   use state_checks, only: check_domain
+  use nozzle_drive, only: in_driven_nozzle
   implicit none
   private
   public :: pc_step, update_eos
@@ -192,12 +194,24 @@ contains
 
   !> Half step of fluid particle i from its start-of-step values with the current rates:
   !> rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g).
+  !> A fluid particle whose start-of-step position lies in a driven nozzle (nozzle_drive)
+  !> moves rigidly with the plug velocity instead: r = r^n + dt2 u_plug, u = u_plug; its
+  !> density still follows continuity.
   subroutine half_step(prm, st, i, dt2)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
     real(rp), intent(in) :: dt2
     st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
+    if (prm%drive_u > 0.0_rp) then
+      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) then
+        st%u(i) = prm%drive_u * prm%drive_ex
+        st%w(i) = prm%drive_u * prm%drive_ez
+        st%x(i) = st%xo(i) + dt2 * st%u(i)
+        st%z(i) = st%zo(i) + dt2 * st%w(i)
+        return
+      end if
+    end if
     st%x(i) = st%xo(i) + dt2 * (st%u(i) + st%xsph_u(i))
     st%z(i) = st%zo(i) + dt2 * (st%w(i) + st%xsph_w(i))
     st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gx)

@@ -54,7 +54,10 @@ contains
     ! squares the whole wall velocity; the only moving walls here are gates, which slide along
     ! themselves, and that velocity would scale the push by 1 + v^2 / (2 g h_SWL) (x5 for a
     ! 3 m/s gate in a 0.11 m column) and throw the water through a fast gate. Walls at rest: same.
-    dyn_head = (u_wall * nx + w_wall * nz)**2 / (2.0_rp * abs(g) * h_swl)
+    ! The dynamic head of a moving wall; without gravity it has no scale and is left out
+    ! (0/0 for a wall at rest otherwise).
+    dyn_head = 0.0_rp
+    if (g /= 0.0_rp) dyn_head = (u_wall * nx + w_wall * nz)**2 / (2.0_rp * abs(g) * h_swl)
     if (eps_z > 1.0_rp - eps_min) then
       eps_z = 1.0_rp
     else if (z_fluid > h_swl) then

@@ -1,0 +1,95 @@
+// A jet followed while it runs (cases/jet/README.md): what leaves the orifice, where the jet
+// breaks, and the drops.
+//
+// Frame: s = (r - r0) . e along the jet axis from the orifice centre r0, l = (r - r0) x e
+// across it. At each sample:
+//   - flux: the volume (m / rho0 per particle, per unit depth in 2D: the mass flux over
+//     rho0) that crossed the orifice line since the last sample, over the time between them;
+//     u_flux = flux / d0 is the mean velocity through the orifice. A particle crosses
+//     gradually, its share out being s / ds + 1/2 clamped to [0, 1] (ds the spacing along the
+//     axis), so a rigid plug of rows ds apart gives a volume out exactly linear in time (a
+//     count of whole particles would come in steps of a row). u_orifice is the plain
+//     mean of the axial velocity of the fluid particles with 0 <= s < h and |l| <= d0/2.
+//   - breakup (the paper's rule): the fluid particles with s >= 0 and |l| <= band are sorted
+//     by s; at the first gap between consecutive ones longer than link = link_over_h h the
+//     jet is broken, and the breakup length L is the s of the particle before the gap
+//     (analysis/breakup.hpp).
+//   - drops: the fluid downstream of the orifice (s >= 0) in connected clusters (links of at
+//     most `link`); the cluster of the particle nearest the orifice is the jet, every other
+//     cluster a drop. A drop's equivalent diameter is that of the disc of its area
+//     (d = 2 sqrt(A / pi), A = sum m / rho). The head drop is the drop whose farthest
+//     particle is farthest along the axis.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/case_spec.hpp"
+#include "core/particles.hpp"
+
+namespace sphjet::analysis {
+
+struct Drop {
+    std::size_t particles = 0;
+    double area = 0;         // sum of m / rho [m^2]
+    double d_eq = 0;         // 2 sqrt(area / pi) [m]
+    double xc = 0, zc = 0;   // centroid (mean position) [m]
+    double s_max = 0;        // farthest particle along the axis [m]
+};
+
+struct JetSample {
+    double time = 0;
+    std::int64_t step = 0;
+    double volume_out = 0;       // volume that has crossed the orifice since t = 0 [m^2]
+    double flux = 0;             // since the previous sample [m^2/s]
+    double u_flux = 0;           // flux / d0 [m/s]
+    double u_orifice = 0;        // mean axial velocity at the orifice [m/s] (0 when none there)
+    std::optional<double> length;  // breakup length [m]; none: intact
+    double jet_tip = 0;          // farthest s of the jet's own cluster [m]
+    std::vector<Drop> drops;     // detached drops, farthest first
+};
+
+class JetMonitor {
+public:
+    // ds: the particle spacing along the axis.
+    JetMonitor(const NozzleSpec& nozzle, const BreakupSpec& breakup, double h, double rho0, double ds);
+
+    // Marks as already out the fluid past the orifice (a fresh run has none there; a resumed
+    // one carries on from its particles; removed particles count as out) and counts the
+    // volume out.
+    void start(const ParticleSet& ps, double time);
+
+    [[nodiscard]] JetSample sample(const ParticleSet& ps, double time, std::int64_t step);
+
+    [[nodiscard]] double link() const { return link_; }
+    [[nodiscard]] double band() const { return band_; }
+    [[nodiscard]] const NozzleSpec& nozzle() const { return nz_; }
+
+private:
+    double crossing_volume(const ParticleSet& ps);
+
+    NozzleSpec nz_;
+    double h_, link_, band_, rho0_, ds_;
+    std::vector<char> out_;  // per particle: has crossed the orifice line
+    double volume_out_ = 0;
+    double last_time_ = 0;
+};
+
+// The paper's correlation (eq 37, Ashgriz 2011) with its radius-based groups:
+// We = rho u0^2 R / sigma, Re = rho u0 R / mu, Oh = sqrt(We) / Re, R = d0 / 2;
+// L / d0 = 13 sqrt(We) (1 + 3 Oh). mu = 0: Oh = 0.
+struct JetGroups {
+    double we = 0, re = 0, oh = 0, fr = 0;
+    double eq37 = 0;  // L / d0
+};
+[[nodiscard]] JetGroups jet_groups(double rho, double u0, double d0, double sigma, double mu, double g);
+
+// CSV header and row of a sample (jet.csv) and of its drops (drops.csv).
+[[nodiscard]] std::string jet_csv_header();
+[[nodiscard]] std::string jet_csv_row(const JetSample& s, double d0);
+[[nodiscard]] std::string drops_csv_header();
+[[nodiscard]] std::string drops_csv_rows(const JetSample& s, double d0);
+
+}  // namespace sphjet::analysis

@@ -1,0 +1,140 @@
+#include "core/jet_run.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "config/errors.hpp"
+#include "io/jet_output.hpp"
+
+namespace fs = std::filesystem;
+
+namespace sphjet {
+
+namespace {
+
+// Splits a CSV line into fields.
+std::vector<std::string> fields(const std::string& line) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    return f;
+}
+
+// Keeps the header and the rows whose step (column 2) is at most `step`; returns the kept rows.
+std::vector<std::vector<std::string>> keep_until(const fs::path& file, std::int64_t step) {
+    std::vector<std::vector<std::string>> rows;
+    if (!fs::exists(file)) return rows;
+    std::ifstream in(file);
+    std::string header, line;
+    std::getline(in, header);
+    std::string kept = header + "\n";
+    while (std::getline(in, line)) {
+        const auto f = fields(line);
+        if (f.size() < 2) break;  // a torn last line of a killed run
+        try {
+            if (std::stoll(f[1]) > step) break;
+        } catch (const std::exception&) {
+            break;
+        }
+        kept += line + "\n";
+        rows.push_back(f);
+    }
+    in.close();
+    write_text_atomically(file, kept);
+    return rows;
+}
+
+void append(const fs::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::app);
+    out << text;
+    out.flush();
+    if (!out) throw InputError(file.string(), "cannot append to the file", "room and permission to write it", std::strerror(errno));
+}
+
+}  // namespace
+
+JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const ParticleSet& ps, double time,
+               std::int64_t step, Log log)
+    : spec_(spec), dir_(dir),
+      mon_(*spec.nozzle, spec.breakup.value_or(BreakupSpec{}), spec.params.h, spec.params.rho0,
+           spec.nozzle->ex == 0 ? spec.params.dz : spec.params.dx),
+      log_(std::move(log)) {
+    if (resume) {
+        const auto rows = keep_until(dir_ / "jet.csv", step);
+        (void)keep_until(dir_ / "drops.csv", step);
+        for (const auto& r : rows) {
+            if (!first_time_ && r[6] == "1") first_time_ = std::stod(r[0]), first_length_ = std::stod(r[7]);
+        }
+    } else {
+        write_text_atomically(dir_ / "jet.csv", analysis::jet_csv_header() + "\n");
+        write_text_atomically(dir_ / "drops.csv", analysis::drops_csv_header() + "\n");
+    }
+    mon_.start(ps, time);
+    const double every = spec.breakup ? spec.breakup->check_every : 0.0;
+    next_check_ = every > 0 ? (std::floor(time / every) + 1) * every : 0.0;
+}
+
+void JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
+    const double d0 = spec_.nozzle->d0;
+    const analysis::JetSample s = mon_.sample(ps, time, step);
+    append(dir_ / "jet.csv", analysis::jet_csv_row(s, d0) + "\n");
+    if (!s.drops.empty()) append(dir_ / "drops.csv", analysis::drops_csv_rows(s, d0));
+    // The orifice speed once the jet has left the nozzle by d0.
+    if (s.jet_tip >= d0 || s.length) {
+        u_sum_ += s.u_flux;
+        ++u_n_;
+        u_dev_max_ = std::max(u_dev_max_, std::abs(s.u_flux / spec_.nozzle->u0 - 1.0));
+    }
+    if (s.length && !first_time_) {
+        first_time_ = time;
+        first_length_ = *s.length;
+        const double head = s.drops.empty() ? 0.0 : s.drops.front().d_eq / d0;
+        log_(fmt::format("jet broken at t = {:.6g} s (step {}): L = {:.6g} m, L/D0 = {:.4g}; {} drop(s), the "
+                         "head drop {:.3g} D0 across",
+                         time, step, *s.length, *s.length / d0, s.drops.size(), head));
+    }
+}
+
+void JetRun::after_step(const ParticleSet& ps, double time, std::int64_t step, bool output_written) {
+    const double every = spec_.breakup ? spec_.breakup->check_every : 0.0;
+    if (every > 0) {
+        if (time + 1e-12 >= next_check_) {
+            sample(ps, time, step);
+            next_check_ = (std::floor(time / every + 1e-9) + 1) * every;
+        }
+    } else if (output_written) {
+        sample(ps, time, step);
+    }
+}
+
+bool JetRun::stop_due(double time) const {
+    return spec_.breakup && spec_.breakup->stop_after >= 0 && first_time_ &&
+           time >= *first_time_ + spec_.breakup->stop_after;
+}
+
+void JetRun::finish(bool hdf5) {
+    const NozzleSpec& nz = *spec_.nozzle;
+    if (u_n_ > 0)
+        log_(fmt::format("jet: orifice speed (flux / D0) {:.5g} m/s on average over {} samples, u0 = {:.5g} m/s "
+                         "requested ({:+.2f}%; largest sample deviation {:.2f}%)",
+                         u_sum_ / static_cast<double>(u_n_), u_n_, nz.u0,
+                         100.0 * (u_sum_ / static_cast<double>(u_n_) / nz.u0 - 1.0), 100.0 * u_dev_max_));
+    const SimParams& p = spec_.params;
+    const double mu = p.viscosity == ViscosityModel::Laminar ? p.visc_value * p.rho0 : 0.0;
+    const auto g = analysis::jet_groups(p.rho0, nz.u0, nz.d0, p.sigma, mu, std::hypot(p.gx, p.gz));
+    if (first_time_)
+        log_(fmt::format("jet: first breakup at t = {:.6g} s, L/D0 = {:.4g}; eq 37 (We = {:.3g}, Oh = {:.3g}) gives "
+                         "{:.4g}",
+                         *first_time_, *first_length_ / nz.d0, g.we, g.oh, g.eq37));
+    else
+        log_(fmt::format("jet: not broken (eq 37 gives L/D0 = {:.4g})", g.eq37));
+    if (hdf5) write_jet_table(dir_, first_time_, first_length_, g.eq37);
+}
+
+}  // namespace sphjet

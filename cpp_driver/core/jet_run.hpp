@@ -1,0 +1,52 @@
+// The jet side of a run (a case with a [nozzle]): samples the jet while the run goes
+// (analysis/jet_monitor.hpp), writes DIR/jet.csv and DIR/drops.csv (one row per sample, one
+// per drop and sample), reports the first breakup in the log, says when the run may stop
+// ([breakup] stop_after), and at the end copies the samples into DIR/run.h5 (/jet).
+// On resume the rows written after the checkpoint's step go away and the first breakup is
+// read back from jet.csv.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "analysis/jet_monitor.hpp"
+#include "config/case_spec.hpp"
+#include "core/particles.hpp"
+
+namespace sphjet {
+
+class JetRun {
+public:
+    using Log = std::function<void(const std::string&)>;
+    // time, step: where the run starts (0 for a fresh run, the checkpoint's for a resume).
+    JetRun(const CaseSpec& spec, const std::filesystem::path& dir, bool resume, const ParticleSet& ps,
+           double time, std::int64_t step, Log log);
+
+    // After a step: samples when due (every check_every, or when output_written with
+    // check_every = 0).
+    void after_step(const ParticleSet& ps, double time, std::int64_t step, bool output_written);
+    // True once the run has gone stop_after past the first breakup.
+    [[nodiscard]] bool stop_due(double time) const;
+    // The end of a run (or its interruption): /jet in run.h5 and the summary line.
+    void finish(bool hdf5);
+
+    [[nodiscard]] std::optional<double> first_breakup_time() const { return first_time_; }
+
+private:
+    void sample(const ParticleSet& ps, double time, std::int64_t step);
+
+    const CaseSpec& spec_;
+    std::filesystem::path dir_;
+    analysis::JetMonitor mon_;
+    Log log_;
+    double next_check_ = 0;
+    std::optional<double> first_time_, first_length_;
+    double u_sum_ = 0;
+    double u_dev_max_ = 0;
+    std::int64_t u_n_ = 0;
+};
+
+}  // namespace sphjet

@@ -1,0 +1,50 @@
+#include "geometry/nozzle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sphjet {
+
+NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess) {
+    // Spacings along and across the axis: the axis is one of the lattice directions.
+    const bool vertical = nz.ex == 0.0;
+    const double ds = vertical ? dz : dx;
+    const double dl_lattice = vertical ? dx : dz;
+    const long n_across = std::max(1L, std::lround(nz.d0 / dl_lattice));
+    const long m_along = std::max(1L, std::lround(nz.length / ds));
+    const double dl = nz.d0 / static_cast<double>(n_across);
+    const double lx = -nz.ez, lz = nz.ex;  // CCW(e)
+    const auto at = [&](double s, double l) {
+        return NozzlePoint{nz.x0 + s * nz.ex + l * lx, nz.z0 + s * nz.ez + l * lz};
+    };
+
+    NozzleLayout out;
+    out.spacing_across = dl;
+    out.spacing_along = ds;
+    out.fluid.reserve(static_cast<std::size_t>(n_across * m_along));
+    for (long k = 0; k < m_along; ++k)
+        for (long j = 0; j < n_across; ++j)
+            out.fluid.push_back(at(-(static_cast<double>(k) + 0.5) * ds,
+                                   -0.5 * nz.d0 + (static_cast<double>(j) + 0.5) * dl));
+    if (!nz.walls) return out;
+
+    const double off = 0.5 * nz.d0 + 0.5 * dl;
+    const long k0 = std::min(m_along, static_cast<long>(std::ceil(recess / ds - 1e-9)));
+    for (const double side : {1.0, -1.0}) {
+        NozzleWall inner;
+        // The +l wall's normal must point to -l: its points run along e, whose CCW is +l,
+        // so its links are reversed (Builder::link_line); the -l wall's are not.
+        inner.reversed = side > 0;
+        for (long k = m_along; k >= k0; --k) inner.points.push_back(at(-static_cast<double>(k) * ds, side * off));
+        out.walls.push_back(std::move(inner));
+        if (dynamic) {
+            NozzleWall outer;
+            for (long k = m_along; k >= k0; --k)
+                outer.points.push_back(at(-(static_cast<double>(k) + 0.5) * ds, side * (off + 0.5 * dl)));
+            out.walls.push_back(std::move(outer));
+        }
+    }
+    return out;
+}
+
+}  // namespace sphjet

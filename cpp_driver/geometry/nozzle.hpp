@@ -1,0 +1,52 @@
+// The driven nozzle of the jet cases (CaseSpec::nozzle; cases/jet/README.md): where its
+// fluid and its walls go. The generator places what this returns.
+//
+// Frame: s along the jet axis e from the orifice centre (s < 0 inside the nozzle), l across
+// it along CCW(e) = (-ez, ex). With N = max(1, round(d0 / dl)) particles across and
+// M = max(1, round(length / ds)) along (dl, ds the lattice spacings across and along the
+// axis), the plug's particles sit at
+//   l = -d0/2 + (j + 1/2) d0/N,  s = -(k + 1/2) ds,   j < N, k < M,
+// so the jet leaves symmetric about the axis and exactly d0 wide (a simple lattice; the
+// case's BCC points are not used in the nozzle). Walls (NozzleSpec::walls): a line on each
+// side at l = +-(d0/2 + d0/(2N)), one spacing outside the outer fluid rows as the box walls
+// are, with points s = -k ds, k = k0 .. M.
+// Dynamic boundaries add a second, staggered layer half a spacing further out and half a
+// spacing upstream, as the box walls have. The walls end `recess` upstream of the orifice
+// line (s = -k ds from k0 = ceil(recess / ds)): with recess = 2h no fluid past the orifice
+// is within a wall particle's reach. (The repulsive force is scaled for hydrostatic columns,
+// 0.01 c0^2 / h: about 2000 m/s^2 on the jet's outer rows at c0 = 20 m/s, h = 1.3 mm, a
+// hundred times the jet's capillary accelerations; walls reaching the orifice line kicked
+// the outer rows inward and the jet splashed apart within 0.01 s.) Repulsive boundaries: one line per side, its
+// points ordered from the nozzle's back to the orifice and linked so that its normal faces
+// the plug.
+#pragma once
+
+#include <vector>
+
+#include "config/case_spec.hpp"
+
+namespace sphjet {
+
+struct NozzlePoint {
+    double x = 0, z = 0;
+};
+
+// A straight row of boundary points; `reversed` orders the repulsive wall links so that
+// the normal faces the fluid (Builder::link_line).
+struct NozzleWall {
+    std::vector<NozzlePoint> points;
+    bool reversed = false;
+};
+
+struct NozzleLayout {
+    std::vector<NozzlePoint> fluid;  // the plug
+    std::vector<NozzleWall> walls;   // empty without walls
+    double spacing_across = 0;       // d0 / N
+    double spacing_along = 0;        // ds
+};
+
+// dx, dz: the case's lattice spacings; dynamic: two staggered layers per wall.
+// recess: how far upstream of the orifice line the walls end [m] (the generator: 2h).
+[[nodiscard]] NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess);
+
+}  // namespace sphjet

@@ -1,0 +1,27 @@
+!> The driven nozzle of sphjet's jet cases (cases/jet/README.md): the fluid that fills the
+!> nozzle is a plug pushed out of the orifice at the jet speed u0. A fluid particle is in the
+!> plug while its position lies upstream of the orifice line and within the plug's half-width
+!> of the axis:
+!>   s = (r - r0) . e < 0   and   |(r - r0) x e| <= half_width,
+!> r0 the orifice centre, e the unit jet axis (flow direction). Once it has crossed the
+!> orifice line it is free fluid for good (the plug only moves downstream).
+module nozzle_drive
+  use sphjet_kinds, only: rp
+  use sphjet_types, only: sph_params_t
+  implicit none
+  private
+  public :: in_driven_nozzle
+
+contains
+
+  pure logical function in_driven_nozzle(prm, x, z)
+    type(sph_params_t), intent(in) :: prm
+    real(rp), intent(in) :: x, z
+    real(rp) :: rx, rz
+    rx = x - prm%drive_x0
+    rz = z - prm%drive_z0
+    in_driven_nozzle = rx * prm%drive_ex + rz * prm%drive_ez < 0.0_rp .and. &
+                       abs(rx * prm%drive_ez - rz * prm%drive_ex) <= prm%drive_half_width
+  end function in_driven_nozzle
+
+end module nozzle_drive
