@@ -67,7 +67,10 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
         if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid)) continue;
         if (!ps.active.empty() && ps.active[i] == 0) continue;
         const double s = axial(i);
-        if (s < 0) continue;
+        if (s < 0) {
+            ++r.in_nozzle;
+            continue;
+        }
         if (s < h_ && std::abs(lateral(i)) <= 0.5 * nz_.d0) {
             usum += ps.u[i] * ex + ps.w[i] * ez;
             ++un;

@@ -48,6 +48,7 @@ struct JetSample {
     double u_orifice = 0;        // mean axial velocity at the orifice [m/s] (0 when none there)
     std::optional<double> length;  // breakup length [m]; none: intact
     double jet_tip = 0;          // farthest s of the jet's own cluster [m]
+    std::size_t in_nozzle = 0;   // fluid particles still upstream of the orifice (0: the nozzle ran dry)
     std::vector<Drop> drops;     // detached drops, farthest first
 };
 

@@ -91,9 +91,10 @@ struct NozzleSpec {
     double x0 = 0, z0 = 0;      // orifice centre [m]
     double ex = 0, ez = -1;     // jet axis (unit, flow direction): down, up, left or right
     double d0 = 0;              // orifice width [m]
-    double length = 0;          // nozzle length upstream of the orifice [m]
+    double length_over_d0 = 15; // nozzle length upstream of the orifice / d0 (the paper's aspect ratio)
     double u0 = 0;              // jet speed [m/s]
     bool walls = true;
+    [[nodiscard]] double length() const { return length_over_d0 * d0; }
 };
 
 // Breakup detection while the run goes (modern format [breakup]; analysis/jet_monitor.hpp).

@@ -1149,7 +1149,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         nz.x0 = x0.value, nz.z0 = z0.value, nz.d0 = d0.value, nz.u0 = u0.value;
         double len_over_d0 = 15.0;
         if (auto f = s.num("length_over_d0")) positive(*f), len_over_d0 = f->value;
-        nz.length = len_over_d0 * nz.d0;
+        nz.length_over_d0 = len_over_d0;
         if (auto f = s.string("axis")) {
             const auto dir = choose<std::pair<double, double>>(
                 *f, {{"down", {0.0, -1.0}}, {"up", {0.0, 1.0}}, {"left", {-1.0, 0.0}}, {"right", {1.0, 0.0}}});
@@ -1158,7 +1158,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         s.get("walls", nz.walls);
         // The nozzle, its walls (half a spacing outside the fluid) and the orifice in the box.
         const double across = 0.5 * nz.d0 + (nz.walls ? std::max(p.dx, p.dz) : 0.0);
-        const double back_x = nz.x0 - nz.ex * nz.length, back_z = nz.z0 - nz.ez * nz.length;
+        const double back_x = nz.x0 - nz.ex * nz.length(), back_z = nz.z0 - nz.ez * nz.length();
         const double xlo = std::min(nz.x0, back_x) - std::abs(nz.ez) * across;
         const double xhi = std::max(nz.x0, back_x) + std::abs(nz.ez) * across;
         const double zlo = std::min(nz.z0, back_z) - std::abs(nz.ex) * across;
@@ -1166,12 +1166,12 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         const double tol = 1e-9 * std::max({box.lx, box.lz, 1.0});
         if (xlo < -tol || xhi > box.lx + tol)
             fail(x0, "nozzle outside the box",
-                 "the nozzle (from the orifice " + num(nz.length) + " m back against the axis, " + num(2 * across) +
+                 "the nozzle (from the orifice " + num(nz.length()) + " m back against the axis, " + num(2 * across) +
                      " m wide with its walls) within x in [0, domain.lx = " + num(box.lx) + "]: x from " + num(xlo) +
                      " to " + num(xhi));
         if (zlo < -tol || zhi > box.lz + tol)
             fail(z0, "nozzle outside the box",
-                 "the nozzle (from the orifice " + num(nz.length) + " m back against the axis, " + num(2 * across) +
+                 "the nozzle (from the orifice " + num(nz.length()) + " m back against the axis, " + num(2 * across) +
                      " m wide with its walls) within z in [0, domain.lz = " + num(box.lz) + "]: z from " + num(zlo) +
                      " to " + num(zhi));
         // The breakup axis runs from the orifice along e to the box edge; it must stay in the
@@ -1545,7 +1545,7 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("z0", num(nz.z0), "m");
         s += line("axis", str(axis), "jet direction: down | up | left | right");
         s += line("d0", num(nz.d0), "orifice width D0 [m]");
-        s += line("length_over_d0", num(nz.length / nz.d0), "nozzle length upstream of the orifice / D0");
+        s += line("length_over_d0", num(nz.length_over_d0), "nozzle length upstream of the orifice / D0");
         s += line("u0", num(nz.u0), "jet speed [m/s]");
         s += line("walls", boolean(nz.walls), "boundary lines along the nozzle sides");
     }

@@ -91,6 +91,7 @@ void JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
         ++u_n_;
         u_dev_max_ = std::max(u_dev_max_, std::abs(s.u_flux / spec_.nozzle->u0 - 1.0));
     }
+    if (s.in_nozzle == 0 && !dry_time_) dry_time_ = time;
     if (s.length && !first_time_) {
         first_time_ = time;
         first_length_ = *s.length;
@@ -113,9 +114,15 @@ void JetRun::after_step(const ParticleSet& ps, double time, std::int64_t step, b
     }
 }
 
-bool JetRun::stop_due(double time) const {
-    return spec_.breakup && spec_.breakup->stop_after >= 0 && first_time_ &&
-           time >= *first_time_ + spec_.breakup->stop_after;
+std::string JetRun::stop_due(double time) const {
+    if (spec_.breakup && spec_.breakup->stop_after >= 0 && first_time_ &&
+        time >= *first_time_ + spec_.breakup->stop_after)
+        return fmt::format("[breakup] stop_after = {:g} s after the first breakup (t = {:.6g} s)",
+                           spec_.breakup->stop_after, *first_time_);
+    if (dry_time_)
+        return fmt::format("the nozzle ran dry at t = {:.6g} s (its {:g} d0 of fluid have left at u0 = {:g} m/s)",
+                           *dry_time_, spec_.nozzle->length_over_d0, spec_.nozzle->u0);
+    return {};
 }
 
 void JetRun::finish(bool hdf5) {

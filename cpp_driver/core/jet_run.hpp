@@ -28,8 +28,9 @@ public:
     // After a step: samples when due (every check_every, or when output_written with
     // check_every = 0).
     void after_step(const ParticleSet& ps, double time, std::int64_t step, bool output_written);
-    // True once the run has gone stop_after past the first breakup.
-    [[nodiscard]] bool stop_due(double time) const;
+    // Why the run should stop now (empty: go on): stop_after past the first breakup, or the
+    // nozzle ran dry (no fluid left upstream of the orifice).
+    [[nodiscard]] std::string stop_due(double time) const;
     // The end of a run (or its interruption): /jet in run.h5 and the summary line.
     void finish(bool hdf5);
 
@@ -43,7 +44,7 @@ private:
     analysis::JetMonitor mon_;
     Log log_;
     double next_check_ = 0;
-    std::optional<double> first_time_, first_length_;
+    std::optional<double> first_time_, first_length_, dry_time_;
     double u_sum_ = 0;
     double u_dev_max_ = 0;
     std::int64_t u_n_ = 0;

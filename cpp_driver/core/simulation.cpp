@@ -299,10 +299,8 @@ RunSummary run_simulation(const RunOptions& opts) {
             if (output_due) write_output();
             if (jet) {
                 jet->after_step(solver.particles(), st.time, st.step, output_due);
-                if (jet->stop_due(st.time)) {
-                    log.line(fmt::format("stopping at t = {:.6g} s: [breakup] stop_after = {:g} s after the first "
-                                         "breakup (t = {:.6g} s)",
-                                         st.time, spec.breakup->stop_after, *jet->first_breakup_time()));
+                if (const std::string why = jet->stop_due(st.time); !why.empty()) {
+                    log.line(fmt::format("stopping at t = {:.6g} s: {}", st.time, why));
                     break;
                 }
             }

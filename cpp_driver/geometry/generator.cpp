@@ -517,7 +517,7 @@ void check_spec(const CaseSpec& spec) {
     }
     for (const auto& w : spec.walls) n += 2 * (std::abs(w.height) / p.dz + 2);
     for (const auto& g : spec.gates) n += std::abs(g.zmax - g.zmin) / p.dz + 2;
-    if (spec.nozzle) n += lattice(spec.nozzle->d0 + 4 * std::max(p.dx, p.dz), spec.nozzle->length, std::min(p.dx, p.dz), std::min(p.dx, p.dz));
+    if (spec.nozzle) n += lattice(spec.nozzle->d0 + 4 * std::max(p.dx, p.dz), spec.nozzle->length(), std::min(p.dx, p.dz), std::min(p.dx, p.dz));
     for (const auto& o : spec.obstacles) {
         const double k = std::max(1, o.density);
         n += lattice(o.r.xmax - o.r.xmin, o.r.zmax, p.dx / k, p.dz / k);
@@ -553,9 +553,9 @@ void check_spec(const CaseSpec& spec) {
     if (spec.nozzle) {
         const NozzleSpec& nz = *spec.nozzle;
         if (!(nz.u0 > 0)) throw InputError(where, "nozzle: the jet speed must be positive", "u0 > 0", std::to_string(nz.u0));
-        if (!(nz.d0 > 0) || !(nz.length > 0))
+        if (!(nz.d0 > 0) || !(nz.length() > 0))
             throw InputError(where, "nozzle: empty nozzle", "d0 > 0 and length > 0",
-                             std::to_string(nz.d0) + ", " + std::to_string(nz.length));
+                             std::to_string(nz.d0) + ", " + std::to_string(nz.length()));
         if (!((nz.ex == 0 && std::abs(nz.ez) == 1) || (nz.ez == 0 && std::abs(nz.ex) == 1)))
             throw InputError(where, "nozzle: the axis must be a lattice direction", "down, up, left or right",
                              std::to_string(nz.ex) + ", " + std::to_string(nz.ez));

@@ -11,7 +11,7 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     const double ds = vertical ? dz : dx;
     const double dl_lattice = vertical ? dx : dz;
     const long n_across = std::max(1L, std::lround(nz.d0 / dl_lattice));
-    const long m_along = std::max(1L, std::lround(nz.length / ds));
+    const long m_along = std::max(1L, std::lround(nz.length() / ds));
     const double dl = nz.d0 / static_cast<double>(n_across);
     const double lx = -nz.ez, lz = nz.ex;  // CCW(e)
     const auto at = [&](double s, double l) {

@@ -561,6 +561,25 @@ const BadCase kBad[] = {
     {"LegacyCompiler", "", "[legacy]\ncompiler = 7\n", {"legacy.compiler", "out of range"}},
     {"LegacyHCoefficientTwice", "h_over_dx = 1.3", "h_coefficient = 0.92\n[legacy]\nh_coefficient = 0.92",
      {"legacy.h_coefficient", "given twice"}},
+    // Jets: the nozzle (x0 = 0.25, 0.3 m; d0 = 0.02 m; 15 d0 = 0.3 m long; axis down) in the 0.5 m box.
+    {"NozzleU0Zero", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.0\n",
+     {"nozzle.u0", "must be positive", "u0 > 0", "found 0.0"}},
+    {"NozzleU0Negative", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = -0.25\n",
+     {"nozzle.u0", "must be positive", "found -0.25"}},
+    {"NozzleD0Zero", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0\nu0 = 0.25\n", {"nozzle.d0", "must be positive"}},
+    {"NozzleOutsideBoxTop", "", "[nozzle]\nx0 = 0.25\nz0 = 0.3\nd0 = 0.02\nu0 = 0.25\n",
+     {"nozzle.z0", "nozzle outside the box", "domain.lz = 0.5", "z from 0.3 to 0.6"}},
+    {"NozzleOutsideBoxSide", "", "[nozzle]\nx0 = 0.49\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n",
+     {"nozzle.x0", "nozzle outside the box", "domain.lx = 0.5"}},
+    {"NozzleAxisLeavesDomain", "", "[nozzle]\nx0 = 0.25\nz0 = 0.03\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n",
+     {"nozzle", "the breakup axis leaves the domain", "at least 2 d0 = 0.04", "found 0.03 m"}},
+    {"NozzleAxisLeavesDomainRight", "", "[nozzle]\nx0 = 0.49\nz0 = 0.25\naxis = \"right\"\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n",
+     {"nozzle.axis", "the breakup axis leaves the domain", "found 0.01"}},
+    {"NozzleUnknownAxis", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\naxis = \"sideways\"\nd0 = 0.02\nu0 = 0.25\n",
+     {"nozzle.axis", "unknown value", "\"down\""}},
+    {"BreakupWithoutNozzle", "", "[breakup]\nstop_after = 0.1\n", {"breakup", "needs a jet", "[nozzle]"}},
+    {"BreakupLinkZero", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n[breakup]\nlink_over_h = 0\n",
+     {"breakup.link_over_h", "must be positive"}},
     {"FormatVersion", "^", "format_version = 2\n", {"format_version", "unsupported"}},
     {"SyntaxError", "lx = 0.5", "lx = = 0.5", {"case.toml:9:", "TOML syntax error"}},
     // Text that reaches an assertion in toml++ 3.3 (tests/fuzz/README.md) is a syntax error too.
@@ -664,6 +683,31 @@ TEST(ModernCaseRoundTrip, LaminarAndVariants) {
     // mu mapped to alpha: the written alpha reproduces visc_value exactly.
     expect_round_trip(parse_modern_case(
         replace_line(text, "h_swl = 0.292", "h_swl = 0.292\nmu = 1.0e-3"), "a.toml"));
+}
+
+TEST(ModernCaseRoundTrip, Jet) {
+    const std::string jet = "[nozzle]\nx0 = 0.25\nz0 = 0.2\naxis = \"down\"\nd0 = 0.02\nlength_over_d0 = 7.5\nu0 = 0.17\n"
+                            "walls = false\n[breakup]\nlink_over_h = 1.5\nband_over_d0 = 0.4\ncheck_every = 0.002\n"
+                            "stop_after = 0.05\n";
+    const CaseSpec s = parse_modern_case(std::string(kMinimal) + jet, "jet.toml");
+    ASSERT_TRUE(s.nozzle && s.breakup);
+    EXPECT_EQ(s.nozzle->length_over_d0, 7.5);
+    EXPECT_EQ(s.nozzle->ez, -1.0);
+    EXPECT_FALSE(s.nozzle->walls);
+    EXPECT_EQ(s.params.drive_u, 0.17);
+    EXPECT_TRUE(s.params.domain_box);
+    EXPECT_EQ(s.breakup->band_over_d0, 0.4);
+    expect_round_trip(s);
+    // Axis "right" and the defaults of [breakup] (none given).
+    const CaseSpec r = parse_modern_case(
+        std::string(kMinimal) + "[nozzle]\nx0 = 0.2\nz0 = 0.3\naxis = \"right\"\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.1\n",
+        "right.toml");
+    EXPECT_EQ(r.params.drive_ex, 1.0);
+    EXPECT_EQ(r.params.drive_ez, 0.0);
+    ASSERT_TRUE(r.breakup);
+    EXPECT_EQ(r.breakup->link_over_h, 1.5);
+    EXPECT_LT(r.breakup->stop_after, 0.0);
+    expect_round_trip(r);
 }
 
 TEST(ModernCaseRoundTrip, ProgrammaticSpec) {

@@ -1,0 +1,191 @@
+// The jets: the nozzle's layout, the generator's nozzle, and the jet monitor on synthetic
+// particle sets whose answers are known by construction: a plug moved rigidly gives the
+// orifice flux u0 d0 exactly (the gradual crossing count is linear in time for rows ds
+// apart); a column with one gap of known size gives its breakup length; a row of square
+// drops gives their count and equivalent diameters (d = 2 sqrt(A / pi) to round-off); eq 37
+// gives the paper's Table 1 values to the 2 decimals it prints.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "analysis/jet_monitor.hpp"
+#include "config/case_spec.hpp"
+#include "config/modern_case.hpp"
+#include "geometry/generator.hpp"
+#include "geometry/nozzle.hpp"
+
+using namespace sphjet;
+using namespace sphjet::analysis;
+
+namespace {
+
+NozzleSpec down_nozzle(double d0 = 0.01, double u0 = 0.25) {
+    NozzleSpec nz;
+    nz.x0 = 0.04, nz.z0 = 0.4, nz.ex = 0, nz.ez = -1, nz.d0 = d0, nz.length_over_d0 = 15, nz.u0 = u0;
+    return nz;
+}
+
+TEST(NozzleLayout, PlugFillsTheChannelSymmetrically) {
+    const NozzleSpec nz = down_nozzle();
+    const NozzleLayout lay = nozzle_layout(nz, 0.001, 0.001, false, 0.0026);
+    ASSERT_EQ(lay.fluid.size(), 10u * 150u);  // 10 across, 150 along
+    double xmin = 1, xmax = 0, zmax = 0, zmin = 1;
+    for (const auto& q : lay.fluid) {
+        xmin = std::min(xmin, q.x), xmax = std::max(xmax, q.x);
+        zmin = std::min(zmin, q.z), zmax = std::max(zmax, q.z);
+    }
+    EXPECT_NEAR(xmin, 0.04 - 0.0045, 1e-12);  // half a spacing inside the orifice edges
+    EXPECT_NEAR(xmax, 0.04 + 0.0045, 1e-12);
+    EXPECT_NEAR(zmax, 0.4 + 0.15 - 0.0005, 1e-12);
+    EXPECT_NEAR(zmin, 0.4 + 0.0005, 1e-12);  // upstream of the orifice line
+    // Repulsive walls: one line per side, one spacing outside the outer rows, ending
+    // ceil(2h / ds) = 3 spacings upstream of the orifice; the +l side (l = CCW(e) = +x for a
+    // jet going down) is linked reversed so that its normal faces the plug.
+    ASSERT_EQ(lay.walls.size(), 2u);
+    for (const auto& w : lay.walls) {
+        ASSERT_EQ(w.points.size(), 150u - 3u + 1u);
+        EXPECT_NEAR(std::abs(w.points.front().x - 0.04), 0.0055, 1e-12);
+        EXPECT_NEAR(w.points.back().z, 0.403, 1e-12);
+        EXPECT_EQ(w.reversed, w.points.front().x > 0.04);
+    }
+    // Dynamic boundaries: a staggered second layer per side.
+    EXPECT_EQ(nozzle_layout(nz, 0.001, 0.001, true, 0.0026).walls.size(), 4u);
+    NozzleSpec bare = nz;
+    bare.walls = false;
+    EXPECT_TRUE(nozzle_layout(bare, 0.001, 0.001, false, 0.0026).walls.empty());
+}
+
+TEST(NozzleGenerator, PlugMovesAtU0AndWeighsItsVolume) {
+    const CaseSpec spec = parse_modern_case(R"([numerics]
+boundary = "repulsive"
+lattice = "sc"
+[fluid]
+c0 = 20.0
+[gravity]
+gz = 0.0
+[nozzle]
+x0 = 0.04
+z0 = 0.41
+d0 = 0.01
+u0 = 0.17
+[domain]
+lx = 0.08
+lz = 0.57
+wall_left = false
+wall_right = false
+wall_bottom = false
+[resolution]
+dx = 0.001
+h_over_dx = 1.3
+)",
+                                            "jet.toml");
+    const InitialState init = generate(spec);
+    const ParticleSet& ps = init.particles;
+    ASSERT_EQ(ps.n_fluid(), 1500u);
+    double mass = 0;
+    for (std::size_t i = ps.nb; i < ps.size(); ++i) {
+        EXPECT_EQ(ps.u[i], 0.0);
+        EXPECT_EQ(ps.w[i], -0.17);
+        mass += ps.m[i];
+    }
+    EXPECT_NEAR(mass, 1000.0 * 0.01 * 0.15, 1e-12);
+    EXPECT_EQ(ps.wall.size(), ps.nb);  // links for every wall particle
+}
+
+// A rigid plug of rows ds apart moved through the orifice line: the volume out grows by
+// u0 d0 per second whatever the phase of the rows.
+TEST(JetMonitor, FluxOfARigidPlugIsU0D0) {
+    const NozzleSpec nz = down_nozzle();
+    const double ds = 0.001, dl = 0.001, u0 = nz.u0;
+    ParticleSet ps;
+    for (int k = 0; k < 40; ++k)
+        for (int j = 0; j < 10; ++j)
+            ps.push(0.04 - 0.0045 + j * dl, 0.4 + (k + 0.5) * ds, 0, -u0, 1000, 0, 1000 * dl * ds, ParticleKind::Fluid);
+    JetMonitor mon(nz, BreakupSpec{}, 0.0013, 1000.0, ds);
+    mon.start(ps, 0.0);
+    for (int s = 1; s <= 30; ++s) {
+        const double dt = 0.0013;  // not a multiple of ds / u0 = 0.004 s
+        for (std::size_t i = 0; i < ps.size(); ++i) ps.z[i] -= u0 * dt;
+        const JetSample r = mon.sample(ps, s * dt, s);
+        EXPECT_NEAR(r.u_flux, u0, 1e-9) << "sample " << s;
+        EXPECT_NEAR(r.volume_out, u0 * nz.d0 * s * dt, 1e-12);
+    }
+}
+
+// A jet column from the orifice down to s = 0.05 m, a gap of 3 h, then a square drop and,
+// further, a second one: L = 0.05 m, two drops, the head drop the farthest one.
+TEST(JetMonitor, BreakupLengthAndDrops) {
+    const NozzleSpec nz = down_nozzle();
+    const double dx = 0.001, h = 0.0013, rho = 1000, m = rho * dx * dx;
+    ParticleSet ps;
+    ps.push(0.0, 0.0, 0, 0, rho, 0, m, ParticleKind::FixedBoundary);  // a wall particle: ignored
+    ps.nb = ps.nbf = 1;
+    const auto column = [&](double s0, double s1, int across) {
+        for (double s = s0; s <= s1 + 1e-12; s += dx)
+            for (int j = 0; j < across; ++j)
+                ps.push(0.04 + (j - 0.5 * (across - 1)) * dx, 0.4 - s, 0, -0.3, rho, 0, m, ParticleKind::Fluid);
+    };
+    column(0.0005, 0.0495, 6);          // the jet: s up to 0.0495
+    column(0.0495 + 3 * h, 0.0495 + 3 * h + 0.004, 5);  // a drop of 5 x 5 particles
+    column(0.09, 0.092, 3);             // a drop of 3 x 3, farthest
+    JetMonitor mon(nz, BreakupSpec{}, h, rho, dx);
+    mon.start(ps, 0.0);
+    const JetSample r = mon.sample(ps, 0.1, 10);
+    ASSERT_TRUE(r.length);
+    EXPECT_NEAR(*r.length, 0.0495, 1e-12);
+    EXPECT_NEAR(r.jet_tip, 0.0495, 1e-12);
+    ASSERT_EQ(r.drops.size(), 2u);
+    EXPECT_EQ(r.drops[0].particles, 9u);   // the head drop
+    EXPECT_EQ(r.drops[1].particles, 25u);
+    EXPECT_NEAR(r.drops[0].d_eq, 2 * std::sqrt(9 * dx * dx / std::numbers::pi), 1e-12);
+    EXPECT_NEAR(r.drops[1].d_eq, 2 * std::sqrt(25 * dx * dx / std::numbers::pi), 1e-12);
+    EXPECT_NEAR(r.drops[0].s_max, 0.092, 1e-12);
+
+    // Closing the gap to 1.4 h (< 1.5 h) joins the first drop to the jet.
+    ParticleSet joined;
+    joined.push(0.0, 0.0, 0, 0, rho, 0, m, ParticleKind::FixedBoundary);
+    joined.nb = joined.nbf = 1;
+    std::swap(ps, joined);
+    column(0.0005, 0.0495, 6);
+    column(0.0495 + 1.4 * h, 0.0495 + 1.4 * h + 0.004, 5);
+    JetMonitor mon2(nz, BreakupSpec{}, h, rho, dx);
+    mon2.start(ps, 0.0);
+    const JetSample r2 = mon2.sample(ps, 0.1, 10);
+    EXPECT_FALSE(r2.length);
+    EXPECT_TRUE(r2.drops.empty());
+    EXPECT_NEAR(r2.jet_tip, 0.0495 + 1.4 * h + 0.004, 1e-12);
+}
+
+// A drop beside the axis (beyond the band) breaks nothing on the axis but is a drop.
+TEST(JetMonitor, DropsOffTheAxisAreDropsNotBreakup) {
+    const NozzleSpec nz = down_nozzle();
+    const double dx = 0.001, h = 0.0013, rho = 1000, m = rho * dx * dx;
+    ParticleSet ps;
+    for (double s = 0.0005; s <= 0.03; s += dx)
+        for (int j = 0; j < 4; ++j) ps.push(0.04 + (j - 1.5) * dx, 0.4 - s, 0, 0, rho, 0, m, ParticleKind::Fluid);
+    ps.push(0.04 + 0.02, 0.4 - 0.01, 0, 0, rho, 0, m, ParticleKind::Fluid);  // 2 d0 to the side
+    JetMonitor mon(nz, BreakupSpec{}, h, rho, dx);
+    mon.start(ps, 0.0);
+    const JetSample r = mon.sample(ps, 0.1, 1);
+    EXPECT_FALSE(r.length);
+    EXPECT_EQ(r.drops.size(), 1u);
+}
+
+TEST(JetGroups, Eq37ReproducesTable1) {
+    // Table 1 (paper): We 0.34 / 2.01 / 2.78 / 4.34, eq 37 7.62 / 18.51 / 21.78 / 27.22.
+    const double u0s[] = {0.07, 0.17, 0.20, 0.25};
+    const double we[] = {0.34, 2.01, 2.78, 4.34};
+    const double eq37[] = {7.62, 18.51, 21.78, 27.22};
+    for (int k = 0; k < 4; ++k) {
+        const JetGroups g = jet_groups(1000, u0s[k], 0.01, 0.072, 1e-3, 9.81);
+        EXPECT_NEAR(g.we, we[k], 0.005 + 1e-9) << u0s[k];  // the paper prints 2 decimals
+        EXPECT_NEAR(g.eq37, eq37[k], 0.005 + 1e-9) << u0s[k];
+        EXPECT_NEAR(g.re, 1000 * u0s[k] * 0.005 / 1e-3, 1e-9);
+    }
+    EXPECT_EQ(jet_groups(1000, 0.25, 0.01, 0.072, 0.0, 9.81).oh, 0.0);  // inviscid: Oh = 0
+}
+
+}  // namespace
