@@ -134,10 +134,18 @@ def last_session(lines):
     return lines[start:]
 
 
+def blew_up(run_dir):
+    """The run's last session stopped on a state check (NaN, density band, collapsed step):
+    a result of the study, not something a resume would get past. -> the FAILED line or None."""
+    session = last_session(read_lines(os.path.join(run_dir, "run.log")))
+    return next((l for l in session if l.startswith("FAILED: state check")), None)
+
+
 def finished(run_dir):
     session = last_session(read_lines(os.path.join(run_dir, "run.log")))
-    return (any(l.startswith("done:") for l in session) and
-            not any(l.startswith("stopped by signal") for l in session))
+    return ((any(l.startswith("done:") for l in session) and
+             not any(l.startswith("stopped by signal") for l in session)) or
+            blew_up(run_dir) is not None)
 
 
 def parse_log(run_dir):
@@ -265,6 +273,11 @@ def cmd_run(args):
             print(f"{head}: stopped by signal {sig} (sphjet exit {rc}); "
                   f"run `jet_study.py run` again to resume", file=sys.stderr, flush=True)
             return 128 + sig
+        if rc != 0 and blew_up(run_dir):
+            # A blow-up is a result (reported by `report`); the study goes on.
+            print(f"{head}: blew up ({blew_up(run_dir)[:160]}); going on", flush=True)
+            n_run += 1
+            continue
         if rc != 0:
             print(f"{head}: FAILED with exit code {rc}; the end of {log}:\n{tail(log)}",
                   file=sys.stderr, flush=True)
@@ -366,7 +379,14 @@ def read_run(run_dir, sets):
                 r["drops_d"] = sorted((float(x["d_eq_over_d0"]) for x in d), reverse=True)
             except (ValueError, KeyError) as e:
                 r["notes"].append(f"{drops_csv}: {e}")
-    if r["finished"]:
+    boom = blew_up(run_dir)
+    if boom:
+        import re
+        m = re.search(r"\(t = ([-+0-9.eE]+) s\): ([^;]+)", boom)
+        when = f" at t = {float(m.group(1)):.3f} s ({m.group(2)})" if m else ""
+        r["status"] = ("broken, then blew up" if first is not None else "blew up") + when
+        r["notes"].append(f"{os.path.basename(run_dir)}: {boom}")
+    elif r["finished"]:
         r["status"] = "finished" if first is not None else "finished, not broken"
     else:
         r["status"] = "broken, unfinished" if first is not None else "unfinished"
