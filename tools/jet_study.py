@@ -134,6 +134,12 @@ def last_session(lines):
     return lines[start:]
 
 
+def shown(path):
+    """A path as a committed report may name it: relative to the repository when inside it."""
+    rel = os.path.relpath(os.path.abspath(path), REPO)
+    return path if rel.startswith("..") else rel
+
+
 def blew_up(run_dir):
     """The run's last session stopped on a state check (NaN, density band, collapsed step):
     a result of the study, not something a resume would get past. -> the FAILED line or None."""
@@ -471,7 +477,7 @@ def report_tables(out, runs, dx, sdir):
 
     # table1.md
     md = [f"# Table 1: jet breakup length, ours at {res} against the paper\n\n",
-          f"Runs: `{sdir}` (tools/jet_study.py; base case {BASE_CASE}). L/D0 is the first "
+          f"Runs: `{shown(sdir)}` (tools/jet_study.py; base case {BASE_CASE}). L/D0 is the first "
           "breakup (jet.csv, first row with broken = 1). Errors are signed, (L - eq 37)/eq 37; "
           "the paper prints their magnitude. Groups radius-based as the paper: "
           "We = rho u0^2 R/sigma, Re = rho u0 R/mu, Fr = u0/sqrt(g D0), "
@@ -539,7 +545,7 @@ def report_tables(out, runs, dx, sdir):
     write_csv(os.path.join(out, "physics.csv"), header, rows)
     write_text(os.path.join(out, "physics.md"),
                f"# What breaks a planar 2D jet: u0 = 0.25 m/s, Wendland, {res} unless said\n\n"
-               f"Runs: `{sdir}`. At the first breakup (jet.csv, first row with broken = 1): its "
+               f"Runs: `{shown(sdir)}`. At the first breakup (jet.csv, first row with broken = 1): its "
                "time, L/D0, the number of drops and their equivalent diameters (drops.csv, "
                "same step, largest first), the head drop.\n\n" +
                md_table(["run", "change", "D0/dx", "status", "t break (s)", "L/D0", "drops",
