@@ -115,6 +115,13 @@ SimParams unusual_params() {
     p.gate_vz = 1.5;
     p.gate_t_start = 0.02;
     p.gate_z_cap = 0.6 + 1e-3 / 7.0;
+    p.drive_u = 0.07 / 3.0;
+    p.drive_x0 = 0.04 + 1e-3 / 3.0;
+    p.drive_z0 = 0.41;
+    p.drive_ex = 1.0;
+    p.drive_ez = 0.0;
+    p.drive_half_width = 0.005 + 1e-3 / 7.0;
+    p.domain_box = true;
     return p;
 }
 
@@ -152,11 +159,18 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
                                {a.gate_vx, b.gate_vx},
                                {a.gate_vz, b.gate_vz},
                                {a.gate_t_start, b.gate_t_start},
-                               {a.gate_z_cap, b.gate_z_cap}}) {
+                               {a.gate_z_cap, b.gate_z_cap},
+                               {a.drive_u, b.drive_u},
+                               {a.drive_x0, b.drive_x0},
+                               {a.drive_z0, b.drive_z0},
+                               {a.drive_ex, b.drive_ex},
+                               {a.drive_ez, b.drive_ez},
+                               {a.drive_half_width, b.drive_half_width}}) {
         EXPECT_EQ(bits(x), bits(y));
     }
     EXPECT_EQ(a.variable_dt, b.variable_dt);
     EXPECT_EQ(a.st_delta, b.st_delta);
+    EXPECT_EQ(a.domain_box, b.domain_box);
 }
 
 RunState unusual_state() {
@@ -200,7 +214,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // field to the checkpoint (visit_params in io/h5_util.cpp, visit_state in io/checkpoint.cpp)
 // and to this test, then update the sizes here.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(SimParams), 264u) << "SimParams changed: update the checkpoint";
+    EXPECT_EQ(sizeof(SimParams), 320u) << "SimParams changed: update the checkpoint";
     EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
 }
 
@@ -393,6 +407,19 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     EXPECT_EQ(old.gate_vz, 0.0);
     EXPECT_EQ(old.gate_t_start, 0.0);
     EXPECT_EQ(old.gate_z_cap, 0.0);
+
+    // And the driven nozzle and the box domain of the jets: without them, no nozzle.
+    write_sample(dir);
+    {
+        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
+        for (const char* name : {"drive_u", "drive_x0", "drive_z0", "drive_ex", "drive_ez", "drive_half_width",
+                                 "domain_box"})
+            ASSERT_GE(H5Adelete(g, name), 0);
+    }
+    const SimParams pre_jet = read_checkpoint(dir).params;
+    EXPECT_EQ(pre_jet.drive_u, 0.0);
+    EXPECT_FALSE(pre_jet.domain_box);
     fs::remove_all(dir);
 }
 

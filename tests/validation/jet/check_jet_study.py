@@ -18,13 +18,17 @@ import subprocess
 import sys
 
 
+# The tool plots with Debian's matplotlib under /usr/bin/python3 (README).
+PY = "/usr/bin/python3" if pathlib.Path("/usr/bin/python3").exists() else sys.executable
+
+
 def main():
     sphjet, src, work = map(pathlib.Path, sys.argv[1:4])
     tool = src / "tools" / "jet_study.py"
-    r = subprocess.run([sys.executable, tool, "run", "--root", work, "--sphjet", sphjet, "--threads", "2"])
+    r = subprocess.run([PY, tool, "run", "--root", work, "--sphjet", sphjet, "--threads", "2"])
     if r.returncode != 0:
         sys.exit(f"FAIL: jet_study.py run exited {r.returncode}")
-    r = subprocess.run([sys.executable, tool, "report", "--root", work, "--out", work / "report"])
+    r = subprocess.run([PY, tool, "report", "--root", work, "--out", work / "report"])
     if r.returncode != 0:
         sys.exit(f"FAIL: jet_study.py report exited {r.returncode}")
     failures = []
