@@ -1,10 +1,6 @@
 #include "io/h5_util.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
 #include <ctime>
 #include <string_view>
@@ -12,6 +8,7 @@
 #include <type_traits>
 
 #include "config/errors.hpp"
+#include "io/file_write.hpp"
 
 #ifndef SPHJET_VERSION
 #define SPHJET_VERSION "unknown"
@@ -141,18 +138,54 @@ Attribute open_attr(hid_t loc, const std::string& name) {
     return a;
 }
 
-void fsync_path(const std::filesystem::path& p, bool directory) {
-    const int fd = ::open(p.c_str(), directory ? (O_RDONLY | O_DIRECTORY) : O_RDONLY);
-    if (fd < 0) {
-        throw InputError(p.string(), std::string("cannot open for fsync: ") + std::strerror(errno));
+// Bob Jenkins' lookup3 hash (hashlittle, public domain), which HDF5 uses for its metadata
+// checksums (H5_checksum_lookup3 with initval 0).
+std::uint32_t lookup3(const unsigned char* k, std::size_t length) {
+    const auto rot = [](std::uint32_t x, int r) { return (x << r) | (x >> (32 - r)); };
+    const auto word = [](const unsigned char* p) {
+        return std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+               std::uint32_t{p[3]} << 24;
+    };
+    std::uint32_t a, b, c;
+    a = b = c = 0xdeadbeefu + static_cast<std::uint32_t>(length);
+    while (length > 12) {
+        a += word(k), b += word(k + 4), c += word(k + 8);
+        a -= c, a ^= rot(c, 4), c += b;
+        b -= a, b ^= rot(a, 6), a += c;
+        c -= b, c ^= rot(b, 8), b += a;
+        a -= c, a ^= rot(c, 16), c += b;
+        b -= a, b ^= rot(a, 19), a += c;
+        c -= b, c ^= rot(b, 4), b += a;
+        length -= 12, k += 12;
     }
-    const int rc = ::fsync(fd);
-    const int err = errno;
-    ::close(fd);
-    // Some file systems cannot fsync a directory (EINVAL); the rename is still atomic there.
-    if (rc != 0 && !(directory && (err == EINVAL || err == EBADF))) {
-        throw InputError(p.string(), std::string("fsync failed: ") + std::strerror(err));
-    }
+    if (length == 0) return c;
+    unsigned char tail[12] = {};
+    std::memcpy(tail, k, length);
+    a += word(tail), b += word(tail + 4), c += word(tail + 8);
+    c ^= b, c -= rot(b, 14);
+    a ^= c, a -= rot(c, 11);
+    b ^= a, b -= rot(a, 25);
+    c ^= b, c -= rot(b, 16);
+    a ^= c, a -= rot(c, 4);
+    b ^= a, b -= rot(a, 14);
+    c ^= b, c -= rot(b, 24);
+    return c;
+}
+
+// The image of a file still open for writing carries "open for write" in the status flags of
+// its superblock (version 2 and 3, which have a checksum). H5Fget_file_image clears those
+// flags in the copy, but HDF5 1.10 leaves the superblock checksum as it was, so readers
+// refuse the file ("incorrect metadata checksum"). This clears the flags and sets the
+// checksum afresh (a no-op where HDF5 already did both).
+void finish_superblock(std::string& image) {
+    static constexpr unsigned char kSignature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+    auto* p = reinterpret_cast<unsigned char*>(image.data());
+    if (image.size() < 12 || std::memcmp(p, kSignature, 8) != 0 || p[8] < 2) return;
+    const std::size_t body = 12 + 4 * std::size_t{p[9]};  // four addresses of p[9] bytes
+    if (image.size() < body + 4) return;
+    p[11] = 0;  // status flags: closed
+    const std::uint32_t sum = lookup3(p, body);
+    for (int i = 0; i < 4; ++i) p[body + i] = static_cast<unsigned char>(sum >> (8 * i));
 }
 
 }  // namespace
@@ -189,9 +222,15 @@ std::string where(hid_t loc, const std::string& name) {
     return file + ": " + obj + "/" + name;
 }
 
-File create_file(const std::filesystem::path& path) {
+File create_file(const std::filesystem::path& path, std::size_t size_hint) {
     QuietErrors quiet;
     PropList fapl(H5Pcreate(H5P_FILE_ACCESS));
+    // In memory, grown in steps of the expected size (so that it is rarely copied).
+    const std::size_t increment = std::max<std::size_t>(size_hint + size_hint / 8 + (64u << 10),
+                                                        1u << 20);
+    if (fapl < 0 || H5Pset_fapl_core(fapl, increment, false) < 0) {
+        fail(path.string(), "cannot set up an in-memory HDF5 file");
+    }
     // Low bound 1.8: every object in the oldest format that has checksummed metadata; high
     // bound latest: allows the virtual datasets (1.10) of write_vec3_view.
     H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
@@ -214,13 +253,22 @@ File open_file(const std::filesystem::path& path) {
     return f;
 }
 
-void close_file(File& f, const std::filesystem::path& path) {
-    QuietErrors quiet;
-    const hid_t id = f.release();
-    if (id < 0) return;
-    if (H5Fflush(id, H5F_SCOPE_LOCAL) < 0 || H5Fclose(id) < 0) {
-        fail(path.string(), "cannot write HDF5 file (disk full?)");
+void write_file(File& f, const std::filesystem::path& path, std::string_view what) {
+    std::string image;
+    {
+        QuietErrors quiet;
+        if (H5Fflush(f, H5F_SCOPE_GLOBAL) < 0) fail(path.string(), "cannot finish the file");
+        const ssize_t n = H5Fget_file_image(f, nullptr, 0);
+        if (n < 0) fail(path.string(), "cannot take the file image");
+        image.resize(static_cast<std::size_t>(n));
+        if (H5Fget_file_image(f, image.data(), image.size()) != n) {
+            fail(path.string(), "cannot take the file image");
+        }
+        const hid_t id = f.release();
+        if (H5Fclose(id) < 0) fail(path.string(), "cannot close the in-memory file");
     }
+    finish_superblock(image);
+    write_file_atomically(path, image, what);
 }
 
 Group create_group(hid_t loc, const std::string& name) {
@@ -416,19 +464,6 @@ std::string read_attr_string(hid_t loc, const std::string& name) {
     check_attr(H5Aread(a, mem, buf.data()), loc, name, "cannot read attribute");
     buf.resize(std::strlen(buf.c_str()));
     return buf;
-}
-
-void commit_file(const std::filesystem::path& tmp, const std::filesystem::path& final_path) {
-    fsync_path(tmp, false);
-    std::error_code ec;
-    std::filesystem::rename(tmp, final_path, ec);
-    if (ec) {
-        throw InputError(final_path.string(), "cannot rename " + tmp.filename().string() +
-                                                  " into place: " + ec.message());
-    }
-    const auto dir =
-        final_path.has_parent_path() ? final_path.parent_path() : std::filesystem::path(".");
-    fsync_path(dir, true);
 }
 
 std::string code_version() {
