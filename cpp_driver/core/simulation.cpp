@@ -89,7 +89,8 @@ public:
         } catch (const WriteError& e) {
             if (!warned_) {
                 clear_progress();
-                std::cerr << "sphjet: warning: " << e.what() << "; run.log leaves out the lines it cannot take\n";
+                std::cerr << "sphjet: warning: " << e.what()
+                          << "; run.log leaves out the lines it cannot take\n";
             }
             warned_ = true;
         }
@@ -137,8 +138,9 @@ void truncate_rows(const fs::path& file, std::int64_t keep_rows) {
     in.close();
     std::error_code ec;
     if (keep_bytes < fs::file_size(file, ec) && !ec) fs::resize_file(file, keep_bytes, ec);
-    if (ec) throw WriteError(file.string(), ec.value(), "cannot cut back to " +
-                             std::to_string(keep_rows) + " rows: " + ec.message());
+    if (ec)
+        throw WriteError(file.string(), ec.value(),
+                         fmt::format("cannot cut back to {} rows: {}", keep_rows, ec.message()));
 }
 
 bool dir_has_files(const fs::path& dir) {
@@ -302,8 +304,11 @@ RunSummary run_simulation(const RunOptions& opts) {
     SavedSoFar saved;  // for the message after a failed write (stop_on_write_error)
     saved.output = st.n_outputs;
     if (!opts.resume) saved.output_time = st.time;
-    if (opts.resume) saved.checkpoint = true, saved.checkpoint_step = st.step,
-                     saved.checkpoint_time = st.time;
+    if (opts.resume) {
+        saved.checkpoint = true;
+        saved.checkpoint_step = st.step;
+        saved.checkpoint_time = st.time;
+    }
 
     auto write_output = [&]() {
         st.n_outputs += 1;

@@ -160,7 +160,8 @@ DtFile::DtFile(const fs::path& path, bool append)
     : out_(path, "the DT file", append, " time dt1 dt2 dt_new\n") {}
 
 void DtFile::append(const DtRow& r) {
-    out_.append(fmt::format(" {:16.8E} {:16.8E} {:16.8E} {:16.8E}\n", r.time, r.dt1, r.dt2, r.dt_new));
+    out_.append(
+        fmt::format(" {:16.8E} {:16.8E} {:16.8E} {:16.8E}\n", r.time, r.dt1, r.dt2, r.dt_new));
 }
 
 std::vector<DtRow> read_dt(const fs::path& path) {

@@ -169,7 +169,8 @@ TEST(DiskFull, AppendedRowsAreWholeOrAbsent) {
 
 TEST(DiskFull, DevFullGivesNoSpaceLeftOnDevice) {
     if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
-    const WriteError e = write_error_of([] { AppendFile f("/dev/full", "the run log", true, "x\n"); });
+    const WriteError e =
+        write_error_of([] { AppendFile f("/dev/full", "the run log", true, "x\n"); });
     EXPECT_EQ(e.error_number(), ENOSPC);
     const std::string msg = e.what();
     EXPECT_NE(msg.find("/dev/full: cannot write the run log: No space left on device"),
