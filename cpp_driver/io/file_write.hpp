@@ -6,9 +6,13 @@
 //                          absent), PATH.tmp is gone, and after a machine crash PATH is
 //                          either the old file or the complete new one.
 //   AppendFile             rows appended to a text file (DT, steps.txt, run.log): each append
-//                          lands whole, or the file is cut back to its previous length.
+//                          lands whole, or the file is cut back to its previous length. Rows
+//                          are not fsynced one by one: a machine crash may lose the last ones,
+//                          and a resumed run cuts DT and steps.txt back to its checkpoint.
 // The HDF5 files (snapshots, run.h5, checkpoint.h5) are built in memory and handed to
-// write_file_atomically (io/h5_util.hpp), so HDF5 itself never meets a full disk.
+// write_file_atomically (io/h5_util.hpp), so HDF5 itself never meets a full disk: HDF5 1.10.8
+// crashes at exit (H5F__close_cb) after an H5Fclose that failed for want of space, and keeps
+// the file's descriptor, and so its blocks, until then.
 //
 // A failure throws WriteError (config/errors.hpp) naming the file and the cause from errno,
 // e.g. "run/snap_000012.h5: cannot write the snapshot: No space left on device; expected room

@@ -82,7 +82,9 @@ private:
 // disk only through write_file, in one piece via io/file_write.hpp: HDF5 never meets a full
 // disk (HDF5 1.10 crashes at exit after a failed H5Fclose), and a failed write leaves no
 // temporary file. path is the file's final name (error messages name it); size_hint, the
-// bytes of raw data about to be written, sizes the memory buffer. Objects are written in the
+// bytes of raw data about to be written, sizes the memory buffer. The buffer is kept per
+// thread for the next file (as large as the largest file written: a fresh one costs more in
+// page faults than the disk write); a second file open at the same time gets its own. Objects are written in the
 // HDF5 1.8 format (checksummed metadata, readable by HDF5 1.8 and later) except the virtual
 // datasets of write_vec3_view, which need 1.10.
 [[nodiscard]] File create_file(const std::filesystem::path& path, std::size_t size_hint = 0);

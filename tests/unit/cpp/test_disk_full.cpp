@@ -30,6 +30,7 @@
 #include "config/errors.hpp"
 #include "io/checkpoint.hpp"
 #include "io/file_write.hpp"
+#include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
 
@@ -216,6 +217,31 @@ TEST(DiskFull, CheckpointKeepsTheLastGoodOne) {
     const Checkpoint c = read_checkpoint(dir);
     EXPECT_EQ(c.state.step, 5);
     EXPECT_EQ(c.particles.x, first.x);
+    fs::remove_all(dir);
+}
+
+// HDF5 files are built in memory (io/h5_util.hpp): the first in a thread's reusable buffer,
+// a second one open at the same time in memory of its own. Both must come out whole.
+TEST(DiskFull, TwoInMemoryFilesAtOnceBothReadBack) {
+    const fs::path dir = fresh_dir("two");
+    h5::File a = h5::create_file(dir / "a.h5");
+    h5::File b = h5::create_file(dir / "b.h5");
+    h5::write_attr(a, "name", std::string("a"));
+    h5::write_attr(b, "name", std::string("b"));
+    const std::vector<double> big(300000, 1.5);  // grows b past its first allocation
+    h5::write_array(b, "v", std::span<const double>(big));
+    h5::write_file(b, dir / "b.h5", "b");
+    h5::write_file(a, dir / "a.h5", "a");
+    EXPECT_EQ(h5::read_attr_string(h5::open_file(dir / "a.h5"), "name"), "a");
+    h5::File rb = h5::open_file(dir / "b.h5");
+    EXPECT_EQ(h5::read_attr_string(rb, "name"), "b");
+    EXPECT_EQ(h5::read_doubles(rb, "v"), big);
+    rb.reset();
+    // and the buffer is free again for the next file
+    h5::File c = h5::create_file(dir / "c.h5");
+    h5::write_attr(c, "name", std::string("c"));
+    h5::write_file(c, dir / "c.h5", "c");
+    EXPECT_EQ(h5::read_attr_string(h5::open_file(dir / "c.h5"), "name"), "c");
     fs::remove_all(dir);
 }
 
