@@ -19,6 +19,7 @@
 #include "analysis/run_frames.hpp"
 #include "cli/commands.hpp"
 #include "config/errors.hpp"
+#include "io/file_write.hpp"
 
 namespace sphjet::cli {
 
@@ -136,19 +137,9 @@ void run_analyse(const AnalyseOptions& o) {
     }
 
     // Written beside the target and renamed, so an old CSV is never left half-overwritten.
-    const std::filesystem::path path(o.csv);
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::trunc);
-        if (!f) throw InputError(o.csv, "cannot open for writing");
-        f << header << "\n";
-        for (const auto& r : rows) f << r << "\n";
-        if (!f) throw InputError(o.csv, "write failed");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) throw InputError(o.csv, "cannot replace the file: " + ec.message());
+    std::string csv = header + "\n";
+    for (const auto& r : rows) csv += r + "\n";
+    write_file_atomically(o.csv, csv, "the CSV file");
 
     std::cout << header << "\n";
     for (const auto& r : rows) std::cout << r << "\n";

@@ -12,6 +12,7 @@
 #include "config/errors.hpp"
 #include "config/legacy_case.hpp"
 #include "config/modern_case.hpp"
+#include "io/file_write.hpp"
 
 namespace sphjet::cli {
 
@@ -25,23 +26,10 @@ struct ConvertOptions {
     bool force = false;
 };
 
-// Writes next to the target and renames, so a failure never leaves half a file.
+// Writes next to the target and renames (io/file_write.hpp), so a failure never leaves half a
+// file or a temporary one; WriteError names the file and the cause.
 void write_whole(const fs::path& target, const std::string& text) {
-    fs::path tmp = target;
-    tmp += ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) throw InputError(target.string(), "cannot write the output file", "a writable place", "");
-        f << text;
-        f.flush();
-        if (!f) throw InputError(target.string(), "cannot write the output file", "a writable place", "");
-    }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp);
-        throw InputError(target.string(), "cannot write the output file", "a writable place", ec.message());
-    }
+    write_file_atomically(target, text, "the case file");
 }
 
 void run_convert(const ConvertOptions& o) {

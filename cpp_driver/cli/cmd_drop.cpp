@@ -35,6 +35,7 @@
 #include "analysis/drop.hpp"
 #include "cli/commands.hpp"
 #include "config/errors.hpp"
+#include "io/file_write.hpp"
 #include "io/hdf5_output.hpp"
 
 namespace sphjet::cli {
@@ -99,10 +100,9 @@ void run_drop(const DropOptions& o) {
         for (const auto& r : rows) std::cout << r << "\n";
     }
     if (!o.csv.empty()) {
-        std::ofstream out(o.csv, std::ios::trunc);
-        if (!out) throw InputError(o.csv, "cannot open for writing");
-        out << header << "\n";
-        for (const auto& r : rows) out << r << "\n";
+        std::string csv = header + "\n";
+        for (const auto& r : rows) csv += r + "\n";
+        write_file_atomically(o.csv, csv, "the CSV file");
     }
 
     const double R = o.radius ? *o.radius : ms.front().r_eq;

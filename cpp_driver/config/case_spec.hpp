@@ -110,7 +110,7 @@ enum class OutputFormat { Legacy, Hdf5, Both };
 struct OutputSpec {
     OutputFormat format = OutputFormat::Both;
     long checkpoint_every_steps = 0;       // 0 = off
-    double checkpoint_every_minutes = 10;  // wall-clock minutes; 0 = off
+    double checkpoint_every_minutes = 5;   // wall-clock minutes; 0 = off (CASE_FORMAT.md: why 5)
     bool remove_out_of_domain = true;      // legacy removes and counts leavers; false = stop
     double rho_min_factor = 0.5;           // density band [f_min, f_max] x rho0, else stop
     double rho_max_factor = 1.5;

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "config/errors.hpp"
+#include "io/file_write.hpp"
 
 namespace sphjet {
 namespace {
@@ -81,28 +82,10 @@ std::string e16_8(double v) {
     return rjust(std::string(neg ? "-" : "") + "0." + digits + e, 16);
 }
 
+// Through a temporary file (io/file_write.hpp); ".tmp-sphjet", not ".tmp": sphjet gen writes
+// into directories of the user's, where an INDAT.tmp may be someone else's.
 void write_atomically(const fs::path& path, const std::string& content) {
-    fs::path tmp = path;
-    tmp += ".tmp-sphjet";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw InputError(path.string(), "cannot write the file", "a writable directory",
-                             std::strerror(errno));
-        out << content;
-        out.flush();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw InputError(path.string(), "writing the file failed", "room to write it", std::strerror(errno));
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw InputError(path.string(), "cannot replace the file", "a writable directory", ec.message());
-    }
+    write_file_atomically(path, content, "the legacy input file", ".tmp-sphjet");
 }
 
 // Lines of a text file; a missing file is an InputError naming it and what needs it.

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "config/errors.hpp"
+#include "io/file_write.hpp"
 #include "io/jet_output.hpp"
 
 namespace fs = std::filesystem;
@@ -46,15 +47,8 @@ std::vector<std::vector<std::string>> keep_until(const fs::path& file, std::int6
         rows.push_back(f);
     }
     in.close();
-    write_text_atomically(file, kept);
+    write_file_atomically(file, kept, "the jet table");
     return rows;
-}
-
-void append(const fs::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::app);
-    out << text;
-    out.flush();
-    if (!out) throw InputError(file.string(), "cannot append to the file", "room and permission to write it", std::strerror(errno));
 }
 
 }  // namespace
@@ -71,10 +65,9 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
         for (const auto& r : rows) {
             if (!first_time_ && r[6] == "1") first_time_ = std::stod(r[0]), first_length_ = std::stod(r[7]);
         }
-    } else {
-        write_text_atomically(dir_ / "jet.csv", analysis::jet_csv_header() + "\n");
-        write_text_atomically(dir_ / "drops.csv", analysis::drops_csv_header() + "\n");
     }
+    jet_csv_.emplace(dir_ / "jet.csv", "the jet table", resume, analysis::jet_csv_header() + "\n");
+    drops_csv_.emplace(dir_ / "drops.csv", "the drops table", resume, analysis::drops_csv_header() + "\n");
     mon_.start(ps, time);
     const double every = spec.breakup ? spec.breakup->check_every : 0.0;
     next_check_ = every > 0 ? (std::floor(time / every) + 1) * every : 0.0;
@@ -83,8 +76,8 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
 void JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
     const double d0 = spec_.nozzle->d0;
     const analysis::JetSample s = mon_.sample(ps, time, step);
-    append(dir_ / "jet.csv", analysis::jet_csv_row(s, d0) + "\n");
-    if (!s.drops.empty()) append(dir_ / "drops.csv", analysis::drops_csv_rows(s, d0));
+    jet_csv_->append(analysis::jet_csv_row(s, d0) + "\n");
+    if (!s.drops.empty()) drops_csv_->append(analysis::drops_csv_rows(s, d0));
     // The orifice speed once the jet has left the nozzle by d0.
     if (s.jet_tip >= d0 || s.length) {
         u_sum_ += s.u_flux;

@@ -15,6 +15,7 @@
 #include "analysis/jet_monitor.hpp"
 #include "config/case_spec.hpp"
 #include "core/particles.hpp"
+#include "io/file_write.hpp"
 
 namespace sphjet {
 
@@ -42,6 +43,7 @@ private:
     const CaseSpec& spec_;
     std::filesystem::path dir_;
     analysis::JetMonitor mon_;
+    std::optional<AppendFile> jet_csv_, drops_csv_;  // rows land whole or not at all
     Log log_;
     double next_check_ = 0;
     std::optional<double> first_time_, first_length_, dry_time_;

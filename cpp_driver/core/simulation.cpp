@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -22,6 +24,7 @@
 #include "core/solver.hpp"
 #include "geometry/generator.hpp"
 #include "io/checkpoint.hpp"
+#include "io/file_write.hpp"
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
@@ -75,15 +78,23 @@ std::atomic<int> g_stop_signal{0};
 
 extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
 
-// Log lines go to DIR/run.log always, and to stderr.
+// Log lines go to DIR/run.log always, and to stderr. A line that cannot be written (a full
+// disk) is left out of the file whole, with one warning on stderr: a full disk never stops a
+// run through its log, and the log goes on when space comes back.
 class RunLog {
 public:
-    RunLog(const fs::path& file, bool append) : out_(file, append ? std::ios::app : std::ios::trunc) {
-        if (!out_) throw InputError(file.string(), "cannot open the run log for writing");
-    }
+    RunLog(const fs::path& file, bool append) : out_(file, "the run log", append) {}
     void line(const std::string& s, bool echo = true) {
-        out_ << s << '\n';
-        out_.flush();
+        try {
+            out_.append(s + '\n');
+        } catch (const WriteError& e) {
+            if (!warned_) {
+                clear_progress();
+                std::cerr << "sphjet: warning: " << e.what()
+                          << "; run.log leaves out the lines it cannot take\n";
+            }
+            warned_ = true;
+        }
         if (echo) {
             clear_progress();
             std::cerr << s << '\n';
@@ -100,30 +111,37 @@ public:
     }
 
 private:
-    std::ofstream out_;
+    AppendFile out_;
+    bool warned_ = false;
     bool progress_shown_ = false;
 };
 
 // Keeps the first n data rows of a text file with one header line (DT) or none (steps.txt
-// has a '#' header): used on resume so that rows written after the checkpoint go away.
+// has a '#' header): used on resume so that rows written after the checkpoint go away. The
+// file is cut (which needs no free space) rather than rewritten; a last line without its
+// newline is a half-written row and goes too.
 void truncate_rows(const fs::path& file, std::int64_t keep_rows) {
     if (!fs::exists(file)) return;
-    std::ifstream in(file);
-    std::vector<std::string> lines;
+    std::ifstream in(file, std::ios::binary);
     std::string line;
     std::int64_t rows = 0;
+    std::uintmax_t keep_bytes = 0;
     while (std::getline(in, line)) {
+        if (in.eof()) break;  // no newline after it
         const bool header = line.find_first_not_of(" \t") == std::string::npos || line[0] == '#' ||
                             line.find("time") != std::string::npos;
         if (!header) {
             if (rows >= keep_rows) break;
             ++rows;
         }
-        lines.push_back(line);
+        keep_bytes += line.size() + 1;
     }
     in.close();
-    std::ofstream out(file, std::ios::trunc);
-    for (const auto& l : lines) out << l << '\n';
+    std::error_code ec;
+    if (keep_bytes < fs::file_size(file, ec) && !ec) fs::resize_file(file, keep_bytes, ec);
+    if (ec)
+        throw WriteError(file.string(), ec.value(),
+                         fmt::format("cannot cut back to {} rows: {}", keep_rows, ec.message()));
 }
 
 bool dir_has_files(const fs::path& dir) {
@@ -144,6 +162,51 @@ std::string hms(double seconds) {
     if (!(seconds >= 0) || seconds > 1e7) return "--:--:--";
     const auto s = static_cast<long>(seconds + 0.5);
     return fmt::format("{:02d}:{:02d}:{:02d}", s / 3600, (s / 60) % 60, s % 60);
+}
+
+// What a run has on disk, for the message after a failed write.
+struct SavedSoFar {
+    std::int64_t output = -1;  // the last output written whole (-1: none)
+    double output_time = std::numeric_limits<double>::quiet_NaN();  // its time [s], NaN unknown
+    bool checkpoint = false;  // DIR/checkpoint.h5 holds a good checkpoint
+    std::int64_t checkpoint_step = 0;
+    double checkpoint_time = 0.0;
+};
+
+// After an output file could not be written (a full disk): removes the temporary files
+// (each writer removes its own; this catches any other), logs where the run stands, what is
+// kept and how to go on, and rethrows. The log itself may fail to write: RunLog copes.
+[[noreturn]] void stop_on_write_error(RunLog& log, const fs::path& dir, const RunState& st,
+                                      const SavedSoFar& saved, const WriteError& e) {
+    const auto leftovers = remove_temporaries(dir);
+    log.clear_progress();
+    log.line(fmt::format("FAILED: {}", e.what()));
+    std::string kept;
+    if (saved.output >= 0) {
+        kept = fmt::format("outputs up to number {}", saved.output);
+        if (std::isfinite(saved.output_time))
+            kept += fmt::format(" (t = {:.6g} s)", saved.output_time);
+        kept += " are complete";
+    } else {
+        kept = "no output is complete";
+    }
+    kept += saved.checkpoint ? fmt::format("; the checkpoint {} is at step {} (t = {:.6g} s)",
+                                           checkpoint_path(dir).string(), saved.checkpoint_step,
+                                           saved.checkpoint_time)
+                             : "; no checkpoint was written yet";
+    log.line(fmt::format("the run stopped at step {} (t = {:.6g} s) because {} could not be "
+                         "written; {}{}",
+                         st.step, st.time, e.path(), kept,
+                         leftovers.empty() ? ""
+                                           : fmt::format("; removed the temporary files {}",
+                                                         fmt::join(leftovers, " "))));
+    if (saved.checkpoint)
+        log.line(fmt::format("free some space (or move {} to a larger disk) and continue with "
+                             "`sphjet run --resume {}`",
+                             dir.string(), dir.string()));
+    else
+        log.line("free some space and run the case again (with --force)");
+    throw e;
 }
 
 }  // namespace
@@ -205,7 +268,7 @@ RunSummary run_simulation(const RunOptions& opts) {
 
     RunLog log(dir / "run.log", opts.resume);
     if (!opts.resume) {
-        std::ofstream(dir / "case.toml") << write_modern_case(spec);
+        write_file_atomically(dir / "case.toml", write_modern_case(spec), "the case copy");
     }
     const std::size_t np = solver.particles().size();
     const std::size_t nfluid = solver.particles().n_fluid();
@@ -243,6 +306,14 @@ RunSummary run_simulation(const RunOptions& opts) {
     if (spec.nozzle)
         jet.emplace(spec, dir, opts.resume, solver.particles(), st.time, st.step,
                     [&log](const std::string& s) { log.line(s); });
+    SavedSoFar saved;  // for the message after a failed write (stop_on_write_error)
+    saved.output = st.n_outputs;
+    if (!opts.resume) saved.output_time = st.time;
+    if (opts.resume) {
+        saved.checkpoint = true;
+        saved.checkpoint_step = st.step;
+        saved.checkpoint_time = st.time;
+    }
 
     auto write_output = [&]() {
         st.n_outputs += 1;
@@ -253,8 +324,20 @@ RunSummary run_simulation(const RunOptions& opts) {
             stepsfile->append({static_cast<int>(st.n_outputs), st.step, t});
         }
         if (h5) h5->write(solver.particles(), st, extra);
+        saved.output = st.n_outputs, saved.output_time = t;
     };
-    auto checkpoint = [&]() { write_checkpoint(dir, solver.particles(), st, prm); };
+    auto checkpoint = [&]() {
+        write_checkpoint(dir, solver.particles(), st, prm);
+        saved.checkpoint = true, saved.checkpoint_step = st.step, saved.checkpoint_time = st.time;
+    };
+    // A write that fails after the loop stops the run as one inside it does.
+    const auto or_stop = [&](auto&& write) {
+        try {
+            write();
+        } catch (const WriteError& e) {
+            stop_on_write_error(log, dir, st, saved, e);
+        }
+    };
 
     // ---- signals: stop cleanly with a checkpoint ----
     g_stop_signal.store(0);
@@ -341,6 +424,8 @@ RunSummary run_simulation(const RunOptions& opts) {
                              "failed state)",
                              st.n_outputs));
         throw;
+    } catch (const WriteError& e) {
+        stop_on_write_error(log, dir, st, saved, e);
     }
     log.clear_progress();
 
@@ -350,16 +435,16 @@ RunSummary run_simulation(const RunOptions& opts) {
     sum.time = st.time;
     sum.legacy_time = st.legacy_time;
     sum.removed = st.n_removed;
-    checkpoint();
+    or_stop(checkpoint);
     if (sum.interrupted) {
         log.line(fmt::format("stopped by signal {} at step {} t = {:.6g} s; checkpoint written: "
                              "continue with `sphjet run --resume {}`",
                              g_stop_signal.load(), st.step, st.time, dir.string()));
     } else if (legacy_out) {
-        write_part(dir / "EPART", solver.particles());
+        or_stop([&] { write_part(dir / "EPART", solver.particles()); });
     }
     sum.outputs = st.n_outputs;
-    if (jet) jet->finish(hdf5_out);
+    if (jet) or_stop([&] { jet->finish(hdf5_out); });
     log.line(fmt::format("done: {} steps ({} in all) to t = {:.6g} s (SPHysics clock {:.6g} s) in "
                          "{:.2f} s wall; {:.3g} particle-steps/s; {} outputs; {} particles left "
                          "the domain",

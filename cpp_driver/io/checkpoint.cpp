@@ -71,10 +71,10 @@ void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState
         throw InputError(dir.string(), "cannot create the checkpoint directory: " + ec.message());
     }
     const fs::path final_path = checkpoint_path(dir);
-    fs::path tmp = final_path;
-    tmp += ".tmp";
-    try {
-        h5::File f = h5::create_file(tmp);
+    {
+        std::size_t bytes = ps.size() * 64 + ps.wall.size() * 8;  // raw data
+        for (const ExtraField& e : extra) bytes += e.values.size() * 8;
+        h5::File f = h5::create_file(final_path, bytes);
         h5::write_attr(f, "format", std::string("sphjet-checkpoint"));
         h5::write_attr(f, "format_version", kFormatVersion);
         h5::write_attr(f, "code_version", h5::code_version());
@@ -120,11 +120,7 @@ void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState
                                 kSum);
             }
         }
-        h5::close_file(f, tmp);
-        h5::commit_file(tmp, final_path);
-    } catch (...) {
-        fs::remove(tmp, ec);
-        throw;
+        h5::write_file(f, final_path, "the checkpoint");
     }
 }
 

@@ -1,7 +1,9 @@
 // Checkpoints: everything a run needs to continue bit for bit, in one HDF5 file.
 //
-// DIR/checkpoint.h5 is written as DIR/checkpoint.h5.tmp, fsynced and renamed over the old
-// one, so a crash while checkpointing leaves the previous checkpoint intact. Doubles are
+// DIR/checkpoint.h5 is built in memory, written as DIR/checkpoint.h5.tmp, fsynced and renamed
+// over the old one (io/file_write.hpp), so a crash or a full disk while checkpointing leaves
+// the previous checkpoint intact and no temporary file; the file system needs room for both
+// for a moment. Doubles are
 // stored as IEEE float64 and come back bitwise identical; every array carries HDF5's
 // Fletcher-32 checksum, so a corrupted file fails to read instead of restarting from wrong
 // numbers.
@@ -51,7 +53,8 @@ struct Checkpoint {
 // Writes DIR/checkpoint.h5 atomically (temporary file, fsync, rename, fsync of DIR); creates
 // DIR when missing. extra: named float64 arrays of any length (units are stored when given).
 // Throws std::invalid_argument when the particle arrays differ in length or an extra name is
-// empty or holds '/', InputError when the file cannot be written (the old checkpoint stays).
+// empty or holds '/', WriteError (an InputError) naming the file and the cause ("No space left
+// on device") when the file cannot be written (the old checkpoint stays).
 void write_checkpoint(const std::filesystem::path& dir, const ParticleSet& ps,
                       const RunState& state, const SimParams& params,
                       std::span<const ExtraField> extra = {});

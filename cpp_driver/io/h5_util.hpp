@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -77,13 +78,22 @@ private:
 // "file: /group/name" for messages.
 [[nodiscard]] std::string where(hid_t loc, const std::string& name = {});
 
-// Files. create() truncates. Objects are written in the HDF5 1.8 format (checksummed
-// metadata, readable by HDF5 1.8 and later) except the virtual datasets of write_vec3_view,
-// which need 1.10.
-[[nodiscard]] File create_file(const std::filesystem::path& path);
+// Files. A file is created in memory (HDF5's core driver, no backing store) and reaches the
+// disk only through write_file, in one piece via io/file_write.hpp: HDF5 never meets a full
+// disk (HDF5 1.10 crashes at exit after a failed H5Fclose), and a failed write leaves no
+// temporary file. path is the file's final name (error messages name it); size_hint, the
+// bytes of raw data about to be written, sizes the memory buffer. The buffer is kept per
+// thread for the next file (as large as the largest file written: a fresh one costs more in
+// page faults than the disk write); a second file open at the same time gets its own. Objects are written in the
+// HDF5 1.8 format (checksummed metadata, readable by HDF5 1.8 and later) except the virtual
+// datasets of write_vec3_view, which need 1.10.
+[[nodiscard]] File create_file(const std::filesystem::path& path, std::size_t size_hint = 0);
 [[nodiscard]] File open_file(const std::filesystem::path& path);  // read-only
-// Flushes and closes, throwing when HDF5 reports a failure (the destructor cannot).
-void close_file(File& f, const std::filesystem::path& path);
+// Finishes a file made by create_file, closes it and writes it to its path atomically
+// (write_file_atomically: path.tmp, fsync, rename, fsync of the directory). what names the
+// file in messages ("the snapshot"). Throws WriteError (or InputError for an HDF5 failure);
+// the previous file at path is then untouched.
+void write_file(File& f, const std::filesystem::path& path, std::string_view what);
 
 [[nodiscard]] Group create_group(hid_t loc, const std::string& name);
 [[nodiscard]] Group open_group(hid_t loc, const std::string& name);
@@ -139,10 +149,6 @@ void write_attr(hid_t loc, const std::string& name, const std::string& v);
 // InputError naming the file and the missing attribute.
 void write_params(hid_t loc, const SimParams& p);
 [[nodiscard]] SimParams read_params(hid_t loc);
-
-// Makes a finished temporary file the real one: fsync(tmp), rename(tmp, final), fsync(dir),
-// so that after a crash `final` is either the old file or the complete new one.
-void commit_file(const std::filesystem::path& tmp, const std::filesystem::path& final_path);
 
 // "0.1.0 (git 2910f05abcde)" from SPHJET_VERSION / SPHJET_GIT_HASH.
 [[nodiscard]] std::string code_version();

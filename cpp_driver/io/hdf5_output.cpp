@@ -132,32 +132,24 @@ void remove_quietly(const fs::path& p) {
     fs::remove(p, ec);
 }
 
-// Writes run.h5 (via run.h5.tmp and rename).
+// Writes run.h5 (built in memory, then run.h5.tmp, fsync and rename).
 void write_run_file(const fs::path& dir, const SimParams& params, const std::string& command_line,
                     const std::string& history) {
     const fs::path final_path = dir / kRunName;
-    fs::path tmp = final_path;
-    tmp += ".tmp";
-    try {
-        h5::File f = h5::create_file(tmp);
-        h5::write_attr(f, "format", std::string("sphjet-run"));
-        h5::write_attr(f, "format_version", kFormatVersion);
-        h5::write_attr(f, "code_version", h5::code_version());
-        h5::write_attr(f, "git_hash", h5::git_hash());
-        h5::write_attr(f, "hdf5_version",
-                       fmt::format("{}.{}.{}", H5_VERS_MAJOR, H5_VERS_MINOR, H5_VERS_RELEASE));
-        h5::write_attr(f, "command_line", command_line);
-        h5::write_attr(f, "started_utc", h5::utc_now());
-        h5::write_attr(f, "history", history);
-        h5::Group g = h5::create_group(f, "parameters");
-        h5::write_params(g, params);
-        g.reset();
-        h5::close_file(f, tmp);
-        h5::commit_file(tmp, final_path);
-    } catch (...) {
-        remove_quietly(tmp);
-        throw;
-    }
+    h5::File f = h5::create_file(final_path);
+    h5::write_attr(f, "format", std::string("sphjet-run"));
+    h5::write_attr(f, "format_version", kFormatVersion);
+    h5::write_attr(f, "code_version", h5::code_version());
+    h5::write_attr(f, "git_hash", h5::git_hash());
+    h5::write_attr(f, "hdf5_version",
+                   fmt::format("{}.{}.{}", H5_VERS_MAJOR, H5_VERS_MINOR, H5_VERS_RELEASE));
+    h5::write_attr(f, "command_line", command_line);
+    h5::write_attr(f, "started_utc", h5::utc_now());
+    h5::write_attr(f, "history", history);
+    h5::Group g = h5::create_group(f, "parameters");
+    h5::write_params(g, params);
+    g.reset();
+    h5::write_file(f, final_path, "the run file");
 }
 
 }  // namespace
@@ -242,10 +234,10 @@ fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
     for (const ExtraField& e : extra) info.extra.push_back(e.name);
 
     const fs::path final_path = dir_ / info.file;
-    fs::path tmp = final_path;
-    tmp += ".tmp";
-    try {
-        h5::File f = h5::create_file(tmp);
+    {
+        // Raw data: 7 float64 + 1 int64 + 2 int32 per particle, and the extra fields.
+        const std::size_t bytes = ps.size() * (8 * (8 + extra.size()) + 8);
+        h5::File f = h5::create_file(final_path, bytes);
         h5::write_attr(f, "format", std::string("sphjet-snapshot"));
         h5::write_attr(f, "format_version", kFormatVersion);
         h5::write_attr(f, "index", info.index);
@@ -296,11 +288,7 @@ fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
             }
             h5::write_iota(g, "vertices", n);
         }
-        h5::close_file(f, tmp);
-        h5::commit_file(tmp, final_path);
-    } catch (...) {
-        remove_quietly(tmp);
-        throw;
+        h5::write_file(f, final_path, "the snapshot");
     }
 
     snapshots_.push_back(std::move(info));

@@ -5,9 +5,10 @@
 //   snap_000000.h5 ... one file per snapshot (every particle array, with units; time, step,
 //                      dt; a copy of the parameters, so one snapshot stands on its own)
 //   sphjet.xmf         the XDMF temporal collection of all snapshots written so far
-// Each file is written under a temporary name, fsynced and renamed into place, and the index
-// is rewritten the same way after each snapshot: a run killed at any moment leaves every
-// earlier snapshot readable and an index that opens in ParaView.
+// Each file is built in memory, written under a temporary name, fsynced and renamed into place
+// (io/file_write.hpp), and the index is rewritten the same way after each snapshot: a run
+// killed at any moment, or stopped by a full disk, leaves every earlier snapshot readable, an
+// index that opens in ParaView and no temporary file.
 //
 // Snapshot layout (h5dump -H):
 //   /                 attrs format = "sphjet-snapshot", format_version, index, time, step, dt,
@@ -80,7 +81,9 @@ public:
 
     // Writes the next snapshot and rewrites the index; returns the snapshot's path. Every
     // particle array must have ps.size() values, and so must each extra field (whose name
-    // must not be a standard field's). Throws InputError when the file cannot be written.
+    // must not be a standard field's). Throws WriteError (an InputError) naming the file and
+// the cause when the snapshot or the index cannot be written (a snapshot that was written
+// stays, even if the index could not be rewritten to list it).
     std::filesystem::path write(const ParticleSet& ps, const RunState& state,
                                 std::span<const ExtraField> extra = {});
 

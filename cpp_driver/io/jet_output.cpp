@@ -15,25 +15,6 @@ namespace fs = std::filesystem;
 
 namespace sphjet {
 
-void write_text_atomically(const fs::path& path, const std::string& content) {
-    fs::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (out) {
-            out << content;
-            out.flush();
-        }
-        if (!out) {
-            const std::string why = std::strerror(errno);
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw InputError(path.string(), "cannot write the file", "room and permission to write it", why);
-        }
-    }
-    h5::commit_file(tmp, path);
-}
-
 namespace {
 
 const char* column_units(const std::string& name) {
@@ -42,6 +23,24 @@ const char* column_units(const std::string& name) {
     if (name == "flux") return "m^2/s";
     if (name == "u_flux" || name == "u_orifice") return "m/s";
     return "1";
+}
+
+}  // namespace
+
+namespace {
+
+// Copies the scalar attributes of src (strings, integers, floats) onto dst.
+herr_t copy_attr(hid_t src, const char* name, const H5A_info_t*, void* op) {
+    const hid_t dst = *static_cast<hid_t*>(op);
+    h5::Attribute a(H5Aopen(src, name, H5P_DEFAULT));
+    h5::Datatype t(H5Aget_type(a));
+    switch (H5Tget_class(t)) {
+        case H5T_STRING: h5::write_attr(dst, name, h5::read_attr_string(src, name)); break;
+        case H5T_INTEGER: h5::write_attr(dst, name, h5::read_attr_int64(src, name)); break;
+        case H5T_FLOAT: h5::write_attr(dst, name, h5::read_attr_double(src, name)); break;
+        default: break;
+    }
+    return 0;
 }
 
 }  // namespace
@@ -66,34 +65,27 @@ void write_jet_table(const fs::path& dir, std::optional<double> first_time, std:
         if (row.size() != names.size()) break;
         for (std::size_t k = 0; k < row.size(); ++k) cols[k].push_back(row[k]);
     }
-    fs::path tmp = run;
-    tmp += ".tmp";
-    std::error_code ec;
-    fs::copy_file(run, tmp, fs::copy_options::overwrite_existing, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw InputError(run.string(), "cannot copy the run file to add the jet table", "room to write it",
-                         ec.message());
-    }
-    try {
-        h5::QuietErrors quiet;
-        h5::File f(H5Fopen(tmp.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        if (f.get() < 0) throw InputError(tmp.string(), "cannot open for writing", "", h5::last_error());
-        if (h5::has_link(f, "jet")) H5Ldelete(f, "jet", H5P_DEFAULT);
-        h5::Group g = h5::create_group(f, "jet");
-        for (std::size_t k = 0; k < names.size(); ++k) h5::write_array(g, names[k], cols[k], column_units(names[k]));
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        h5::write_attr(g, "first_breakup_time", first_time.value_or(nan));
-        h5::write_attr(g, "first_breakup_L", first_length.value_or(nan));
-        h5::write_attr(g, "eq37_L_over_d0", eq37_l_over_d0);
-        h5::write_attr(g, "source", std::string("jet.csv; columns in cases/jet/README.md"));
-        g.reset();
-        h5::close_file(f, tmp);
-    } catch (...) {
-        fs::remove(tmp, ec);
-        throw;
-    }
-    h5::commit_file(tmp, run);
+    // run.h5 anew in memory: its attributes and groups as they are, and /jet (h5_util.hpp:
+    // written in one piece, the old file untouched on failure).
+    h5::QuietErrors quiet;
+    h5::File src = h5::open_file(run);
+    h5::File dst = h5::create_file(run, 8 * names.size() * (cols.empty() ? 0 : cols[0].size()));
+    hid_t dst_id = dst.get();
+    hsize_t idx = 0;
+    H5Aiterate2(src, H5_INDEX_NAME, H5_ITER_NATIVE, &idx, copy_attr, &dst_id);
+    for (const std::string& name : h5::link_names(src))
+        if (name != "jet" && H5Ocopy(src, name.c_str(), dst, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+            throw InputError(h5::where(src, name), "cannot copy into the new run file", "", h5::last_error());
+    src.reset();
+    h5::Group g = h5::create_group(dst, "jet");
+    for (std::size_t k = 0; k < names.size(); ++k) h5::write_array(g, names[k], cols[k], column_units(names[k]));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    h5::write_attr(g, "first_breakup_time", first_time.value_or(nan));
+    h5::write_attr(g, "first_breakup_L", first_length.value_or(nan));
+    h5::write_attr(g, "eq37_L_over_d0", eq37_l_over_d0);
+    h5::write_attr(g, "source", std::string("jet.csv; columns in cases/CASE_FORMAT.md [breakup]"));
+    g.reset();
+    h5::write_file(dst, run, "the run file");
 }
 
 }  // namespace sphjet

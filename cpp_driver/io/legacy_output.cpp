@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
@@ -67,23 +68,6 @@ std::ifstream open_in(const fs::path& path, const char* what) {
     return in;
 }
 
-// Writes through a temporary file so a failure never leaves `path` half-written.
-template <class Body>
-void write_atomically(const fs::path& path, Body&& body) {
-    fs::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::trunc);
-        if (!out) throw InputError(tmp.string(), "cannot open for writing");
-        body(out);
-        out.flush();
-        if (!out) throw InputError(tmp.string(), "write failed");
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) throw InputError(path.string(), "cannot rename the temporary file: " + ec.message());
-}
-
 }  // namespace
 
 std::string fortran_e16_8(double v) {
@@ -131,17 +115,15 @@ void write_part(const fs::path& path, const ParticleSet& ps) {
             order[k] = i;
         }
     }
-    write_atomically(path, [&](std::ostream& out) {
-        std::string line;
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t i = order[k];
-            line.clear();
-            for (double v : {ps.x[i], ps.z[i], ps.u[i], ps.w[i], ps.rho[i], ps.p[i], ps.m[i]})
-                line += fortran_e16_8(v);
-            line += '\n';
-            out << line;
-        }
-    });
+    std::string text;
+    text.reserve(n * (7 * 16 + 1));
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = order[k];
+        for (double v : {ps.x[i], ps.z[i], ps.u[i], ps.w[i], ps.rho[i], ps.p[i], ps.m[i]})
+            text += fortran_e16_8(v);
+        text += '\n';
+    }
+    write_file_atomically(path, text, "the particle file");
 }
 
 ParticleSet read_part(const fs::path& path, std::size_t nb, std::size_t nbf) {
@@ -175,15 +157,11 @@ ParticleSet read_part(const fs::path& path, std::size_t nb, std::size_t nbf) {
 }
 
 DtFile::DtFile(const fs::path& path, bool append)
-    : path_(path), out_(path, append && fs::exists(path) ? std::ios::app : std::ios::trunc) {
-    if (!out_) throw InputError(path.string(), "cannot open DT file for writing");
-    if (out_.tellp() == 0) out_ << " time dt1 dt2 dt_new\n" << std::flush;
-}
+    : out_(path, "the DT file", append, " time dt1 dt2 dt_new\n") {}
 
 void DtFile::append(const DtRow& r) {
-    out_ << fmt::format(" {:16.8E} {:16.8E} {:16.8E} {:16.8E}\n", r.time, r.dt1, r.dt2, r.dt_new)
-         << std::flush;
-    if (!out_) throw InputError(path_.string(), "write failed");
+    out_.append(
+        fmt::format(" {:16.8E} {:16.8E} {:16.8E} {:16.8E}\n", r.time, r.dt1, r.dt2, r.dt_new));
 }
 
 std::vector<DtRow> read_dt(const fs::path& path) {
@@ -209,14 +187,10 @@ std::vector<DtRow> read_dt(const fs::path& path) {
 }
 
 StepsFile::StepsFile(const fs::path& path, bool append)
-    : path_(path), out_(path, append && fs::exists(path) ? std::ios::app : std::ios::trunc) {
-    if (!out_) throw InputError(path.string(), "cannot open steps file for writing");
-    if (out_.tellp() == 0) out_ << "# output step time\n" << std::flush;
-}
+    : out_(path, "the steps file", append, "# output step time\n") {}
 
 void StepsFile::append(const StepsRow& r) {
-    out_ << fmt::format("{} {} {:.9e}\n", r.output, r.step, r.time) << std::flush;
-    if (!out_) throw InputError(path_.string(), "write failed");
+    out_.append(fmt::format("{} {} {:.9e}\n", r.output, r.step, r.time));
 }
 
 std::vector<StepsRow> read_steps(const fs::path& path) {

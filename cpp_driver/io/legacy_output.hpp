@@ -10,12 +10,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/particles.hpp"
+#include "io/file_write.hpp"
 
 namespace sphjet {
 
@@ -27,8 +27,9 @@ inline constexpr int kFinalOutput = -1;   // EPART
 [[nodiscard]] std::string fortran_e16_8(double v);
 
 // Writes a PART file in legacy order: the particle with id k on line k+1 (ids must be a
-// permutation of 0..n-1; an empty id array means the stored order). Written to a temporary
-// file beside `path` and renamed, so an existing file is never left half-written.
+// permutation of 0..n-1; an empty id array means the stored order). Written atomically
+// (io/file_write.hpp: a temporary file beside `path`, fsync, rename), so an existing file is
+// never left half-written; WriteError names the file and the cause when the disk is full.
 void write_part(const std::filesystem::path& path, const ParticleSet& ps);
 
 // Reads a PART/IPART/EPART file. Lines 1..nbf are fixed boundary, nbf+1..nb moving boundary,
@@ -45,7 +46,8 @@ struct DtRow {
 };
 
 // Writes a DT file as legacy does: header " time dt1 dt2 dt_new", then one row per output.
-// Each row is flushed as it is written, so a crashed run leaves only whole rows.
+// Each row is written with one write() and, when that fails (a full disk), the file is cut
+// back to the rows before it and WriteError is thrown: the file only ever holds whole rows.
 class DtFile {
 public:
     // append: keep an existing file's rows (resume); otherwise start a new file.
@@ -53,8 +55,7 @@ public:
     void append(const DtRow& row);
 
 private:
-    std::filesystem::path path_;
-    std::ofstream out_;
+    AppendFile out_;
 };
 
 // Reads a DT file (the header line is optional); InputError on a malformed row.
@@ -66,7 +67,8 @@ struct StepsRow {
     double time = 0.0;       // [s]
 };
 
-// This fork's steps.txt: "# output step time", then one row per output (flushed per row).
+// This fork's steps.txt: "# output step time", then one row per output (whole rows only, as
+// DtFile).
 class StepsFile {
 public:
     // append: keep an existing file's rows (resume); otherwise start a new file.
@@ -74,8 +76,7 @@ public:
     void append(const StepsRow& row);
 
 private:
-    std::filesystem::path path_;
-    std::ofstream out_;
+    AppendFile out_;
 };
 
 [[nodiscard]] std::vector<StepsRow> read_steps(const std::filesystem::path& path);

@@ -2,11 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <system_error>
-
-#include "config/errors.hpp"
-#include "io/h5_util.hpp"
+#include "io/file_write.hpp"
 
 namespace sphjet::xdmf {
 
@@ -88,21 +84,7 @@ std::string document(std::span<const Grid> grids) {
 }
 
 void write(const std::filesystem::path& path, std::span<const Grid> grids) {
-    const std::string text = document(grids);
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) throw InputError(tmp.string(), "cannot create file");
-        f.write(text.data(), static_cast<std::streamsize>(text.size()));
-        f.close();
-        if (!f) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw InputError(tmp.string(), "cannot write file (disk full?)");
-        }
-    }
-    h5::commit_file(tmp, path);
+    write_file_atomically(path, document(grids), "the XDMF index");
 }
 
 }  // namespace sphjet::xdmf

@@ -41,7 +41,8 @@ struct Grid {
 // The XDMF document: times are written with 17 significant digits (exact doubles).
 [[nodiscard]] std::string document(std::span<const Grid> grids);
 
-// Writes document(grids) to path via path.tmp, fsync and rename.
+// Writes document(grids) to path atomically (path.tmp, fsync, rename: io/file_write.hpp);
+// throws WriteError.
 void write(const std::filesystem::path& path, std::span<const Grid> grids);
 
 }  // namespace sphjet::xdmf

@@ -20,6 +20,7 @@ Usage: check_jet.py SPHJET SOURCE_DIR WORK_DIR
 """
 import csv
 import math
+import os
 import pathlib
 import shutil
 import subprocess
@@ -41,6 +42,12 @@ def rows(path):
 
 
 def main():
+    # h5py comes with Debian's python3 (tools/install_deps.sh); ctest may start another one.
+    try:
+        import h5py  # noqa: F401
+    except ImportError:
+        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
     case = src / "cases" / "jet" / "jet.toml"
     shutil.rmtree(work, ignore_errors=True)
