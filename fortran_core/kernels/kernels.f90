@@ -70,33 +70,16 @@ contains
     type(kernel_t), intent(in) :: k
     real(rp), intent(in) :: r2(:)
     real(rp), intent(out) :: w(:), f(:)
-    integer :: i
-    real(rp) :: r, q
+    f = sqrt(r2)   ! r, until the last line of each case
     select case (k%kind)
     case (KERNEL_WENDLAND)
-      !$omp simd private(r, q)
-      do i = 1, size(r2)
-        r = sqrt(r2(i)); q = r * k%inv_h
-        w(i) = k%aw * wendland_f(q); f(i) = k%adw * wendland_dfdq(q) / r
-      end do
+      w = k%aw * wendland_f(f * k%inv_h);  f = k%adw * wendland_dfdq(f * k%inv_h) / f
     case (KERNEL_CUBIC)
-      !$omp simd private(r, q)
-      do i = 1, size(r2)
-        r = sqrt(r2(i)); q = r * k%inv_h
-        w(i) = k%aw * cubic_f(q); f(i) = k%adw * cubic_dfdq(q) / r
-      end do
+      w = k%aw * cubic_f(f * k%inv_h);     f = k%adw * cubic_dfdq(f * k%inv_h) / f
     case (KERNEL_QUADRATIC)
-      !$omp simd private(r, q)
-      do i = 1, size(r2)
-        r = sqrt(r2(i)); q = r * k%inv_h
-        w(i) = k%aw * quadratic_f(q); f(i) = k%adw * quadratic_dfdq(q) / r
-      end do
+      w = k%aw * quadratic_f(f * k%inv_h); f = k%adw * quadratic_dfdq(f * k%inv_h) / f
     case default
-      !$omp simd private(r, q)
-      do i = 1, size(r2)
-        r = sqrt(r2(i)); q = r * k%inv_h
-        w(i) = k%aw * gaussian_f(q); f(i) = k%adw * gaussian_dfdq(q) / r
-      end do
+      w = k%aw * gaussian_f(f * k%inv_h);  f = k%adw * gaussian_dfdq(f * k%inv_h) / f
     end select
   end subroutine kernel_eval_list
 

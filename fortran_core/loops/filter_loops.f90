@@ -88,29 +88,26 @@ contains
     class(filter_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
-    integer :: k, a, b
-    real(rp) :: dx, dz, wab, wa, wb
+    integer :: k
+    real(rp) :: wa, wb
     associate (acc => self%acc, v => self%v, beta => self%beta, rnew => self%rnew, m => self%s%m)
       do k = 1, pl%n
-        a = pl%a(k)
-        b = pl%b(k)
-        dx = pl%dx(k)
-        dz = pl%dz(k)
-        wab = pl%w(k)
-        if (.not. self%mls) then
-          acc(1, a) = acc(1, a) + wab * v(b)
-          acc(2, a) = acc(2, a) + wab * m(b)
-          acc(1, b) = acc(1, b) + wab * v(a)
-          acc(2, b) = acc(2, b) + wab * m(a)
-        else if (self%pass == 1) then
-          call add_moments(acc(:, a), wab * v(b), dx, dz)
-          call add_moments(acc(:, b), wab * v(a), -dx, -dz)
-        else
-          wa = (beta(1, a) + beta(2, a) * dx + beta(3, a) * dz) * wab
-          wb = (beta(1, b) - beta(2, b) * dx - beta(3, b) * dz) * wab
-          rnew(a) = rnew(a) + m(b) * wa
-          rnew(b) = rnew(b) + m(a) * wb
-        end if
+        associate (a => pl%a(k), b => pl%b(k), w => pl%w(k))
+          if (.not. self%mls) then
+            acc(1, a) = acc(1, a) + w * v(b)
+            acc(2, a) = acc(2, a) + w * m(b)
+            acc(1, b) = acc(1, b) + w * v(a)
+            acc(2, b) = acc(2, b) + w * m(a)
+          else if (self%pass == 1) then
+            call add_moments(acc(:, a), w * v(b), pl%dx(k), pl%dz(k))
+            call add_moments(acc(:, b), w * v(a), -pl%dx(k), -pl%dz(k))
+          else
+            wa = (beta(1, a) + beta(2, a) * pl%dx(k) + beta(3, a) * pl%dz(k)) * w
+            wb = (beta(1, b) - beta(2, b) * pl%dx(k) - beta(3, b) * pl%dz(k)) * w
+            rnew(a) = rnew(a) + m(b) * wa
+            rnew(b) = rnew(b) + m(a) * wb
+          end if
+        end associate
       end do
     end associate
     red = max(red, 0.0_rp)

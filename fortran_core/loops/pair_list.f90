@@ -22,48 +22,19 @@ module pair_list
 
 contains
 
-  !> Room for at least m pairs in pl (contents kept).
+  !> Room for at least m pairs in pl; the list is emptied.
   subroutine reserve(pl, m)
     type(pair_list_t), intent(inout) :: pl
     integer, intent(in) :: m
     integer :: cap
+    pl%n = 0
     if (allocated(pl%a)) then
       if (size(pl%a) >= m) return
+      deallocate(pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, pl%mixed, pl%t)
     end if
-    cap = max(1024, 2 * m)
-    call grow_i(pl%a); call grow_i(pl%b)
-    call grow_r(pl%dx); call grow_r(pl%dz); call grow_r(pl%r2)
-    call grow_r(pl%w); call grow_r(pl%f)
-    call grow_l(pl%mixed)
-    if (allocated(pl%t)) deallocate(pl%t)
-    allocate(pl%t(cap, N_SCRATCH))
-
-  contains
-
-    subroutine grow_i(v)
-      integer, allocatable, intent(inout) :: v(:)
-      integer, allocatable :: tmp(:)
-      allocate(tmp(cap))
-      if (allocated(v)) tmp(1:pl%n) = v(1:pl%n)
-      call move_alloc(tmp, v)
-    end subroutine grow_i
-
-    subroutine grow_r(v)
-      real(rp), allocatable, intent(inout) :: v(:)
-      real(rp), allocatable :: tmp(:)
-      allocate(tmp(cap))
-      if (allocated(v)) tmp(1:pl%n) = v(1:pl%n)
-      call move_alloc(tmp, v)
-    end subroutine grow_r
-
-    subroutine grow_l(v)
-      logical, allocatable, intent(inout) :: v(:)
-      logical, allocatable :: tmp(:)
-      allocate(tmp(cap))
-      if (allocated(v)) tmp(1:pl%n) = v(1:pl%n)
-      call move_alloc(tmp, v)
-    end subroutine grow_l
-
+    cap = max(1024, m + m / 2)
+    allocate(pl%a(cap), pl%b(cap), pl%dx(cap), pl%dz(cap), pl%r2(cap), pl%w(cap), pl%f(cap), &
+             pl%mixed(cap), pl%t(cap, N_SCRATCH))
   end subroutine reserve
 
 end module pair_list

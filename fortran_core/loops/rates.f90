@@ -28,6 +28,7 @@ module rates
     type(sorted_t), pointer :: s => null()
     logical :: repulsive = .false., laminar = .false., artificial = .false., tensile = .false.
     real(rp) :: h = 0.0_rp, eta2 = 0.0_rp, alpha = 0.0_rp, inv_wdp = 0.0_rp, beta = 0.0_rp
+    real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
     real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
     real(rp), allocatable :: tr(:)                              !< tensile R per particle
     real(rp), allocatable :: wnx(:), wnz(:), wdb(:), wdf(:)     !< repulsive wall geometry
@@ -66,6 +67,8 @@ contains
     body%laminar = prm%viscosity == VISC_LAMINAR
     body%artificial = prm%viscosity == VISC_ARTIFICIAL
     body%tensile = prm%tensile /= 0
+    body%alpha_art = merge(prm%visc_value, 0.0_rp, body%artificial)
+    body%nu_lam = merge(prm%visc_value, 0.0_rp, body%laminar)
     body%beta = prm%coef / 10.0_rp
     body%c0 = prm%c0
     body%h_swl = prm%h_swl
@@ -83,7 +86,8 @@ contains
       body%tr = tensile_r(s%p(1:n), s%pr(1:n))
     else
       body%inv_wdp = 0.0_rp
-      allocate(body%tr(1))
+      allocate(body%tr(n))
+      body%tr = 0.0_rp
     end if
     if (body%repulsive) then
       allocate(body%wnx(n), body%wnz(n), body%wdb(n), body%wdf(n))
@@ -163,12 +167,13 @@ contains
       duz(k) = vw(a) - vw(b)
       dot = dx(k) * dux(k) + dz(k) * duz(k)
       red = max(red, dot / (r2(k) + b_%eta2))
+      ! Variants off contribute an exact zero (tr = 0, alpha = 0 or nu = 0): no branch here.
       p = pr(a) + pr(b)
-      if (b_%tensile) p = p + tensile_term(tr(a), tr(b), w(k), b_%inv_wdp)
-      if (b_%artificial) p = p + artificial_pi(b_%alpha, b_%h, 0.5_rp * (c(a) + c(b)), &
-                                               0.5_rp * (rho(a) + rho(b)), dot, r2(k), b_%eta2)
+      p = p + tensile_term(tr(a), tr(b), w(k), b_%inv_wdp)
+      p = p + artificial_pi(b_%alpha_art, b_%h, 0.5_rp * (c(a) + c(b)), &
+                            0.5_rp * (rho(a) + rho(b)), dot, r2(k), b_%eta2)
       pv(k) = p
-      if (b_%laminar) lam(k) = laminar_factor(b_%alpha, rho(a), rho(b), f(k), r2(k), b_%eta2)
+      lam(k) = laminar_factor(b_%nu_lam, rho(a), rho(b), f(k), r2(k), b_%eta2)
     end do
   end subroutine rates_pair_terms
 

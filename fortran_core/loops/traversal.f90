@@ -102,10 +102,17 @@ contains
     integer, intent(in) :: row, mode
     real(rp), intent(in) :: support2
     type(pair_list_t), intent(inout) :: pl
-    integer :: cx, c, ncx, ncz
+    integer :: cx, c, ncx, ncz, m
     ncx = s%grid%ncx
     ncz = s%grid%ncz
-    pl%n = 0
+    ! room for every candidate of the row: each particle with its own and the four next cells
+    m = 0
+    do cx = 0, ncx - 1
+      c = 1 + cx + ncx * row
+      m = m + count_in(c) * (count_in(c) + count_in(c + 1) + merge(count_in(c + ncx - 1) &
+          + count_in(c + ncx) + count_in(c + ncx + 1), 0, row + 1 < ncz))
+    end do
+    call reserve(pl, m)
     do cx = 0, ncx - 1
       c = 1 + cx + ncx * row
       if (s%grid%start(c + 1) <= s%grid%start(c)) cycle
@@ -131,13 +138,22 @@ contains
         if (b1 < b0) cycle
         fa = s%fluid(a)
         if (mode == PAIRS_FLUID .and. .not. fa) cycle
-        call reserve(pl, pl%n + b1 - b0 + 1)
         call keep_close(a, b0, b1, s%x, s%z, s%fluid, support2, &
                         merge(-1.0_rp, R2_MIN, mode == PAIRS_ALL), &
                         mode == PAIRS_FLUID .or. (mode == PAIRS_ANY_FLUID .and. .not. fa), &
                         pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%mixed)
       end do
     end subroutine cell_pair
+
+    !> Particles in cell cc (0 for a cell index beyond the grid).
+    pure integer function count_in(cc)
+      integer, intent(in) :: cc
+      if (cc > ncx * ncz) then
+        count_in = 0
+      else
+        count_in = s%grid%start(cc + 1) - s%grid%start(cc)
+      end if
+    end function count_in
 
   end subroutine build_row_pairs
 
@@ -155,16 +171,18 @@ contains
     logical, intent(inout) :: mixed(:)
     integer :: b, k
     real(rp) :: xa, za, dx, dz, r2
-    logical :: fa, keep
+    logical :: fa, keep, nf
     xa = x(a)
     za = z(a)
     fa = fluid(a)
+    nf = .not. need_fluid
     k = n
     do b = b0, b1
       dx = xa - x(b)
       dz = za - z(b)
       r2 = dx * dx + dz * dz
-      keep = (r2 < support2) .and. (r2 > lo2) .and. (fluid(b) .or. .not. need_fluid)
+      ! products of 0/1, not .and.: the compiler would branch on each operand
+      keep = merge(1, 0, r2 < support2) * merge(1, 0, r2 > lo2) * merge(1, 0, fluid(b) .or. nf) /= 0
       pa(k + 1) = a
       pb(k + 1) = b
       pdx(k + 1) = dx
