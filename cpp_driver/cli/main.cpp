@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
     prefer_passive_openmp_waits(argv);
     CLI::App app{"sphjet: 2D weakly compressible SPH (a modern fork of SPHysics 2D) with CSF "
                  "surface tension"};
-    app.set_version_flag("--version", std::string(SPHJET_VERSION) + " (" + sphjet::h5::git_hash() + ")");
+    app.set_version_flag("--version", std::string(SPHJET_VERSION) + " (" + sphjet::h5::git_hash() +
+                                          ", core built for " SPHJET_ARCH ")");
     app.require_subcommand(1);
     sphjet::cli::set_command_line(argc, argv);
     sphjet::cli::register_run(app);

@@ -11,7 +11,7 @@ module sphjet_capi
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
   use sorted_state, only: sorted_t, gather_sorted
-  use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
+  use traversal, only: pair_list_t, build_row_pairs, PAIRS_ALL
   use rates, only: compute_rates
   use predictor_corrector, only: pc_step, update_eos
   use filter_loops, only: apply_density_filter
@@ -268,38 +268,28 @@ contains
     integer(c_int) :: status
     type(state_t) :: st
     type(sorted_t) :: s
+    type(pair_list_t) :: pl
     logical :: ok
-    integer, allocatable :: list(:, :)
-    integer :: row, npair, ip_, a, b, b0, ia, ib
-    real(rp) :: r2
+    integer :: row, k, ia, ib
     status = SPH_ERR_ARGUMENT
     npairs = 0
     if (.not. (prm%h > 0.0_rp)) return
     call bind_state(arr, st, .false., .false., ok)
     if (.not. ok) return
     call gather_sorted(st, prm%h, s)
-    allocate(list(5, MAX_PAIRS_PER_CELL * s%grid%ncx))
     status = SPH_OK
     do row = 0, s%grid%ncz - 1
-      call row_cell_pairs(s%grid, row, list, npair)
-      do ip_ = 1, npair
-        do a = list(1, ip_), list(2, ip_)
-          b0 = list(3, ip_)
-          if (list(5, ip_) == 1) b0 = a + 1
-          do b = b0, list(4, ip_)
-            r2 = (s%x(a) - s%x(b))**2 + (s%z(a) - s%z(b))**2
-            if (r2 >= 4.0_rp * prm%h * prm%h) cycle
-            npairs = npairs + 1
-            if (npairs > capacity) then
-              status = SPH_ERR_CAPACITY
-              cycle
-            end if
-            ia = s%grid%order(a)
-            ib = s%grid%order(b)
-            pi_(npairs) = min(ia, ib) - 1
-            pj_(npairs) = max(ia, ib) - 1
-          end do
-        end do
+      call build_row_pairs(s, row, 4.0_rp * prm%h * prm%h, PAIRS_ALL, pl)
+      do k = 1, pl%n
+        npairs = npairs + 1
+        if (npairs > capacity) then
+          status = SPH_ERR_CAPACITY
+          cycle
+        end if
+        ia = s%grid%order(pl%a(k))
+        ib = s%grid%order(pl%b(k))
+        pi_(npairs) = min(ia, ib) - 1
+        pj_(npairs) = max(ia, ib) - 1
       end do
     end do
   end function sph_neighbour_pairs

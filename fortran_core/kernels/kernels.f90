@@ -9,7 +9,7 @@ module sphjet_kernels
   use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq
   implicit none
   private
-  public :: kernel_t, kernel_setup, kernel_eval, kernel_w0, kernel_valid
+  public :: kernel_t, kernel_setup, kernel_eval, kernel_eval_list, kernel_w0, kernel_valid
 
   type :: kernel_t
     integer(ip) :: kind = KERNEL_WENDLAND
@@ -63,6 +63,25 @@ contains
       w = k%aw * gaussian_f(q);  f = k%adw * gaussian_dfdq(q) / r
     end select
   end subroutine kernel_eval
+
+  !> W and F of a list of squared distances 0 < r2 < (2h)^2, the kernel chosen once outside
+  !> the loop so that each branch is a plain vectorisable loop. Same arithmetic as kernel_eval.
+  pure subroutine kernel_eval_list(k, r2, w, f)
+    type(kernel_t), intent(in) :: k
+    real(rp), intent(in) :: r2(:)
+    real(rp), intent(out) :: w(:), f(:)
+    f = sqrt(r2)   ! r, until the last line of each case
+    select case (k%kind)
+    case (KERNEL_WENDLAND)
+      w = k%aw * wendland_f(f * k%inv_h);  f = k%adw * wendland_dfdq(f * k%inv_h) / f
+    case (KERNEL_CUBIC)
+      w = k%aw * cubic_f(f * k%inv_h);     f = k%adw * cubic_dfdq(f * k%inv_h) / f
+    case (KERNEL_QUADRATIC)
+      w = k%aw * quadratic_f(f * k%inv_h); f = k%adw * quadratic_dfdq(f * k%inv_h) / f
+    case default
+      w = k%aw * gaussian_f(f * k%inv_h);  f = k%adw * gaussian_dfdq(f * k%inv_h) / f
+    end select
+  end subroutine kernel_eval_list
 
   !> W(0), the self contribution of summation formulas.
   pure function kernel_w0(k) result(w0)

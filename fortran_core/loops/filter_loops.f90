@@ -7,12 +7,23 @@ module filter_loops
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, gather_sorted
-  use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID
   use density_filter, only: mls_beta
   use eos_tait, only: tait_pressure, tait_sound_speed
   implicit none
   private
   public :: apply_density_filter
+
+  !> The filter pair loop body: Shepard sums, or MLS moments (pass 1) and the corrected
+  !> density sum (pass 2).
+  type, extends(pair_body_t) :: filter_body_t
+    type(sorted_t), pointer :: s => null()
+    logical :: mls = .false.
+    integer :: pass = 1
+    real(rp), allocatable :: acc(:, :), beta(:, :), v(:), rnew(:)
+  contains
+    procedure :: visit => filter_visit
+  end type filter_body_t
 
 contains
 
@@ -20,12 +31,12 @@ contains
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
-    type(sorted_t), intent(inout) :: s
+    type(sorted_t), intent(inout), target :: s
     integer, intent(out) :: n_singular
     real(rp), allocatable :: acc(:, :), beta(:, :), v(:), rnew(:)
-    integer, allocatable :: list(:, :)
-    integer :: n, k, i, phase, row, npair, ip_, a, b, b0, pass, npass
-    real(rp) :: dx, dz, r2, wab, f, w0, wa, wb
+    type(filter_body_t) :: body
+    integer :: n, k, i, pass, npass
+    real(rp) :: w0, red
     logical :: mls, sing
 
     n_singular = 0
@@ -34,67 +45,31 @@ contains
     call gather_sorted(st, prm%h, s)
     n = s%n
     w0 = kernel_w0(kern)
-    allocate(v(n), rnew(n), beta(3, n))
-    v = s%m(1:n) / s%rho(1:n)
+    allocate(body%v(n), body%rnew(n), body%beta(3, n))
+    body%v = s%m(1:n) / s%rho(1:n)
     npass = merge(2, 1, mls)
-    if (mls) then
-      allocate(acc(6, n))
-    else
-      allocate(acc(2, n))
-    end if
-
+    allocate(body%acc(merge(6, 2, mls), n))
+    body%mls = mls
+    body%s => s
     do pass = 1, npass
-      acc = 0.0_rp
-      rnew = 0.0_rp
-      do phase = 0, 1
-        !$omp parallel private(list, npair, ip_, a, b, b0, dx, dz, r2, wab, f, wa, wb)
-        allocate(list(5, MAX_PAIRS_PER_CELL * s%grid%ncx))
-        !$omp do schedule(dynamic, 1)
-        do row = phase, s%grid%ncz - 1, 2
-          call row_cell_pairs(s%grid, row, list, npair)
-          do ip_ = 1, npair
-            do a = list(1, ip_), list(2, ip_)
-              if (.not. s%fluid(a)) cycle
-              b0 = list(3, ip_)
-              if (list(5, ip_) == 1) b0 = a + 1
-              do b = b0, list(4, ip_)
-                if (.not. s%fluid(b)) cycle
-                dx = s%x(a) - s%x(b)
-                dz = s%z(a) - s%z(b)
-                r2 = dx * dx + dz * dz
-                if (r2 >= kern%support2 .or. r2 <= 1.0e-18_rp) cycle
-                call kernel_eval(kern, sqrt(r2), wab, f)
-                if (.not. mls) then
-                  acc(1, a) = acc(1, a) + wab * v(b)
-                  acc(2, a) = acc(2, a) + wab * s%m(b)
-                  acc(1, b) = acc(1, b) + wab * v(a)
-                  acc(2, b) = acc(2, b) + wab * s%m(a)
-                else if (pass == 1) then
-                  call add_moments(acc(:, a), wab * v(b), dx, dz)
-                  call add_moments(acc(:, b), wab * v(a), -dx, -dz)
-                else
-                  wa = (beta(1, a) + beta(2, a) * dx + beta(3, a) * dz) * wab
-                  wb = (beta(1, b) - beta(2, b) * dx - beta(3, b) * dz) * wab
-                  rnew(a) = rnew(a) + s%m(b) * wa
-                  rnew(b) = rnew(b) + s%m(a) * wb
-                end if
-              end do
-            end do
-          end do
-        end do
-        !$omp end do
-        deallocate(list)
-        !$omp end parallel
-      end do
+      body%pass = pass
+      body%acc = 0.0_rp
+      body%rnew = 0.0_rp
+      red = 0.0_rp
+      call pair_sweep(s, kern, PAIRS_FLUID, body, red)
       if (mls .and. pass == 1) then
         do k = 1, n
           if (.not. s%fluid(k)) cycle
-          acc(1, k) = acc(1, k) + w0 * v(k)
-          call mls_beta(acc(:, k), beta(:, k), sing)
+          body%acc(1, k) = body%acc(1, k) + w0 * body%v(k)
+          call mls_beta(body%acc(:, k), body%beta(:, k), sing)
           if (sing) n_singular = n_singular + 1
         end do
       end if
     end do
+    call move_alloc(body%acc, acc)
+    call move_alloc(body%v, v)
+    call move_alloc(body%beta, beta)
+    call move_alloc(body%rnew, rnew)
 
     do k = 1, n
       if (.not. s%fluid(k)) cycle
@@ -108,6 +83,35 @@ contains
       st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
     end do
   end subroutine apply_density_filter
+
+  subroutine filter_visit(self, pl, red)
+    class(filter_body_t), intent(inout) :: self
+    type(pair_list_t), intent(inout) :: pl
+    real(rp), intent(inout) :: red
+    integer :: k
+    real(rp) :: wa, wb
+    associate (acc => self%acc, v => self%v, beta => self%beta, rnew => self%rnew, m => self%s%m)
+      do k = 1, pl%n
+        associate (a => pl%a(k), b => pl%b(k), w => pl%w(k))
+          if (.not. self%mls) then
+            acc(1, a) = acc(1, a) + w * v(b)
+            acc(2, a) = acc(2, a) + w * m(b)
+            acc(1, b) = acc(1, b) + w * v(a)
+            acc(2, b) = acc(2, b) + w * m(a)
+          else if (self%pass == 1) then
+            call add_moments(acc(:, a), w * v(b), pl%dx(k), pl%dz(k))
+            call add_moments(acc(:, b), w * v(a), -pl%dx(k), -pl%dz(k))
+          else
+            wa = (beta(1, a) + beta(2, a) * pl%dx(k) + beta(3, a) * pl%dz(k)) * w
+            wb = (beta(1, b) - beta(2, b) * pl%dx(k) - beta(3, b) * pl%dz(k)) * w
+            rnew(a) = rnew(a) + m(b) * wa
+            rnew(b) = rnew(b) + m(a) * wb
+          end if
+        end associate
+      end do
+    end associate
+    red = max(red, 0.0_rp)
+  end subroutine filter_visit
 
   pure subroutine add_moments(a, wv, dx, dz)
     real(rp), intent(inout) :: a(6)

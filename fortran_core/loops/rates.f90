@@ -14,7 +14,7 @@ module rates
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
   use sorted_state, only: sorted_t, gather_sorted
-  use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID
   use viscosity, only: artificial_pi, laminar_factor
   use tensile_correction, only: tensile_r, tensile_term
   use repulsive_wall, only: repulsive_force
@@ -22,6 +22,19 @@ module rates
   implicit none
   private
   public :: compute_rates, tensile_q
+
+  !> The rates pair loop body: the case's choices (set once per call) and the sorted state.
+  type, extends(pair_body_t) :: rates_body_t
+    type(sorted_t), pointer :: s => null()
+    logical :: repulsive = .false., laminar = .false., artificial = .false., tensile = .false.
+    real(rp) :: h = 0.0_rp, eta2 = 0.0_rp, alpha = 0.0_rp, inv_wdp = 0.0_rp, beta = 0.0_rp
+    real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
+    real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
+    real(rp), allocatable :: tr(:)                              !< tensile R per particle
+    real(rp), allocatable :: wnx(:), wnz(:), wdb(:), wdf(:)     !< repulsive wall geometry
+  contains
+    procedure :: visit => rates_visit
+  end type rates_body_t
 
 contains
 
@@ -40,124 +53,56 @@ contains
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
-    type(sorted_t), intent(inout) :: s
+    type(sorted_t), intent(inout), target :: s
     real(rp), intent(inout) :: vmax
 
-    real(rp), allocatable :: tr(:), wnx(:), wnz(:), wdb(:), wdf(:)
-    integer, allocatable :: list(:, :)
-    integer :: n, k, i, phase, row, npair, ip_, a, b, b0, fl, wl
-    logical :: repulsive, laminar, artificial, tensile
-    real(rp) :: dx, dz, r2, r, wab, f, gx, gz, dux, duz, dot, pv, lam, dv, t, eta2, alpha, &
-                inv_wdp, wdp, fdummy, sgn, fx, fz, beta, vw
-    real(rp) :: h
+    type(rates_body_t) :: body
+    integer :: n, k, i
+    real(rp) :: wdp, fdummy
 
-    h = prm%h
-    eta2 = 0.01_rp * h * h
-    alpha = prm%visc_value
-    repulsive = prm%boundary == BC_REPULSIVE
-    laminar = prm%viscosity == VISC_LAMINAR
-    artificial = prm%viscosity == VISC_ARTIFICIAL
-    tensile = prm%tensile /= 0
-    beta = prm%coef / 10.0_rp
+    body%h = prm%h
+    body%eta2 = 0.01_rp * prm%h * prm%h
+    body%alpha = prm%visc_value
+    body%repulsive = prm%boundary == BC_REPULSIVE
+    body%laminar = prm%viscosity == VISC_LAMINAR
+    body%artificial = prm%viscosity == VISC_ARTIFICIAL
+    body%tensile = prm%tensile /= 0
+    body%alpha_art = merge(prm%visc_value, 0.0_rp, body%artificial)
+    body%nu_lam = merge(prm%visc_value, 0.0_rp, body%laminar)
+    body%beta = prm%coef / 10.0_rp
+    body%c0 = prm%c0
+    body%h_swl = prm%h_swl
+    body%gz = prm%gz
+    body%wall_viscosity = prm%wall_viscosity
 
-    call gather_sorted(st, h, s)
+    call gather_sorted(st, prm%h, s)
     n = s%n
+    body%s => s
 
-    if (tensile) then
-      call kernel_eval(kern, tensile_q(kern%kind) * h, wdp, fdummy)
-      inv_wdp = 1.0_rp / wdp
-      allocate(tr(n))
-      tr = tensile_r(s%p(1:n), s%pr(1:n))
+    if (body%tensile) then
+      call kernel_eval(kern, tensile_q(kern%kind) * prm%h, wdp, fdummy)
+      body%inv_wdp = 1.0_rp / wdp
+      allocate(body%tr(n))
+      body%tr = tensile_r(s%p(1:n), s%pr(1:n))
     else
-      inv_wdp = 0.0_rp
-      allocate(tr(1))
+      body%inv_wdp = 0.0_rp
+      allocate(body%tr(n))
+      body%tr = 0.0_rp
     end if
-    if (repulsive) then
-      allocate(wnx(n), wnz(n), wdb(n), wdf(n))
+    if (body%repulsive) then
+      allocate(body%wnx(n), body%wnz(n), body%wdb(n), body%wdf(n))
       do k = 1, n
         i = s%grid%order(k)
         if (i <= st%nb) then
-          wnx(k) = st%wall_nx(i); wnz(k) = st%wall_nz(i)
-          wdb(k) = st%wall_dback(i); wdf(k) = st%wall_dfwd(i)
+          body%wnx(k) = st%wall_nx(i); body%wnz(k) = st%wall_nz(i)
+          body%wdb(k) = st%wall_dback(i); body%wdf(k) = st%wall_dfwd(i)
         else
-          wnx(k) = 0.0_rp; wnz(k) = 0.0_rp; wdb(k) = 0.0_rp; wdf(k) = 0.0_rp
+          body%wnx(k) = 0.0_rp; body%wnz(k) = 0.0_rp; body%wdb(k) = 0.0_rp; body%wdf(k) = 0.0_rp
         end if
       end do
     end if
 
-    do phase = 0, 1
-      !$omp parallel private(list, npair, ip_, a, b, b0, dx, dz, r2, r, wab, f, gx, gz, dux, &
-      !$omp&   duz, dot, pv, lam, dv, t, fl, wl, sgn, fx, fz, vw) reduction(max:vmax)
-      allocate(list(5, MAX_PAIRS_PER_CELL * s%grid%ncx))
-      !$omp do schedule(dynamic, 1)
-      do row = phase, s%grid%ncz - 1, 2
-        call row_cell_pairs(s%grid, row, list, npair)
-        do ip_ = 1, npair
-          do a = list(1, ip_), list(2, ip_)
-            b0 = list(3, ip_)
-            if (list(5, ip_) == 1) b0 = a + 1
-            do b = b0, list(4, ip_)
-              if (.not. (s%fluid(a) .or. s%fluid(b))) cycle
-              dx = s%x(a) - s%x(b)
-              dz = s%z(a) - s%z(b)
-              r2 = dx * dx + dz * dz
-              if (r2 >= kern%support2 .or. r2 <= 1.0e-18_rp) cycle
-              r = sqrt(r2)
-              call kernel_eval(kern, r, wab, f)
-              gx = f * dx
-              gz = f * dz
-              dux = s%u(a) - s%u(b)
-              duz = s%w(a) - s%w(b)
-              dot = dx * dux + dz * duz
-              vmax = max(vmax, dot / (r2 + eta2))
-
-              if (repulsive .and. .not. (s%fluid(a) .and. s%fluid(b))) then
-                ! fluid particle fl pushed by wall particle wl
-                if (s%fluid(a)) then
-                  fl = a; wl = b; sgn = 1.0_rp
-                else
-                  fl = b; wl = a; sgn = -1.0_rp
-                end if
-                call repulsive_force(sgn * dx, sgn * dz, sgn * dux, sgn * duz, wnx(wl), wnz(wl), &
-                                     wdb(wl), wdf(wl), s%c(fl), prm%c0, s%z(fl), s%z(wl), &
-                                     s%u(wl), s%w(wl), h, prm%h_swl, prm%gz, beta, fx, fz)
-                vw = s%m(fl) / s%rho(fl) * prm%wall_viscosity * (f * r2) / (r2 + eta2)
-                s%ax(fl) = s%ax(fl) + fx + vw * sgn * dux
-                s%az(fl) = s%az(fl) + fz + vw * sgn * duz
-                cycle
-              end if
-
-              pv = s%pr(a) + s%pr(b)
-              if (tensile) pv = pv + tensile_term(tr(a), tr(b), wab, inv_wdp)
-              if (artificial) pv = pv + artificial_pi(alpha, h, 0.5_rp * (s%c(a) + s%c(b)), &
-                                                      0.5_rp * (s%rho(a) + s%rho(b)), dot, r2, eta2)
-              s%ax(a) = s%ax(a) - s%m(b) * pv * gx
-              s%az(a) = s%az(a) - s%m(b) * pv * gz
-              s%ax(b) = s%ax(b) + s%m(a) * pv * gx
-              s%az(b) = s%az(b) + s%m(a) * pv * gz
-              if (laminar) then
-                lam = laminar_factor(alpha, s%rho(a), s%rho(b), f, r2, eta2)
-                s%ax(a) = s%ax(a) + s%m(b) * lam * dux
-                s%az(a) = s%az(a) + s%m(b) * lam * duz
-                s%ax(b) = s%ax(b) - s%m(a) * lam * dux
-                s%az(b) = s%az(b) - s%m(a) * lam * duz
-              end if
-              dv = dux * gx + duz * gz
-              s%ar(a) = s%ar(a) + s%m(b) * dv
-              s%ar(b) = s%ar(b) + s%m(a) * dv
-              t = 2.0_rp * wab / (s%rho(a) + s%rho(b))
-              s%xu(a) = s%xu(a) - s%m(b) * dux * t
-              s%xw(a) = s%xw(a) - s%m(b) * duz * t
-              s%xu(b) = s%xu(b) + s%m(a) * dux * t
-              s%xw(b) = s%xw(b) + s%m(a) * duz * t
-            end do
-          end do
-        end do
-      end do
-      !$omp end do
-      deallocate(list)
-      !$omp end parallel
-    end do
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax)
 
     if (prm%sigma > 0.0_rp) call surface_tension_rates(prm, kern, st, s)
 
@@ -187,5 +132,128 @@ contains
     !$omp end do
     !$omp end parallel
   end subroutine compute_rates
+
+  !> The pairs of one row task in two passes: the pair terms of every pair (no scatter, the
+  !> variant flags invariant in the loop, so it vectorises), then their accumulation in
+  !> traversal order. Repulsive-wall pairs (one fluid, one wall particle) take the wall
+  !> force instead.
+  subroutine rates_visit(self, pl, red)
+    class(rates_body_t), intent(inout) :: self
+    type(pair_list_t), intent(inout) :: pl
+    real(rp), intent(inout) :: red
+    call rates_pair_terms(self, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, &
+                          self%s%u, self%s%w, self%s%pr, self%s%c, self%s%rho, self%tr, &
+                          pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4), red)
+    call rates_accumulate(self, pl, pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4))
+  end subroutine rates_visit
+
+  !> Per pair: pv (pressure + tensile + artificial viscosity), u_ab and the laminar factor;
+  !> red = max of (u_ab . r_ab)/(r^2 + eta^2).
+  subroutine rates_pair_terms(b_, np, pa, pb, dx, dz, r2, w, f, u, vw, pr, c, rho, tr, &
+                              pv, dux, duz, lam, red)
+    type(rates_body_t), intent(in) :: b_
+    integer, intent(in) :: np, pa(:), pb(:)
+    real(rp), intent(in) :: dx(:), dz(:), r2(:), w(:), f(:), u(:), vw(:), pr(:), c(:), &
+                            rho(:), tr(:)
+    real(rp), intent(out) :: pv(:), dux(:), duz(:), lam(:)
+    real(rp), intent(inout) :: red
+    integer :: k, a, b
+    real(rp) :: dot, p
+    !$omp simd private(a, b, dot, p) reduction(max:red)
+    do k = 1, np
+      a = pa(k)
+      b = pb(k)
+      dux(k) = u(a) - u(b)
+      duz(k) = vw(a) - vw(b)
+      dot = dx(k) * dux(k) + dz(k) * duz(k)
+      red = max(red, dot / (r2(k) + b_%eta2))
+      ! Variants off contribute an exact zero (tr = 0, alpha = 0 or nu = 0): no branch here.
+      p = pr(a) + pr(b)
+      p = p + tensile_term(tr(a), tr(b), w(k), b_%inv_wdp)
+      p = p + artificial_pi(b_%alpha_art, b_%h, 0.5_rp * (c(a) + c(b)), &
+                            0.5_rp * (rho(a) + rho(b)), dot, r2(k), b_%eta2)
+      pv(k) = p
+      lam(k) = laminar_factor(b_%nu_lam, rho(a), rho(b), f(k), r2(k), b_%eta2)
+    end do
+  end subroutine rates_pair_terms
+
+  !> Accumulates the pair terms into the sorted rates, pair by pair in traversal order.
+  subroutine rates_accumulate(b_, pl, pv, dux, duz, lam)
+    type(rates_body_t), intent(in) :: b_
+    type(pair_list_t), intent(in) :: pl
+    real(rp), intent(in) :: pv(:), dux(:), duz(:), lam(:)
+    type(sorted_t), pointer :: s
+    integer :: k, k0
+    s => b_%s
+    ! runs of fluid pairs (all pairs but the repulsive-wall ones) go to the plain sum
+    k0 = 1
+    do k = 1, pl%n
+      if (.not. (b_%repulsive .and. pl%mixed(k))) cycle
+      call accumulate_fluid(k0, k - 1, b_%laminar, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%f, &
+                            pv, dux, duz, lam, s%m, s%rho, s%ax, s%az, s%ar, s%xu, s%xw)
+      call accumulate_wall(b_, s, pl%a(k), pl%b(k), pl%dx(k), pl%dz(k), pl%r2(k), pl%f(k), &
+                           dux(k), duz(k))
+      k0 = k + 1
+    end do
+    call accumulate_fluid(k0, pl%n, b_%laminar, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%f, &
+                          pv, dux, duz, lam, s%m, s%rho, s%ax, s%az, s%ar, s%xu, s%xw)
+  end subroutine rates_accumulate
+
+  !> Pressure (+ viscosity), continuity and XSPH sums of pairs k0..k1.
+  pure subroutine accumulate_fluid(k0, k1, laminar, pa, pb, dx, dz, w, f, pv, dux, duz, lam, &
+                                   m, rho, ax, az, ar, xu, xw)
+    integer, intent(in) :: k0, k1, pa(:), pb(:)
+    logical, intent(in) :: laminar
+    real(rp), intent(in) :: dx(:), dz(:), w(:), f(:), pv(:), dux(:), duz(:), lam(:), m(:), rho(:)
+    real(rp), intent(inout) :: ax(:), az(:), ar(:), xu(:), xw(:)
+    integer :: k, a, b
+    real(rp) :: gx, gz, dv, t
+    do k = k0, k1
+      a = pa(k)
+      b = pb(k)
+      gx = f(k) * dx(k)
+      gz = f(k) * dz(k)
+      ax(a) = ax(a) - m(b) * pv(k) * gx
+      az(a) = az(a) - m(b) * pv(k) * gz
+      ax(b) = ax(b) + m(a) * pv(k) * gx
+      az(b) = az(b) + m(a) * pv(k) * gz
+      if (laminar) then
+        ax(a) = ax(a) + m(b) * lam(k) * dux(k)
+        az(a) = az(a) + m(b) * lam(k) * duz(k)
+        ax(b) = ax(b) - m(a) * lam(k) * dux(k)
+        az(b) = az(b) - m(a) * lam(k) * duz(k)
+      end if
+      dv = dux(k) * gx + duz(k) * gz
+      ar(a) = ar(a) + m(b) * dv
+      ar(b) = ar(b) + m(a) * dv
+      t = 2.0_rp * w(k) / (rho(a) + rho(b))
+      xu(a) = xu(a) - m(b) * dux(k) * t
+      xw(a) = xw(a) - m(b) * duz(k) * t
+      xu(b) = xu(b) + m(a) * dux(k) * t
+      xw(b) = xw(b) + m(a) * duz(k) * t
+    end do
+  end subroutine accumulate_fluid
+
+  !> A repulsive-wall pair: the fluid particle of (a, b) pushed by the wall particle.
+  subroutine accumulate_wall(b_, s, a, b, dx, dz, r2, f, dux, duz)
+    type(rates_body_t), intent(in) :: b_
+    type(sorted_t), intent(inout) :: s
+    integer, intent(in) :: a, b
+    real(rp), intent(in) :: dx, dz, r2, f, dux, duz
+    integer :: fl, wl
+    real(rp) :: sgn, fx, fz, vw
+    if (s%fluid(a)) then
+      fl = a; wl = b; sgn = 1.0_rp
+    else
+      fl = b; wl = a; sgn = -1.0_rp
+    end if
+    call repulsive_force(sgn * dx, sgn * dz, sgn * dux, sgn * duz, &
+                         b_%wnx(wl), b_%wnz(wl), b_%wdb(wl), b_%wdf(wl), s%c(fl), b_%c0, &
+                         s%z(fl), s%z(wl), s%u(wl), s%w(wl), b_%h, b_%h_swl, b_%gz, &
+                         b_%beta, fx, fz)
+    vw = s%m(fl) / s%rho(fl) * b_%wall_viscosity * (f * r2) / (r2 + b_%eta2)
+    s%ax(fl) = s%ax(fl) + fx + vw * sgn * dux
+    s%az(fl) = s%az(fl) + fz + vw * sgn * duz
+  end subroutine accumulate_wall
 
 end module rates

@@ -4,6 +4,7 @@ module sorted_state
   use sphjet_kinds, only: rp, ip, KIND_FLUID
   use sphjet_types, only: state_t
   use cell_list, only: cell_grid_t, build_cell_list
+  use pair_list, only: pair_list_t
   implicit none
   private
   public :: sorted_t, gather_sorted
@@ -15,6 +16,8 @@ module sorted_state
     logical, allocatable :: fluid(:)
     ! accumulated rates (sorted order)
     real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
+    ! one pair list per thread (traversal.f90)
+    type(pair_list_t), allocatable :: lists(:)
   end type sorted_t
 
 contains

@@ -18,7 +18,7 @@ module surface_tension_loops
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t
-  use traversal, only: row_cell_pairs, MAX_PAIRS_PER_CELL
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
@@ -65,6 +65,14 @@ module surface_tension_loops
     real(rp), allocatable :: tden(:)       !< tangential denominator (free-surface curvature)
   end type csf_work_t
 
+  !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
+  type, extends(pair_body_t) :: csf_body_t
+    integer :: pass = PASS_COLOUR
+    type(csf_work_t), pointer :: wk => null()
+  contains
+    procedure :: visit => csf_visit
+  end type csf_body_t
+
 contains
 
   !> Adds a_s (sorted order) to s%ax, s%az and stores colour, normal n (unnormalised) and
@@ -76,7 +84,7 @@ contains
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
-    type(csf_work_t) :: wk
+    type(csf_work_t), target :: wk
     real(rp) :: w0, eps, kap, ax, az, wt
     real(rp), allocatable :: kappa(:)
     integer :: n, k, i
@@ -175,80 +183,75 @@ contains
     end if
   end subroutine surface_tension_rates
 
-  !> One sweep over the fluid-fluid pairs closer than 2h (the phase scheme of traversal.f90).
+  !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal).
   subroutine sweep(pass, kern, s, wk)
     integer, intent(in) :: pass
     type(kernel_t), intent(in) :: kern
-    type(sorted_t), intent(in) :: s
-    type(csf_work_t), intent(inout) :: wk
-    integer, allocatable :: list(:, :)
-    integer :: phase, row, npair, ip_, a, b, b0
-    real(rp) :: dx, dz, r2, wab, f, gx, gz, da1, da2, db1, db2
-
-    do phase = 0, 1
-      !$omp parallel private(list, npair, ip_, a, b, b0, dx, dz, r2, wab, f, gx, gz, &
-      !$omp&   da1, da2, db1, db2)
-      allocate(list(5, MAX_PAIRS_PER_CELL * s%grid%ncx))
-      !$omp do schedule(dynamic, 1)
-      do row = phase, s%grid%ncz - 1, 2
-        call row_cell_pairs(s%grid, row, list, npair)
-        do ip_ = 1, npair
-          do a = list(1, ip_), list(2, ip_)
-            if (.not. s%fluid(a)) cycle
-            b0 = list(3, ip_)
-            if (list(5, ip_) == 1) b0 = a + 1
-            do b = b0, list(4, ip_)
-              if (.not. s%fluid(b)) cycle
-              dx = s%x(a) - s%x(b)
-              dz = s%z(a) - s%z(b)
-              r2 = dx * dx + dz * dz
-              if (r2 >= kern%support2 .or. r2 <= 1.0e-18_rp) cycle
-              call kernel_eval(kern, sqrt(r2), wab, f)
-              select case (pass)
-              case (PASS_COLOUR)
-                wk%c(a) = wk%c(a) + wk%v(b) * wab
-                wk%c(b) = wk%c(b) + wk%v(a) * wab
-              case (PASS_NORMAL)
-                gx = f * dx
-                gz = f * dz
-                call csf_normal_pair(wk%v(a), wk%v(b), wk%c(a), wk%c(b), gx, gz, &
-                                     da1, da2, db1, db2)
-                wk%nx(a) = wk%nx(a) + da1
-                wk%nz(a) = wk%nz(a) + da2
-                wk%nx(b) = wk%nx(b) + db1
-                wk%nz(b) = wk%nz(b) + db2
-                wk%gx(a) = wk%gx(a) + wk%v(b) * gx
-                wk%gz(a) = wk%gz(a) + wk%v(b) * gz
-                wk%gx(b) = wk%gx(b) - wk%v(a) * gx
-                wk%gz(b) = wk%gz(b) - wk%v(a) * gz
-              case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
-                if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
-                gx = f * dx
-                gz = f * dz
-                call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                        wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                        gx, gz, wab, da1, da2, db1, db2)
-                wk%num(a) = wk%num(a) + da1
-                wk%num(b) = wk%num(b) + db1
-                if (pass == PASS_CURVATURE) then   ! Shepard denominator of eq 23
-                  wk%den(a) = wk%den(a) + da2
-                  wk%den(b) = wk%den(b) + db2
-                else                               ! tangential denominator
-                  call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                           wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                           dx, dz, f, da1, db1)
-                  wk%tden(a) = wk%tden(a) + da1
-                  wk%tden(b) = wk%tden(b) + db1
-                end if
-              end select
-            end do
-          end do
-        end do
-      end do
-      !$omp end do
-      deallocate(list)
-      !$omp end parallel
-    end do
+    type(sorted_t), intent(inout) :: s
+    type(csf_work_t), intent(inout), target :: wk
+    type(csf_body_t) :: body
+    real(rp) :: red
+    body%pass = pass
+    body%wk => wk
+    red = 0.0_rp
+    call pair_sweep(s, kern, PAIRS_FLUID, body, red)
   end subroutine sweep
+
+  !> The pairs of one row task for one CSF pass.
+  subroutine csf_visit(self, pl, red)
+    class(csf_body_t), intent(inout) :: self
+    type(pair_list_t), intent(inout) :: pl
+    real(rp), intent(inout) :: red
+    integer :: k, a, b
+    real(rp) :: dx, dz, wab, f, gx, gz, da1, da2, db1, db2
+    associate (wk => self%wk, pass => self%pass)
+      do k = 1, pl%n
+        a = pl%a(k)
+        b = pl%b(k)
+        dx = pl%dx(k)
+        dz = pl%dz(k)
+        wab = pl%w(k)
+        f = pl%f(k)
+        select case (pass)
+        case (PASS_COLOUR)
+          wk%c(a) = wk%c(a) + wk%v(b) * wab
+          wk%c(b) = wk%c(b) + wk%v(a) * wab
+        case (PASS_NORMAL)
+          gx = f * dx
+          gz = f * dz
+          call csf_normal_pair(wk%v(a), wk%v(b), wk%c(a), wk%c(b), gx, gz, &
+                               da1, da2, db1, db2)
+          wk%nx(a) = wk%nx(a) + da1
+          wk%nz(a) = wk%nz(a) + da2
+          wk%nx(b) = wk%nx(b) + db1
+          wk%nz(b) = wk%nz(b) + db2
+          wk%gx(a) = wk%gx(a) + wk%v(b) * gx
+          wk%gz(a) = wk%gz(a) + wk%v(b) * gz
+          wk%gx(b) = wk%gx(b) - wk%v(a) * gx
+          wk%gz(b) = wk%gz(b) - wk%v(a) * gz
+        case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
+          if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
+          gx = f * dx
+          gz = f * dz
+          call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                                  wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                                  gx, gz, wab, da1, da2, db1, db2)
+          wk%num(a) = wk%num(a) + da1
+          wk%num(b) = wk%num(b) + db1
+          if (pass == PASS_CURVATURE) then   ! Shepard denominator of eq 23
+            wk%den(a) = wk%den(a) + da2
+            wk%den(b) = wk%den(b) + db2
+          else                               ! tangential denominator
+            call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                                     wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                                     dx, dz, f, da1, db1)
+            wk%tden(a) = wk%tden(a) + da1
+            wk%tden(b) = wk%tden(b) + db1
+          end if
+        end select
+      end do
+    end associate
+    red = max(red, 0.0_rp)
+  end subroutine csf_visit
 
 end module surface_tension_loops

@@ -14,11 +14,8 @@ contains
   pure function artificial_pi(alpha, h, cbar, rhobar, dot, r2, eta2) result(pv)
     real(rp), intent(in) :: alpha, h, cbar, rhobar, dot, r2, eta2
     real(rp) :: pv
-    if (dot <= 0.0_rp) then
-      pv = -alpha * cbar * (h * dot / (r2 + eta2)) / rhobar
-    else
-      pv = 0.0_rp
-    end if
+    ! a select, not a branch: the pair loops vectorise over it
+    pv = merge(-alpha * cbar * (h * dot / (r2 + eta2)) / rhobar, 0.0_rp, dot <= 0.0_rp)
   end function artificial_pi
 
   !> Factor L such that du_a/dt += m_b L u_ab (and du_b/dt -= m_a L u_ab); f = (dW/dr)/r.
