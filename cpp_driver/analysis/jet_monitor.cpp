@@ -38,6 +38,11 @@ double JetMonitor::crossing_volume(const ParticleSet& ps) {
     return v;
 }
 
+void JetMonitor::restore(double volume_out, double time) {
+    volume_out_ = volume_out;
+    last_time_ = time;
+}
+
 void JetMonitor::start(const ParticleSet& ps, double time) {
     out_.assign(ps.size(), 0);
     // A resumed run: the particles already out (removed ones too: they left downstream).
@@ -68,7 +73,7 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
         if (!ps.active.empty() && ps.active[i] == 0) continue;
         const double s = axial(i);
         if (s < 0) {
-            ++r.in_nozzle;
+            if (std::abs(lateral(i)) <= 0.5 * nz_.d0 + 0.25 * ds_ && s >= -nz_.length() - ds_) ++r.in_nozzle;
             continue;
         }
         if (s < h_ && std::abs(lateral(i)) <= 0.5 * nz_.d0) {
@@ -101,7 +106,10 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
         q.xc += down.x[k];
         q.zc += down.z[k];
         q.s_max = q.particles == 1 ? down_s[k] : std::max(q.s_max, down_s[k]);
-        if (down_s[k] < down_s[nearest]) nearest = k;
+        // The jet: the cluster of the particle nearest the orifice within the band.
+        const double lat = std::abs((down.x[k] - nz_.x0) * ez - (down.z[k] - nz_.z0) * ex);
+        const double lat_n = std::abs((down.x[nearest] - nz_.x0) * ez - (down.z[nearest] - nz_.z0) * ex);
+        if (lat <= band_ && (lat_n > band_ || down_s[k] < down_s[nearest])) nearest = k;
     }
     const auto jet = static_cast<std::size_t>(labels[nearest]);
     r.jet_tip = d[jet].s_max;
@@ -136,7 +144,7 @@ std::string jet_csv_row(const JetSample& s, double d0) {
     double head = 0, largest = 0;
     if (!s.drops.empty()) head = s.drops.front().d_eq / d0;
     for (const Drop& q : s.drops) largest = std::max(largest, q.d_eq / d0);
-    return fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}", s.time, s.step,
+    return fmt::format("{:.17g},{},{:.17g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}", s.time, s.step,
                        s.volume_out, s.flux, s.u_flux, s.u_orifice, s.length ? 1 : 0, s.length.value_or(0.0),
                        s.length.value_or(0.0) / d0, s.jet_tip / d0, s.drops.size(), head, largest);
 }

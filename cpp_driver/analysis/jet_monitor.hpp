@@ -15,8 +15,9 @@
 //     jet is broken, and the breakup length L is the s of the particle before the gap
 //     (analysis/breakup.hpp).
 //   - drops: the fluid downstream of the orifice (s >= 0) in connected clusters (links of at
-//     most `link`); the cluster of the particle nearest the orifice is the jet, every other
-//     cluster a drop. A drop's equivalent diameter is that of the disc of its area
+//     most `link`); the cluster of the particle nearest the orifice within the band is the
+//     jet, every other cluster a drop. The jet can be broken (a gap along the axis) with no
+//     drop, when the gap is bridged outside the band. A drop's equivalent diameter is that of the disc of its area
 //     (d = 2 sqrt(A / pi), A = sum m / rho). The head drop is the drop whose farthest
 //     particle is farthest along the axis.
 #pragma once
@@ -48,7 +49,7 @@ struct JetSample {
     double u_orifice = 0;        // mean axial velocity at the orifice [m/s] (0 when none there)
     std::optional<double> length;  // breakup length [m]; none: intact
     double jet_tip = 0;          // farthest s of the jet's own cluster [m]
-    std::size_t in_nozzle = 0;   // fluid particles still upstream of the orifice (0: the nozzle ran dry)
+    std::size_t in_nozzle = 0;   // fluid particles still in the nozzle's strip (0: the nozzle ran dry)
     std::vector<Drop> drops;     // detached drops, farthest first
 };
 
@@ -61,6 +62,9 @@ public:
     // one carries on from its particles; removed particles count as out) and counts the
     // volume out.
     void start(const ParticleSet& ps, double time);
+    // After start() on a resume: the volume out and the time of the last sample kept, so
+    // that the next flux is taken over the same interval as in a run never stopped.
+    void restore(double volume_out, double time);
 
     [[nodiscard]] JetSample sample(const ParticleSet& ps, double time, std::int64_t step);
 

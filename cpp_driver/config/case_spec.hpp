@@ -85,8 +85,8 @@ struct FluidSquare {
 // channel of width d0 and length `length` upstream of the orifice, filled with fluid that
 // moves as a rigid plug at u0 along the axis and becomes free fluid when it crosses the
 // orifice line ("a tank filled with particles serves as the nozzle"). With `walls`, a
-// boundary line runs along each side of the channel, half a spacing outside the fluid, from
-// the orifice to the nozzle's back end. The axis is one of the four lattice directions.
+// boundary line runs along each side of the channel, one spacing outside the outer rows,
+// from the nozzle's back end to 2h upstream of the orifice (geometry/nozzle.hpp). The axis is one of the four lattice directions.
 struct NozzleSpec {
     double x0 = 0, z0 = 0;      // orifice centre [m]
     double ex = 0, ez = -1;     // jet axis (unit, flow direction): down, up, left or right

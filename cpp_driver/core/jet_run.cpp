@@ -27,17 +27,20 @@ std::vector<std::string> fields(const std::string& line) {
     return f;
 }
 
-// Keeps the header and the rows whose step (column 2) is at most `step`; returns the kept rows.
+// Keeps the header and the whole rows (ended by a newline, as many fields as the header)
+// whose step (column 2) is at most `step`; returns the kept rows.
 std::vector<std::vector<std::string>> keep_until(const fs::path& file, std::int64_t step) {
     std::vector<std::vector<std::string>> rows;
     if (!fs::exists(file)) return rows;
-    std::ifstream in(file);
+    std::ifstream in(file, std::ios::binary);
     std::string header, line;
     std::getline(in, header);
+    const std::size_t nfields = fields(header).size();
     std::string kept = header + "\n";
     while (std::getline(in, line)) {
+        if (in.eof()) break;  // no newline after it: a torn last row
         const auto f = fields(line);
-        if (f.size() < 2) break;  // a torn last line of a killed run
+        if (f.size() != nfields) break;
         try {
             if (std::stoll(f[1]) > step) break;
         } catch (const std::exception&) {
@@ -63,14 +66,29 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
         const auto rows = keep_until(dir_ / "jet.csv", step);
         (void)keep_until(dir_ / "drops.csv", step);
         for (const auto& r : rows) {
-            if (!first_time_ && r[6] == "1") first_time_ = std::stod(r[0]), first_length_ = std::stod(r[7]);
+            if (!first_time_ && r.at(6) == "1") first_time_ = std::stod(r.at(0)), first_length_ = std::stod(r.at(7));
+            count_orifice_speed(std::stod(r.at(4)), std::stod(r.at(9)) >= 1.0 || r.at(6) == "1");
         }
+        if (!rows.empty()) last_row_ = std::pair{std::stod(rows.back().at(2)), std::stod(rows.back().at(0))};
     }
     jet_csv_.emplace(dir_ / "jet.csv", "the jet table", resume, analysis::jet_csv_header() + "\n");
     drops_csv_.emplace(dir_ / "drops.csv", "the drops table", resume, analysis::drops_csv_header() + "\n");
     mon_.start(ps, time);
-    const double every = spec.breakup ? spec.breakup->check_every : 0.0;
-    next_check_ = every > 0 ? (std::floor(time / every) + 1) * every : 0.0;
+    if (last_row_) mon_.restore(last_row_->first, last_row_->second);
+    next_check_ = next_check_after(time);
+}
+
+double JetRun::next_check_after(double time) const {
+    const double every = spec_.breakup ? spec_.breakup->check_every : 0.0;
+    return every > 0 ? (std::floor(time / every + 1e-9) + 1) * every : 0.0;
+}
+
+// The orifice speed counts once the jet has left the nozzle by d0 (or has broken).
+void JetRun::count_orifice_speed(double u_flux, bool out) {
+    if (!out) return;
+    u_sum_ += u_flux;
+    ++u_n_;
+    u_dev_max_ = std::max(u_dev_max_, std::abs(u_flux / spec_.nozzle->u0 - 1.0));
 }
 
 void JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
@@ -78,20 +96,16 @@ void JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
     const analysis::JetSample s = mon_.sample(ps, time, step);
     jet_csv_->append(analysis::jet_csv_row(s, d0) + "\n");
     if (!s.drops.empty()) drops_csv_->append(analysis::drops_csv_rows(s, d0));
-    // The orifice speed once the jet has left the nozzle by d0.
-    if (s.jet_tip >= d0 || s.length) {
-        u_sum_ += s.u_flux;
-        ++u_n_;
-        u_dev_max_ = std::max(u_dev_max_, std::abs(s.u_flux / spec_.nozzle->u0 - 1.0));
-    }
+    count_orifice_speed(s.u_flux, s.jet_tip >= d0 || s.length);
     if (s.in_nozzle == 0 && !dry_time_) dry_time_ = time;
     if (s.length && !first_time_) {
         first_time_ = time;
         first_length_ = *s.length;
-        const double head = s.drops.empty() ? 0.0 : s.drops.front().d_eq / d0;
-        log_(fmt::format("jet broken at t = {:.6g} s (step {}): L = {:.6g} m, L/D0 = {:.4g}; {} drop(s), the "
-                         "head drop {:.3g} D0 across",
-                         time, step, *s.length, *s.length / d0, s.drops.size(), head));
+        log_(fmt::format("jet broken at t = {:.6g} s (step {}): L = {:.6g} m, L/D0 = {:.4g}; {}", time, step,
+                         *s.length, *s.length / d0,
+                         s.drops.empty() ? std::string("no detached cluster (the gap is bridged off the axis)")
+                                         : fmt::format("{} drop(s), the head drop {:.3g} D0 across", s.drops.size(),
+                                                       s.drops.front().d_eq / d0)));
     }
 }
 
@@ -100,7 +114,7 @@ void JetRun::after_step(const ParticleSet& ps, double time, std::int64_t step, b
     if (every > 0) {
         if (time + 1e-12 >= next_check_) {
             sample(ps, time, step);
-            next_check_ = (std::floor(time / every + 1e-9) + 1) * every;
+            next_check_ = next_check_after(time);
         }
     } else if (output_written) {
         sample(ps, time, step);

@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "analysis/jet_monitor.hpp"
 #include "config/case_spec.hpp"
@@ -39,6 +40,8 @@ public:
 
 private:
     void sample(const ParticleSet& ps, double time, std::int64_t step);
+    [[nodiscard]] double next_check_after(double time) const;
+    void count_orifice_speed(double u_flux, bool out);
 
     const CaseSpec& spec_;
     std::filesystem::path dir_;
@@ -47,6 +50,7 @@ private:
     Log log_;
     double next_check_ = 0;
     std::optional<double> first_time_, first_length_, dry_time_;
+    std::optional<std::pair<double, double>> last_row_;  // resume: volume out and time of the last kept sample
     double u_sum_ = 0;
     double u_dev_max_ = 0;
     std::int64_t u_n_ = 0;

@@ -420,6 +420,13 @@ RunSummary run_simulation(const RunOptions& opts) {
     } catch (const SimulationError& e) {
         log.clear_progress();
         log.line(fmt::format("FAILED: {}", e.what()));
+        if (jet) {  // the jet's record up to the blow-up (its summary and run.h5 /jet)
+            try {
+                jet->finish(hdf5_out);
+            } catch (const std::exception& w) {
+                log.line(fmt::format("the jet table could not be written: {}", w.what()));
+            }
+        }
         log.line(fmt::format("the last good snapshot is output {} (nothing was written from the "
                              "failed state)",
                              st.n_outputs));

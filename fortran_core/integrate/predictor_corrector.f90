@@ -195,8 +195,9 @@ contains
   !> Half step of fluid particle i from its start-of-step values with the current rates:
   !> rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g).
   !> A fluid particle whose start-of-step position lies in a driven nozzle (nozzle_drive)
-  !> moves rigidly with the plug velocity instead: r = r^n + dt2 u_plug, u = u_plug; its
-  !> density still follows continuity.
+  !> moves rigidly with the plug velocity instead: r = r^n + dt2 u_plug, u = u_plug (and
+  !> u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its density still
+  !> follows continuity.
   subroutine half_step(prm, st, i, dt2)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
@@ -209,6 +210,10 @@ contains
         st%w(i) = prm%drive_u * prm%drive_ez
         st%x(i) = st%xo(i) + dt2 * st%u(i)
         st%z(i) = st%zo(i) + dt2 * st%w(i)
+        ! The corrector's u = 2 u^{n+1/2} - u^n must give the plug's velocity also for a
+        ! particle that entered the plug with another one.
+        st%uo(i) = st%u(i)
+        st%wo(i) = st%w(i)
         return
       end if
     end if

@@ -14,8 +14,10 @@ Checks, each with its reason:
      must stay between u0 t (no gravity) and free fall (measured 58% of free fall at 0.1 s).
   3. The detector agrees with itself: at the first breakup L <= the jet's tip, at least one
      drop; run.h5 /jet holds every row of jet.csv.
-  4. A run stopped half-way and resumed writes the same jet.csv, byte for byte, as the
-     straight run (resume truncates the rows written after the checkpoint).
+  4. A run stopped after its first breakup, between two checks (t = 0.1113 s), and resumed
+     writes the same jet.csv, byte for byte, as the straight run: resume cuts the rows after
+     the checkpoint, takes the flux baseline from the last kept row, the first breakup back
+     for stop_after.
 Usage: check_jet.py SPHJET SOURCE_DIR WORK_DIR
 """
 import csv
@@ -54,7 +56,7 @@ def main():
     work.mkdir(parents=True)
     straight, split = work / "straight", work / "split"
     run([sphjet, "run", case, "--out", straight, "-j", "2", "-q"])
-    run([sphjet, "run", case, "--out", split, "-j", "2", "-q", "--tmax", "0.06"])
+    run([sphjet, "run", case, "--out", split, "-j", "2", "-q", "--tmax", "0.1113"])
     run([sphjet, "run", "--resume", split, "-j", "2", "-q", "--tmax", "2.5"])
     failures = []
 
