@@ -661,6 +661,19 @@ def eq37_curve():
     return u, [groups(x) for x in u]
 
 
+def finish_L_figure(fig, ax, xlabel, title, path, plt):
+    """Axes, legend and title of an L/D0 figure, then the PNG."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("breakup length L/D0 [-]")
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def fig_L(out, runs, dx, plt, xkey, fname, xlabel):
     u, gs = eq37_curve()
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
@@ -677,16 +690,8 @@ def fig_L(out, runs, dx, plt, xkey, fname, xlabel):
         if ours:
             ax.plot(*zip(*ours), mk, color=col, ms=7,
                     label=f"ours, {KERNEL_LABEL[kernel]} ({len(ours)} of {len(U0S)} runs)")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("breakup length L/D0 [-]")
-    ax.set_ylim(bottom=0)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title(f"Breakup length against {xkey} (ours at D0/dx = {D0 / dx:g}; "
-                 "paper: 80175 particles)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, fname), dpi=110)
-    plt.close(fig)
+    finish_L_figure(fig, ax, xlabel, f"Breakup length against {xkey} (ours at D0/dx = {D0 / dx:g}; "
+                    "paper: 80175 particles)", os.path.join(out, fname), plt)
 
 
 def fig8(out, runs, dx, plt):
@@ -704,16 +709,10 @@ def fig8(out, runs, dx, plt):
     if vis:
         ax.plot(*zip(*vis), "o", mfc="none", color="C0", ms=7,
                 label="ours, viscous (mu = 1e-3 Pa s), Wendland")
-    ax.set_xlabel("Weber number We = rho u0^2 (D0/2) / sigma [-]")
-    ax.set_ylabel("breakup length L/D0 [-]")
-    ax.set_ylim(bottom=0)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title(f"Inviscid jets (fluid.mu = 0), ours at D0/dx = {D0 / dx:g}\n(the paper's "
-                 "MPS and experimental points are only in its figure)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "fig8_inviscid.png"), dpi=110)
-    plt.close(fig)
+    finish_L_figure(fig, ax, "Weber number We = rho u0^2 (D0/2) / sigma [-]",
+                    f"Inviscid jets (fluid.mu = 0), ours at D0/dx = {D0 / dx:g}\n(the paper's "
+                    "MPS and experimental points are only in its figure)",
+                    os.path.join(out, "fig8_inviscid.png"), plt)
 
 
 def cmd_report(args):
