@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "config/errors.hpp"
@@ -33,9 +34,11 @@ public:
         for (const WallSpec& w : spec_.walls) inner_wall(w);
         for (const ObstacleSpec& o : spec_.obstacles) obstacle(o);
         for (const GateSpec& g : spec_.gates) gate(g);
-        if (spec_.nozzle) nozzle_walls(*spec_.nozzle);
+        std::optional<NozzleLayout> nozzle;
+        if (spec_.nozzle) nozzle = nozzle_layout(*spec_.nozzle, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h);
+        if (nozzle) nozzle_walls(*nozzle);
         boundary_density_and_mass();
-        if (spec_.nozzle) nozzle_fluid(*spec_.nozzle);
+        if (nozzle) nozzle_fluid(*spec_.nozzle, *nozzle);
 
         if (spec_.legacy_fill) {
             for (const FluidBlock& b : spec_.fluid_blocks) legacy_fill(b);
@@ -204,8 +207,8 @@ private:
     }
 
     // A driven nozzle (geometry/nozzle.hpp): its walls are fixed boundary particles.
-    void nozzle_walls(const NozzleSpec& nz) {
-        for (const NozzleWall& w : nozzle_layout(nz, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h).walls) {
+    void nozzle_walls(const NozzleLayout& lay) {
+        for (const NozzleWall& w : lay.walls) {
             const std::size_t first = ps_.size();
             for (const NozzlePoint& q : w.points) boundary(q.x, q.z);
             if (repulsive_) link_line(first, w.points.size(), w.reversed);
@@ -214,8 +217,7 @@ private:
 
     // The nozzle's plug: fluid at rho0 (p = 0) moving at u0 along the axis; its mass is rho0
     // times its share of the nozzle's cross-section, so the plug's volume is d0 x length.
-    void nozzle_fluid(const NozzleSpec& nz) {
-        const NozzleLayout lay = nozzle_layout(nz, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h);
+    void nozzle_fluid(const NozzleSpec& nz, const NozzleLayout& lay) {
         const double m = p_.rho0 * lay.spacing_across * lay.spacing_along;
         for (const NozzlePoint& q : lay.fluid)
             ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, p_.rho0, 0.0, m, ParticleKind::Fluid);
