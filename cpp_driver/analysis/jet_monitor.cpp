@@ -24,7 +24,7 @@ double JetMonitor::crossing_volume(const ParticleSet& ps) {
         if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid)) continue;
         if (!out_[i]) {
             if (!ps.active.empty() && ps.active[i] == 0) continue;
-            const double s = (ps.x[i] - nz_.x0) * nz_.ex + (ps.z[i] - nz_.z0) * nz_.ez;
+            const double s = axial(ps.x[i], ps.z[i]);
             const double f = s / ds_ + 0.5;
             if (f <= 0) continue;
             if (f < 1) {
@@ -48,7 +48,7 @@ void JetMonitor::start(const ParticleSet& ps, double time) {
     // A resumed run: the particles already out (removed ones too: they left downstream).
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid)) continue;
-        const double s = (ps.x[i] - nz_.x0) * nz_.ex + (ps.z[i] - nz_.z0) * nz_.ez;
+        const double s = axial(ps.x[i], ps.z[i]);
         if (s >= 0.5 * ds_ || (!ps.active.empty() && ps.active[i] == 0)) out_[i] = 1;
     }
     volume_out_ = crossing_volume(ps);
@@ -60,28 +60,28 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     JetSample r;
     r.time = time;
     r.step = step;
-    const double ex = nz_.ex, ez = nz_.ez;
-    const auto axial = [&](std::size_t i) { return (ps.x[i] - nz_.x0) * ex + (ps.z[i] - nz_.z0) * ez; };
-    const auto lateral = [&](std::size_t i) { return (ps.x[i] - nz_.x0) * ez - (ps.z[i] - nz_.z0) * ex; };
+    const double ex = nz_.ex, ez = nz_.ez;  // for the breakup axis
 
     double usum = 0;
     std::size_t un = 0;
     ParticleSet down;  // fluid downstream of the orifice, for the clusters
-    std::vector<double> down_s;
+    std::vector<double> down_s, down_l;  // their axial and (absolute) lateral coordinates
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid)) continue;
         if (!ps.active.empty() && ps.active[i] == 0) continue;
-        const double s = axial(i);
+        const double s = axial(ps.x[i], ps.z[i]);
+        const double l = std::abs(lateral(ps.x[i], ps.z[i]));
         if (s < 0) {
-            if (std::abs(lateral(i)) <= 0.5 * nz_.d0 + 0.25 * ds_ && s >= -nz_.length() - ds_) ++r.in_nozzle;
+            if (l <= 0.5 * nz_.d0 + 0.25 * ds_ && s >= -nz_.length() - ds_) ++r.in_nozzle;
             continue;
         }
-        if (s < h_ && std::abs(lateral(i)) <= 0.5 * nz_.d0) {
+        if (s < h_ && l <= 0.5 * nz_.d0) {
             usum += ps.u[i] * ex + ps.w[i] * ez;
             ++un;
         }
         down.push(ps.x[i], ps.z[i], ps.u[i], ps.w[i], ps.rho[i], ps.p[i], ps.m[i], ParticleKind::Fluid);
         down_s.push_back(s);
+        down_l.push_back(l);
     }
     const double v = crossing_volume(ps);
     r.volume_out = v;
@@ -98,25 +98,22 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     std::vector<int> labels;
     const std::vector<Cluster> cl = label_clusters(down, link_, {}, &labels);
     std::vector<Drop> d(cl.size());
+    for (std::size_t c = 0; c < cl.size(); ++c) d[c].particles = cl[c].size, d[c].xc = cl[c].xc, d[c].zc = cl[c].zc;
+    std::vector<char> seen(cl.size(), 0);
     std::size_t nearest = 0;
     for (std::size_t k = 0; k < down.size(); ++k) {
-        Drop& q = d[static_cast<std::size_t>(labels[k])];
-        q.particles += 1;
+        const auto c = static_cast<std::size_t>(labels[k]);
+        Drop& q = d[c];
         q.area += down.m[k] / down.rho[k];
-        q.xc += down.x[k];
-        q.zc += down.z[k];
-        q.s_max = q.particles == 1 ? down_s[k] : std::max(q.s_max, down_s[k]);
+        q.s_max = seen[c] ? std::max(q.s_max, down_s[k]) : down_s[k];
+        seen[c] = 1;
         // The jet: the cluster of the particle nearest the orifice within the band.
-        const double lat = std::abs((down.x[k] - nz_.x0) * ez - (down.z[k] - nz_.z0) * ex);
-        const double lat_n = std::abs((down.x[nearest] - nz_.x0) * ez - (down.z[nearest] - nz_.z0) * ex);
-        if (lat <= band_ && (lat_n > band_ || down_s[k] < down_s[nearest])) nearest = k;
+        if (down_l[k] <= band_ && (down_l[nearest] > band_ || down_s[k] < down_s[nearest])) nearest = k;
     }
     const auto jet = static_cast<std::size_t>(labels[nearest]);
     r.jet_tip = d[jet].s_max;
     for (std::size_t c = 0; c < d.size(); ++c) {
         Drop& q = d[c];
-        q.xc /= static_cast<double>(q.particles);
-        q.zc /= static_cast<double>(q.particles);
         q.d_eq = 2.0 * std::sqrt(q.area / std::numbers::pi);
         if (c != jet) r.drops.push_back(q);
     }

@@ -74,6 +74,9 @@ public:
 
 private:
     double crossing_volume(const ParticleSet& ps);
+    // The frame of the axis: s along it from the orifice centre, l across it.
+    [[nodiscard]] double axial(double x, double z) const { return (x - nz_.x0) * nz_.ex + (z - nz_.z0) * nz_.ez; }
+    [[nodiscard]] double lateral(double x, double z) const { return (x - nz_.x0) * nz_.ez - (z - nz_.z0) * nz_.ex; }
 
     NozzleSpec nz_;
     double h_, link_, band_, rho0_, ds_;
