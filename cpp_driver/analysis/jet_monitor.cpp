@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -11,11 +12,16 @@
 
 namespace sphjet::analysis {
 
-JetMonitor::JetMonitor(const NozzleSpec& nozzle, const BreakupSpec& breakup, double h, double rho0, double ds)
+JetMonitor::JetMonitor(const NozzleSpec& nozzle, const BreakupSpec& breakup, double h, double rho0, double ds,
+                       bool round)
     : nz_(nozzle), h_(h), link_(breakup.link_over_h * h), band_(breakup.band_over_d0 * nozzle.d0), rho0_(rho0),
-      ds_(ds) {
+      ds_(ds), round_(round) {
     if (!(h > 0) || !(link_ > 0) || !(band_ > 0) || !(nz_.d0 > 0) || !(rho0 > 0) || !(ds > 0))
         throw std::invalid_argument("JetMonitor: h, link, band, d0, rho0 and the spacing must be positive");
+}
+
+double JetMonitor::orifice_measure() const {
+    return round_ ? 0.25 * std::numbers::pi * nz_.d0 * nz_.d0 : nz_.d0;
 }
 
 double JetMonitor::crossing_volume(const ParticleSet& ps) {
@@ -88,7 +94,7 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     const double dt = time - last_time_;
     r.flux = dt > 0 ? (v - volume_out_) / dt : 0.0;
     volume_out_ = v;
-    r.u_flux = r.flux / nz_.d0;
+    r.u_flux = r.flux / orifice_measure();
     r.u_orifice = un > 0 ? usum / static_cast<double>(un) : 0.0;
     last_time_ = time;
 
@@ -99,12 +105,15 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     const std::vector<Cluster> cl = label_clusters(down, link_, {}, &labels);
     std::vector<Drop> d(cl.size());
     for (std::size_t c = 0; c < cl.size(); ++c) d[c].particles = cl[c].size, d[c].xc = cl[c].xc, d[c].zc = cl[c].zc;
+    // A round drop's centroid: the rings' centres lie on the axis.
+    if (round_)
+        for (Drop& q : d) q.xc = nz_.x0;
     std::vector<char> seen(cl.size(), 0);
     std::size_t nearest = 0;
     for (std::size_t k = 0; k < down.size(); ++k) {
         const auto c = static_cast<std::size_t>(labels[k]);
         Drop& q = d[c];
-        q.area += down.m[k] / down.rho[k];
+        q.size += down.m[k] / down.rho[k];
         q.s_max = seen[c] ? std::max(q.s_max, down_s[k]) : down_s[k];
         seen[c] = 1;
         // The jet: the cluster of the particle nearest the orifice within the band.
@@ -112,13 +121,36 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     }
     const auto jet = static_cast<std::size_t>(labels[nearest]);
     r.jet_tip = d[jet].s_max;
+    neck(down_s, down_l, labels, static_cast<int>(jet), r);
     for (std::size_t c = 0; c < d.size(); ++c) {
         Drop& q = d[c];
-        q.d_eq = 2.0 * std::sqrt(q.area / std::numbers::pi);
+        q.d_eq = round_ ? std::cbrt(6.0 * q.size / std::numbers::pi) : 2.0 * std::sqrt(q.size / std::numbers::pi);
+        q.satellite = q.d_eq < nz_.d0;
         if (c != jet) r.drops.push_back(q);
     }
     std::sort(r.drops.begin(), r.drops.end(), [](const Drop& a, const Drop& b) { return a.s_max > b.s_max; });
     return r;
+}
+
+void JetMonitor::neck(const std::vector<double>& s, const std::vector<double>& l, const std::vector<int>& labels,
+                      int jet, JetSample& r) const {
+    const double end = r.jet_tip - nz_.d0;
+    if (!(end > 0)) return;
+    const auto slices = static_cast<std::size_t>(std::floor(end / ds_)) + 1;
+    std::vector<double> reach(slices, -1.0);  // largest |l| per slice; < 0: none there
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (labels[k] != jet || s[k] > end) continue;
+        const auto i = static_cast<std::size_t>(s[k] / ds_);
+        reach[i] = std::max(reach[i], l[k]);
+    }
+    for (std::size_t i = 0; i < slices; ++i) {
+        if (reach[i] < 0) continue;  // an empty slice: a gap the link bridged across
+        const double radius = reach[i] + 0.5 * ds_;
+        if (!r.neck_r || radius < *r.neck_r) {
+            r.neck_r = radius;
+            r.neck_s = (static_cast<double>(i) + 0.5) * ds_;
+        }
+    }
 }
 
 JetGroups jet_groups(double rho, double u0, double d0, double sigma, double mu, double g) {
@@ -129,31 +161,41 @@ JetGroups jet_groups(double rho, double u0, double d0, double sigma, double mu, 
     j.oh = j.re > 0 ? std::sqrt(j.we) / j.re : 0.0;
     j.fr = g > 0 ? u0 / std::sqrt(g * d0) : 0.0;
     j.eq37 = 13.0 * std::sqrt(j.we) * (1.0 + 3.0 * j.oh);
+    j.we_d = 2.0 * j.we;
+    j.oh_d = j.oh / std::sqrt(2.0);
+    j.eq37_d = 13.0 * std::sqrt(j.we_d) * (1.0 + 3.0 * j.oh_d);
     return j;
 }
 
 std::string jet_csv_header() {
     return "time,step,volume_out,flux,u_flux,u_orifice,broken,L,L_over_d0,jet_tip_over_d0,n_drops,"
-           "head_drop_d_over_d0,largest_drop_d_over_d0";
+           "head_drop_d_over_d0,largest_drop_d_over_d0,n_satellites,neck_r_over_d0,neck_s_over_d0";
 }
 
 std::string jet_csv_row(const JetSample& s, double d0) {
     double head = 0, largest = 0;
+    std::size_t satellites = 0;
     if (!s.drops.empty()) head = s.drops.front().d_eq / d0;
-    for (const Drop& q : s.drops) largest = std::max(largest, q.d_eq / d0);
-    return fmt::format("{:.17g},{},{:.17g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g}", s.time, s.step,
-                       s.volume_out, s.flux, s.u_flux, s.u_orifice, s.length ? 1 : 0, s.length.value_or(0.0),
-                       s.length.value_or(0.0) / d0, s.jet_tip / d0, s.drops.size(), head, largest);
+    for (const Drop& q : s.drops) largest = std::max(largest, q.d_eq / d0), satellites += q.satellite ? 1 : 0;
+    // No neck (a jet shorter than d0): NaN, which the report and ParaView read as missing.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return fmt::format("{:.17g},{},{:.17g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{},{:.9g},{:.9g}",
+                       s.time, s.step, s.volume_out, s.flux, s.u_flux, s.u_orifice, s.length ? 1 : 0,
+                       s.length.value_or(0.0), s.length.value_or(0.0) / d0, s.jet_tip / d0, s.drops.size(), head,
+                       largest, satellites, s.neck_r.value_or(nan) / d0, s.neck_s.value_or(nan) / d0);
 }
 
-std::string drops_csv_header() { return "time,step,drop,particles,area,d_eq_over_d0,xc,zc,s_max_over_d0"; }
+std::string drops_csv_header(bool round) {
+    return round ? "time,step,drop,particles,volume,d_eq_over_d0,xc,zc,s_max_over_d0,satellite"
+                 : "time,step,drop,particles,area,d_eq_over_d0,xc,zc,s_max_over_d0,satellite";
+}
 
 std::string drops_csv_rows(const JetSample& s, double d0) {
     std::string out;
     for (std::size_t k = 0; k < s.drops.size(); ++k) {
         const Drop& q = s.drops[k];
-        out += fmt::format("{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", s.time, s.step, k, q.particles,
-                           q.area, q.d_eq / d0, q.xc, q.zc, q.s_max / d0);
+        out += fmt::format("{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time, s.step, k, q.particles,
+                           q.size, q.d_eq / d0, q.xc, q.zc, q.s_max / d0, q.satellite ? 1 : 0);
     }
     return out;
 }

@@ -94,7 +94,12 @@ struct NozzleSpec {
     double length_over_d0 = 15; // nozzle length upstream of the orifice / d0 (the paper's aspect ratio)
     double u0 = 0;              // jet speed [m/s]
     bool walls = true;
+    // An imposed disturbance: the plug speed is u0 (1 + disturbance sin(omega t)), omega =
+    // u0 k with k = disturbance_ka / (d0 / 2): a wave of that k leaves the orifice. 0: none.
+    double disturbance = 0;
+    double disturbance_ka = 0.697;  // Rayleigh's fastest-growing mode of a round jet
     [[nodiscard]] double length() const { return length_over_d0 * d0; }
+    [[nodiscard]] double disturbance_omega() const { return u0 * disturbance_ka / (0.5 * d0); }
 };
 
 // Breakup detection while the run goes (modern format [breakup]; analysis/jet_monitor.hpp).

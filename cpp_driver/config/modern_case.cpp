@@ -168,6 +168,8 @@ constexpr KeySpec kKeys[] = {
     {"nozzle.length_over_d0", Kind::Float},
     {"nozzle.u0", Kind::Float},
     {"nozzle.walls", Kind::Bool},
+    {"nozzle.disturbance", Kind::Float},
+    {"nozzle.disturbance_ka", Kind::Float},
     // [breakup]: breakup detection while the run goes
     {"breakup.link_over_h", Kind::Float},
     {"breakup.band_over_d0", Kind::Float},
@@ -1156,10 +1158,26 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
             nz.ex = dir.first, nz.ez = dir.second;
         }
         s.get("walls", nz.walls);
+        if (auto f = s.num("disturbance")) {
+            if (!(f->value >= 0 && f->value < 1))
+                fail(*f, "the disturbance is a relative amplitude of the plug speed", "0 <= disturbance < 1");
+            nz.disturbance = f->value;
+        }
+        if (auto f = s.num("disturbance_ka")) positive(*f), nz.disturbance_ka = f->value;
+        const bool axisymmetric = p.geometry == Geometry::Axisymmetric;
+        if (axisymmetric) {
+            // A round jet: the nozzle is a pipe around the symmetry axis x = 0.
+            if (nz.ex != 0.0)
+                throw InputError(s.string("axis")->where, "a round jet runs along the symmetry axis",
+                                 "axis = \"down\" or \"up\" with domain.geometry = \"axisymmetric\"",
+                                 nz.ex > 0 ? "\"right\"" : "\"left\"");
+            if (x0.value != 0.0)
+                fail(x0, "a round jet's orifice is centred on the symmetry axis", "x0 = 0 with domain.geometry = \"axisymmetric\"");
+        }
         // The nozzle, its walls (half a spacing outside the fluid) and the orifice in the box.
         const double across = 0.5 * nz.d0 + (nz.walls ? std::max(p.dx, p.dz) : 0.0);
         const double back_x = nz.x0 - nz.ex * nz.length(), back_z = nz.z0 - nz.ez * nz.length();
-        const double xlo = std::min(nz.x0, back_x) - std::abs(nz.ez) * across;
+        const double xlo = axisymmetric ? 0.0 : std::min(nz.x0, back_x) - std::abs(nz.ez) * across;
         const double xhi = std::max(nz.x0, back_x) + std::abs(nz.ez) * across;
         const double zlo = std::min(nz.z0, back_z) - std::abs(nz.ex) * across;
         const double zhi = std::max(nz.z0, back_z) + std::abs(nz.ex) * across;
@@ -1188,6 +1206,8 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         // Half a spacing beyond the outer fluid rows, so that every plug particle is driven
         // and the walls (a spacing out) are not.
         p.drive_half_width = 0.5 * nz.d0 + 0.25 * std::max(p.dx, p.dz);
+        p.drive_eps = nz.disturbance;
+        p.drive_omega = nz.disturbance > 0 ? nz.disturbance_omega() : 0.0;
         p.domain_box = true;
 
         BreakupSpec bk;
@@ -1548,6 +1568,10 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("length_over_d0", num(nz.length_over_d0), "nozzle length upstream of the orifice / D0");
         s += line("u0", num(nz.u0), "jet speed [m/s]");
         s += line("walls", boolean(nz.walls), "boundary lines along the nozzle sides");
+        if (nz.disturbance > 0) {
+            s += line("disturbance", num(nz.disturbance), "plug speed u0 (1 + disturbance sin(omega t))");
+            s += line("disturbance_ka", num(nz.disturbance_ka), "omega = u0 ka / (d0 / 2)");
+        }
     }
     if (spec.breakup) {
         const BreakupSpec& b = *spec.breakup;

@@ -19,6 +19,8 @@ enum class Lattice : int { SimpleCubic = 1, BodyCentred = 2 };
 // force balances the discrete pressure force at the Laplace pressure at a free surface
 // (fortran_core/loops/surface_tension_loops.f90, cases/CASE_FORMAT.md).
 enum class SurfaceTensionDelta : int { PressureConsistent = 0, ColourGradient = 1 };
+// Planar 2D, or axisymmetric (r, z): x is the radius r >= 0 and the symmetry axis is x = 0.
+enum class Geometry : int { Planar = 0, Axisymmetric = 1 };
 
 struct SimParams {
     // Numerics
@@ -74,9 +76,15 @@ struct SimParams {
     double drive_x0 = 0.0, drive_z0 = 0.0;    // orifice centre [m]
     double drive_ex = 0.0, drive_ez = -1.0;   // jet axis (unit)
     double drive_half_width = 0.0;            // [m]
+    // The plug speed may carry an imposed disturbance (NozzleSpec::disturbance): over the step
+    // that starts at time t it is drive_u (1 + drive_eps sin(drive_omega t)).
+    double drive_eps = 0.0;                   // relative amplitude
+    double drive_omega = 0.0;                 // [rad/s]
     // Where fluid leaves the domain: false (legacy) beyond the fixed boundary particles'
     // extent (x and floor; no top); true the box [0, lx] x [0, lz] (open jets, no box walls).
     bool domain_box = false;
+    Geometry geometry = Geometry::Planar;
+    bool periodic_z = false;           // periodic in z with period lz
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -60,7 +60,7 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
                std::int64_t step, Log log)
     : spec_(spec), dir_(dir),
       mon_(*spec.nozzle, spec.breakup.value_or(BreakupSpec{}), spec.params.h, spec.params.rho0,
-           spec.nozzle->ex == 0 ? spec.params.dz : spec.params.dx),
+           spec.nozzle->ex == 0 ? spec.params.dz : spec.params.dx, spec.params.geometry == Geometry::Axisymmetric),
       log_(std::move(log)) {
     if (resume) {
         const auto rows = keep_until(dir_ / "jet.csv", step);
@@ -72,7 +72,7 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
         if (!rows.empty()) last_row_ = std::pair{std::stod(rows.back().at(2)), std::stod(rows.back().at(0))};
     }
     jet_csv_.emplace(dir_ / "jet.csv", "the jet table", resume, analysis::jet_csv_header() + "\n");
-    drops_csv_.emplace(dir_ / "drops.csv", "the drops table", resume, analysis::drops_csv_header() + "\n");
+    drops_csv_.emplace(dir_ / "drops.csv", "the drops table", resume, analysis::drops_csv_header(mon_.round()) + "\n");
     mon_.start(ps, time);
     if (last_row_) mon_.restore(last_row_->first, last_row_->second);
     next_check_ = next_check_after(time);
@@ -135,20 +135,25 @@ std::string JetRun::stop_due(double time) const {
 void JetRun::finish(bool hdf5) {
     const NozzleSpec& nz = *spec_.nozzle;
     if (u_n_ > 0)
-        log_(fmt::format("jet: orifice speed (flux / D0) {:.5g} m/s on average over {} samples, u0 = {:.5g} m/s "
+        log_(fmt::format("jet: orifice speed (flux / {}) {:.5g} m/s on average over {} samples, u0 = {:.5g} m/s "
                          "requested ({:+.2f}%; largest sample deviation {:.2f}%)",
-                         u_sum_ / static_cast<double>(u_n_), u_n_, nz.u0,
+                         mon_.round() ? "orifice area" : "D0", u_sum_ / static_cast<double>(u_n_), u_n_, nz.u0,
                          100.0 * (u_sum_ / static_cast<double>(u_n_) / nz.u0 - 1.0), 100.0 * u_dev_max_));
     const SimParams& p = spec_.params;
     const double mu = p.viscosity == ViscosityModel::Laminar ? p.visc_value * p.rho0 : 0.0;
     const auto g = analysis::jet_groups(p.rho0, nz.u0, nz.d0, p.sigma, mu, std::hypot(p.gx, p.gz));
+    // A round jet is compared with the diameter-based form as well (jet_monitor.hpp).
+    const std::string eq37 =
+        mon_.round() ? fmt::format("eq 37 (We = {:.3g}, Oh = {:.3g}) gives {:.4g}; with We_d = {:.3g}, Oh_d = {:.3g} "
+                                   "13 sqrt(We_d)(1 + 3 Oh_d) = {:.4g}",
+                                   g.we, g.oh, g.eq37, g.we_d, g.oh_d, g.eq37_d)
+                     : fmt::format("eq 37 (We = {:.3g}, Oh = {:.3g}) gives {:.4g}", g.we, g.oh, g.eq37);
     if (first_time_)
-        log_(fmt::format("jet: first breakup at t = {:.6g} s, L/D0 = {:.4g}; eq 37 (We = {:.3g}, Oh = {:.3g}) gives "
-                         "{:.4g}",
-                         *first_time_, *first_length_ / nz.d0, g.we, g.oh, g.eq37));
+        log_(fmt::format("jet: first breakup at t = {:.6g} s, L/D0 = {:.4g}; {}", *first_time_,
+                         *first_length_ / nz.d0, eq37));
     else
-        log_(fmt::format("jet: not broken (eq 37 gives L/D0 = {:.4g})", g.eq37));
-    if (hdf5) write_jet_table(dir_, first_time_, first_length_, g.eq37);
+        log_(fmt::format("jet: not broken; {}", eq37));
+    if (hdf5) write_jet_table(dir_, first_time_, first_length_, g.eq37, mon_.round());
 }
 
 }  // namespace sphjet

@@ -186,6 +186,9 @@ StepReport Solver::step() {
     info.dt = state_.dt;
     info.time = state_.time;
     info.dbc_counter = state_.dbc_counter;
+    // A disturbed nozzle: the plug speed over this step (SimParams::drive_eps).
+    if (params_.drive_eps != 0.0)
+        prm_.drive_u = params_.drive_u * (1.0 + params_.drive_eps * std::sin(params_.drive_omega * state_.time));
     const int status = sph_step(ws_, &prm_, &arr_, &info);
     if (status == SPH_ERR_DT_COLLAPSE) {
         fail(status, -1,

@@ -35,7 +35,8 @@ public:
         for (const ObstacleSpec& o : spec_.obstacles) obstacle(o);
         for (const GateSpec& g : spec_.gates) gate(g);
         std::optional<NozzleLayout> nozzle;
-        if (spec_.nozzle) nozzle = nozzle_layout(*spec_.nozzle, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h);
+        if (spec_.nozzle) nozzle = nozzle_layout(*spec_.nozzle, p_.dx, p_.dz, !repulsive_, 2.0 * p_.h,
+                                               p_.geometry == Geometry::Axisymmetric);
         if (nozzle) nozzle_walls(*nozzle);
         boundary_density_and_mass();
         if (nozzle) nozzle_fluid(*spec_.nozzle, *nozzle);
@@ -216,11 +217,14 @@ private:
     }
 
     // The nozzle's plug: fluid at rho0 (p = 0) moving at u0 along the axis; its mass is rho0
-    // times its share of the nozzle's cross-section, so the plug's volume is d0 x length.
+    // times its share of the nozzle's volume (planar: d0 x length per unit depth; round: its
+    // ring of the pipe, so the plug's mass is rho0 pi d0^2 / 4 x length).
     void nozzle_fluid(const NozzleSpec& nz, const NozzleLayout& lay) {
-        const double m = p_.rho0 * lay.spacing_across * lay.spacing_along;
-        for (const NozzlePoint& q : lay.fluid)
-            ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, p_.rho0, 0.0, m, ParticleKind::Fluid);
+        const bool round = p_.geometry == Geometry::Axisymmetric;
+        const double m_planar = p_.rho0 * lay.spacing_across * lay.spacing_along;
+        for (std::size_t k = 0; k < lay.fluid.size(); ++k)
+            ps_.push(lay.fluid[k].x, lay.fluid[k].z, nz.u0 * nz.ex, nz.u0 * nz.ez, p_.rho0, 0.0,
+                     round ? p_.rho0 * lay.volume[k] : m_planar, ParticleKind::Fluid);
     }
 
     void obstacle(const ObstacleSpec& o) {
@@ -561,11 +565,18 @@ void check_spec(const CaseSpec& spec) {
         if (!((nz.ex == 0 && std::abs(nz.ez) == 1) || (nz.ez == 0 && std::abs(nz.ex) == 1)))
             throw InputError(where, "nozzle: the axis must be a lattice direction", "down, up, left or right",
                              std::to_string(nz.ex) + ", " + std::to_string(nz.ez));
-        // The plug is a rigid block: at least two particles across it.
+        // The plug is a rigid block: at least two particles across it (across its radius for
+        // a round jet, whose other half is the mirror image).
         const double dl = nz.ex == 0 ? p.dx : p.dz;
-        if (std::lround(nz.d0 / dl) < 2)
-            throw InputError(where, "nozzle: spacing too coarse for the orifice", "at least 2 particles across d0",
+        const bool round = p.geometry == Geometry::Axisymmetric;
+        if (std::lround((round ? 0.5 : 1.0) * nz.d0 / dl) < 2)
+            throw InputError(where, "nozzle: spacing too coarse for the orifice",
+                             round ? "at least 2 particles across d0 / 2 (a round jet)" : "at least 2 particles across d0",
                              "d0 = " + std::to_string(nz.d0) + " m, spacing " + std::to_string(dl) + " m");
+        if (round && (nz.ex != 0 || nz.x0 != 0))
+            throw InputError(where, "nozzle: a round jet runs along the symmetry axis", "axis down or up, x0 = 0",
+                             "x0 = " + std::to_string(nz.x0) + ", axis (" + std::to_string(nz.ex) + ", " +
+                                 std::to_string(nz.ez) + ")");
     }
 }
 

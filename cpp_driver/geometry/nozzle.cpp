@@ -2,17 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <stdexcept>
 
 namespace sphjet {
 
-NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess) {
+NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess,
+                           bool axisymmetric) {
     // Spacings along and across the axis: the axis is one of the lattice directions.
     const bool vertical = nz.ex == 0.0;
+    if (axisymmetric && (!vertical || nz.x0 != 0.0))
+        throw std::invalid_argument("nozzle_layout: a round nozzle runs along the axis x = 0");
     const double ds = vertical ? dz : dx;
     const double dl_lattice = vertical ? dx : dz;
-    const long n_across = std::max(1L, std::lround(nz.d0 / dl_lattice));
+    // Particles across the orifice (planar) or across its radius (axisymmetric).
+    const double span = axisymmetric ? 0.5 * nz.d0 : nz.d0;
+    const long n_across = std::max(1L, std::lround(span / dl_lattice));
     const long m_along = std::max(1L, std::lround(nz.length() / ds));
-    const double dl = nz.d0 / static_cast<double>(n_across);
+    const double dl = span / static_cast<double>(n_across);
     const double lx = -nz.ez, lz = nz.ex;  // CCW(e)
     const auto at = [&](double s, double l) {
         return NozzlePoint{nz.x0 + s * nz.ex + l * lx, nz.z0 + s * nz.ez + l * lz};
@@ -22,15 +29,24 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     out.spacing_across = dl;
     out.spacing_along = ds;
     out.fluid.reserve(static_cast<std::size_t>(n_across * m_along));
+    out.volume.reserve(out.fluid.capacity());
+    // l of the first column: the edge of the orifice (planar) or the axis (axisymmetric).
+    // The axis's direction CCW(e) is +x for a jet going up and -x going down: the rings
+    // stand on the side r = x >= 0.
+    const double side_r = axisymmetric ? (lx > 0 ? 1.0 : -1.0) : 1.0;
+    const double l_first = axisymmetric ? 0.0 : -0.5 * nz.d0;
     for (long k = 0; k < m_along; ++k)
-        for (long j = 0; j < n_across; ++j)
-            out.fluid.push_back(at(-(static_cast<double>(k) + 0.5) * ds,
-                                   -0.5 * nz.d0 + (static_cast<double>(j) + 0.5) * dl));
+        for (long j = 0; j < n_across; ++j) {
+            const double l = l_first + (static_cast<double>(j) + 0.5) * dl;
+            out.fluid.push_back(at(-(static_cast<double>(k) + 0.5) * ds, side_r * l));
+            out.volume.push_back(axisymmetric ? 2.0 * std::numbers::pi * l * dl * ds : dl * ds);
+        }
     if (!nz.walls) return out;
 
     const double off = 0.5 * nz.d0 + 0.5 * dl;
     const long k0 = std::min(m_along, static_cast<long>(std::ceil(recess / ds - 1e-9)));
     for (const double side : {1.0, -1.0}) {
+        if (axisymmetric && side != side_r) continue;  // the other side is the mirror image
         NozzleWall inner;
         // The +l wall's normal must point to -l: its points run along e, whose CCW is +l,
         // so its links are reversed (Builder::link_line); the -l wall's are not.

@@ -11,7 +11,10 @@
 // side at l = +-(d0/2 + d0/(2N)), one spacing outside the outer fluid rows as the box walls
 // are, with points s = -k ds, k = k0 .. M.
 // Dynamic boundaries add a second, staggered layer half a spacing further out and half a
-// spacing upstream, as the box walls have. The walls end `recess` upstream of the orifice
+// spacing upstream, as the box walls have.
+// Axisymmetric (a round jet; the axis is x = 0, along z): the pipe's half r >= 0 only, with
+// N = max(1, round(d0 / (2 dl))) rings at r = (j + 1/2) d0 / (2N), and one wall at
+// r = d0/2 + d0/(4N); each plug particle stands for its ring, volume 2 pi r (d0 / 2N) ds. The walls end `recess` upstream of the orifice
 // line (s = -k ds from k0 = ceil(recess / ds)): with recess = 2h no fluid past the orifice
 // is within a wall particle's reach. (The repulsive force is scaled for hydrostatic columns,
 // 0.01 c0^2 / h: about 2000 m/s^2 on the jet's outer rows at c0 = 20 m/s, h = 1.3 mm, a
@@ -40,6 +43,7 @@ struct NozzleWall {
 
 struct NozzleLayout {
     std::vector<NozzlePoint> fluid;  // the plug
+    std::vector<double> volume;      // of each plug particle: dl ds (planar, per unit depth) or its ring's [m^3]
     std::vector<NozzleWall> walls;   // empty without walls
     double spacing_across = 0;       // d0 / N
     double spacing_along = 0;        // ds
@@ -47,6 +51,8 @@ struct NozzleLayout {
 
 // dx, dz: the case's lattice spacings; dynamic: two staggered layers per wall.
 // recess: how far upstream of the orifice line the walls end [m] (the generator: 2h).
-[[nodiscard]] NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess);
+// axisymmetric: the round pipe's half r = x >= 0 (the axis must be up or down, x0 = 0).
+[[nodiscard]] NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess,
+                                         bool axisymmetric = false);
 
 }  // namespace sphjet

@@ -641,7 +641,11 @@ void visit_params(P& p, F&& f) {
     f("drive_ex", p.drive_ex, "1");
     f("drive_ez", p.drive_ez, "1");
     f("drive_half_width", p.drive_half_width, "m");
+    f("drive_eps", p.drive_eps, "1");
+    f("drive_omega", p.drive_omega, "rad/s");
     f("domain_box", p.domain_box, nullptr);
+    f("geometry", p.geometry, nullptr);
+    f("periodic_z", p.periodic_z, nullptr);
 }
 
 std::string enum_name(KernelType v) { return to_string(v); }
@@ -649,6 +653,13 @@ std::string enum_name(DensityFilter v) { return to_string(v); }
 std::string enum_name(ViscosityModel v) { return to_string(v); }
 std::string enum_name(BoundaryType v) { return to_string(v); }
 std::string enum_name(SurfaceTensionDelta v) { return to_string(v); }
+std::string enum_name(Geometry v) {
+    switch (v) {
+        case Geometry::Planar: return "planar";
+        case Geometry::Axisymmetric: return "axisymmetric";
+    }
+    return "unknown";
+}
 std::string enum_name(Integrator v) {
     return v == Integrator::PredictorCorrector ? "predictor_corrector" : "unknown";
 }
@@ -690,9 +701,11 @@ SimParams read_params(hid_t loc) {
         // Added after files were first written: files without it keep the default (for
         // st_delta the pressure-consistent delta, the only model older builds had).
         // The gate_* fields likewise (no moving boundary particles before them).
-        // The drive_* fields and domain_box likewise (no driven nozzle before them).
+        // The drive_* fields and domain_box likewise (no driven nozzle before them), and
+        // geometry and periodic_z (planar, not periodic before them).
         if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_") ||
-             std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box") &&
+             std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box" ||
+             std::string_view(name) == "geometry" || std::string_view(name) == "periodic_z") &&
             !has_attr(loc, name))
             return;
         if constexpr (std::is_enum_v<T>) {

@@ -17,10 +17,11 @@ namespace sphjet {
 
 namespace {
 
-const char* column_units(const std::string& name) {
+const char* column_units(const std::string& name, bool round) {
     if (name == "time") return "s";
-    if (name == "volume_out" || name == "L") return name == "L" ? "m" : "m^2";
-    if (name == "flux") return "m^2/s";
+    if (name == "L") return "m";
+    if (name == "volume_out") return round ? "m^3" : "m^2";
+    if (name == "flux") return round ? "m^3/s" : "m^2/s";
     if (name == "u_flux" || name == "u_orifice") return "m/s";
     return "1";
 }
@@ -46,7 +47,7 @@ herr_t copy_attr(hid_t src, const char* name, const H5A_info_t*, void* op) {
 }  // namespace
 
 void write_jet_table(const fs::path& dir, std::optional<double> first_time, std::optional<double> first_length,
-                     double eq37_l_over_d0) {
+                     double eq37_l_over_d0, bool round) {
     const fs::path run = dir / "run.h5", csv = dir / "jet.csv";
     if (!fs::exists(run) || !fs::exists(csv)) return;
     std::ifstream in(csv);
@@ -78,7 +79,7 @@ void write_jet_table(const fs::path& dir, std::optional<double> first_time, std:
             throw InputError(h5::where(src, name), "cannot copy into the new run file", "", h5::last_error());
     src.reset();
     h5::Group g = h5::create_group(dst, "jet");
-    for (std::size_t k = 0; k < names.size(); ++k) h5::write_array(g, names[k], cols[k], column_units(names[k]));
+    for (std::size_t k = 0; k < names.size(); ++k) h5::write_array(g, names[k], cols[k], column_units(names[k], round));
     const double nan = std::numeric_limits<double>::quiet_NaN();
     h5::write_attr(g, "first_breakup_time", first_time.value_or(nan));
     h5::write_attr(g, "first_breakup_L", first_length.value_or(nan));

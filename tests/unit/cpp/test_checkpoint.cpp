@@ -121,7 +121,11 @@ SimParams unusual_params() {
     p.drive_ex = 1.0;
     p.drive_ez = 0.0;
     p.drive_half_width = 0.005 + 1e-3 / 7.0;
+    p.drive_eps = 0.01 / 3.0;
+    p.drive_omega = 2000.0 / 7.0;
     p.domain_box = true;
+    p.geometry = Geometry::Axisymmetric;  // not the default
+    p.periodic_z = true;
     return p;
 }
 
@@ -165,12 +169,16 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
                                {a.drive_z0, b.drive_z0},
                                {a.drive_ex, b.drive_ex},
                                {a.drive_ez, b.drive_ez},
-                               {a.drive_half_width, b.drive_half_width}}) {
+                               {a.drive_half_width, b.drive_half_width},
+                               {a.drive_eps, b.drive_eps},
+                               {a.drive_omega, b.drive_omega}}) {
         EXPECT_EQ(bits(x), bits(y));
     }
     EXPECT_EQ(a.variable_dt, b.variable_dt);
     EXPECT_EQ(a.st_delta, b.st_delta);
     EXPECT_EQ(a.domain_box, b.domain_box);
+    EXPECT_EQ(a.geometry, b.geometry);
+    EXPECT_EQ(a.periodic_z, b.periodic_z);
 }
 
 RunState unusual_state() {
@@ -214,7 +222,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // field to the checkpoint (visit_params in io/h5_util.cpp, visit_state in io/checkpoint.cpp)
 // and to this test, then update the sizes here.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(SimParams), 320u) << "SimParams changed: update the checkpoint";
+    EXPECT_EQ(sizeof(SimParams), 344u) << "SimParams changed: update the checkpoint";
     EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
 }
 
@@ -414,7 +422,7 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
         h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
         h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
         for (const char* name : {"drive_u", "drive_x0", "drive_z0", "drive_ex", "drive_ez", "drive_half_width",
-                                 "domain_box"})
+                                 "drive_eps", "drive_omega", "domain_box"})
             ASSERT_GE(H5Adelete(g, name), 0);
     }
     const SimParams pre_jet = read_checkpoint(dir).params;

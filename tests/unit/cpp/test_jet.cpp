@@ -174,6 +174,90 @@ TEST(JetMonitor, DropsOffTheAxisAreDropsNotBreakup) {
     EXPECT_EQ(r.drops.size(), 1u);
 }
 
+// A round nozzle (axisymmetric): rings on the side r = x >= 0 only, each weighing its ring of
+// the pipe, so the plug's volume is pi d0^2 / 4 x length; one wall line, at r = d0/2 + dl/2.
+TEST(NozzleLayout, RoundPipeHasRingsOnOneSide) {
+    NozzleSpec nz = down_nozzle();
+    nz.x0 = 0.0;
+    const NozzleLayout lay = nozzle_layout(nz, 0.001, 0.001, false, 0.0026, true);
+    ASSERT_EQ(lay.fluid.size(), 5u * 150u);  // 5 rings across the radius, 150 rows
+    ASSERT_EQ(lay.volume.size(), lay.fluid.size());
+    double vol = 0, xmin = 1, xmax = -1;
+    for (std::size_t k = 0; k < lay.fluid.size(); ++k) {
+        vol += lay.volume[k];
+        xmin = std::min(xmin, lay.fluid[k].x), xmax = std::max(xmax, lay.fluid[k].x);
+        EXPECT_NEAR(lay.volume[k], 2 * std::numbers::pi * lay.fluid[k].x * 0.001 * 0.001, 1e-18);
+    }
+    EXPECT_NEAR(xmin, 0.0005, 1e-12);
+    EXPECT_NEAR(xmax, 0.0045, 1e-12);
+    EXPECT_NEAR(vol, std::numbers::pi * 0.25 * 0.01 * 0.01 * 0.15, 1e-12 * vol);  // exact: sum of (2j+1) = N^2
+    ASSERT_EQ(lay.walls.size(), 1u);
+    EXPECT_NEAR(lay.walls[0].points.front().x, 0.0055, 1e-12);
+    EXPECT_TRUE(lay.walls[0].reversed);  // its normal faces the plug (-x)
+    EXPECT_EQ(nozzle_layout(nz, 0.001, 0.001, true, 0.0026, true).walls.size(), 2u);  // dynamic: two layers
+    // Going up, the rings still stand at x >= 0.
+    nz.ez = 1.0;
+    for (const auto& q : nozzle_layout(nz, 0.001, 0.001, false, 0.0026, true).fluid) EXPECT_GT(q.x, 0.0);
+    nz.x0 = 0.01;  // off the axis: refused
+    EXPECT_THROW((void)nozzle_layout(nz, 0.001, 0.001, false, 0.0026, true), std::invalid_argument);
+}
+
+// A round jet: a rigid plug of rings gives u_flux = u0 (flux over pi d0^2 / 4); a sphere-sized
+// cluster of rings gives the diameter of the sphere of its volume; the neck is the thinnest
+// slice of the jet, not its rounded tip.
+TEST(JetMonitor, RoundJetFluxDropsAndNeck) {
+    NozzleSpec nz = down_nozzle();
+    nz.x0 = 0.0;
+    const double ds = 0.001, dl = 0.001, rho = 1000, h = 0.002, u0 = nz.u0;
+    const auto ring = [&](ParticleSet& ps, double r, double z, double w) {
+        ps.push(r, z, 0, w, rho, 0, rho * 2 * std::numbers::pi * r * dl * ds, ParticleKind::Fluid);
+    };
+    ParticleSet plug;
+    for (int k = 0; k < 40; ++k)
+        for (int j = 0; j < 5; ++j) ring(plug, (j + 0.5) * dl, 0.4 + (k + 0.5) * ds, -u0);
+    JetMonitor mon(nz, BreakupSpec{}, h, rho, ds, true);
+    EXPECT_TRUE(mon.round());
+    mon.start(plug, 0.0);
+    for (int s = 1; s <= 20; ++s) {
+        for (std::size_t i = 0; i < plug.size(); ++i) plug.z[i] -= u0 * 0.0013;
+        const JetSample r = mon.sample(plug, s * 0.0013, s);
+        EXPECT_NEAR(r.u_flux, u0, 1e-9) << "sample " << s;
+    }
+
+    // A jet 0.04 m long, 5 rings thick but 2 rings thick between s = 0.02 and 0.025 (the
+    // neck, radius 1.5 dl + dl/2), 1 ring in its last 0.005 (the tip: not the neck); a gap of
+    // 4 h; a drop of 12 x 6 rings (a short cylinder); far on, a small drop of 1 ring.
+    ParticleSet ps;
+    for (double s = 0.0005; s < 0.04; s += ds) {
+        const int rings = s > 0.035 ? 1 : (s > 0.02 && s < 0.025) ? 2 : 5;
+        for (int j = 0; j < rings; ++j) ring(ps, (j + 0.5) * dl, 0.4 - s, -u0);
+    }
+    double vol = 0;
+    for (int k = 0; k < 12; ++k)
+        for (int j = 0; j < 6; ++j) {
+            ring(ps, (j + 0.5) * dl, 0.4 - (0.0395 + 4 * h + k * ds), -u0);
+            vol += 2 * std::numbers::pi * (j + 0.5) * dl * dl * ds;
+        }
+    ring(ps, 0.5 * dl, 0.4 - 0.09, -u0);
+    JetMonitor mon2(nz, BreakupSpec{}, h, rho, ds, true);
+    mon2.start(ps, 0.0);
+    const JetSample r = mon2.sample(ps, 0.1, 1);
+    ASSERT_TRUE(r.length);
+    EXPECT_NEAR(*r.length, 0.0395, 1e-12);
+    ASSERT_EQ(r.drops.size(), 2u);
+    EXPECT_NEAR(r.drops[1].size, vol, 1e-15);
+    EXPECT_NEAR(r.drops[1].d_eq, std::cbrt(6 * vol / std::numbers::pi), 1e-12);
+    EXPECT_NEAR(r.drops[1].xc, 0.0, 0.0);  // on the axis
+    EXPECT_FALSE(r.drops[1].satellite);     // 13.7 mm > d0
+    EXPECT_TRUE(r.drops[0].satellite);      // one ring: 2.7 mm < d0
+    ASSERT_TRUE(r.neck_r && r.neck_s);
+    EXPECT_NEAR(*r.neck_r, 2 * dl, 1e-12);
+    EXPECT_GT(*r.neck_s, 0.02);
+    EXPECT_LT(*r.neck_s, 0.025);
+    const std::string row = jet_csv_row(r, nz.d0);
+    EXPECT_NE(row.find(",1,0.2,"), std::string::npos) << row;  // 1 satellite, neck r / d0 = 0.2
+}
+
 TEST(JetGroups, Eq37ReproducesTable1) {
     // Table 1 (paper): We 0.34 / 2.01 / 2.78 / 4.34, eq 37 7.62 / 18.51 / 21.78 / 27.22.
     const double u0s[] = {0.07, 0.17, 0.20, 0.25};
@@ -186,6 +270,12 @@ TEST(JetGroups, Eq37ReproducesTable1) {
         EXPECT_NEAR(g.re, 1000 * u0s[k] * 0.005 / 1e-3, 1e-9);
     }
     EXPECT_EQ(jet_groups(1000, 0.25, 0.01, 0.072, 0.0, 9.81).oh, 0.0);  // inviscid: Oh = 0
+    // The diameter groups: We_d = 2 We, Oh_d = Oh / sqrt 2 (Mansour & Chigier's slowest jet:
+    // U = 0.3441 m/s, d0 = 1.194 mm, water: We_d = 1000 0.3441^2 0.001194 / 0.072 = 1.96).
+    const JetGroups g = jet_groups(1000, 0.3441, 0.001194, 0.072, 1e-3, 9.81);
+    EXPECT_NEAR(g.we_d, 1000 * 0.3441 * 0.3441 * 0.001194 / 0.072, 1e-12);
+    EXPECT_NEAR(g.oh_d, 1e-3 / std::sqrt(1000 * 0.072 * 0.001194), 1e-12);
+    EXPECT_NEAR(g.eq37_d, 13 * std::sqrt(g.we_d) * (1 + 3 * g.oh_d), 1e-12);
 }
 
 }  // namespace
