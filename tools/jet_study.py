@@ -39,10 +39,9 @@ import argparse
 import csv
 import math
 import os
-import shlex
-import signal
-import subprocess
 import sys
+
+from study_runs import StudyError, blew_up, parse_log, run_all
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "jet", "jet.toml")
@@ -56,10 +55,6 @@ PAPER_L = {"cubic_spline": dict(zip(U0S, (6.61, 15.83, 20.22, 24.17))),
 PAPER_HEAD_DROP, RAYLEIGH_HEAD_DROP = 1.98, 1.89   # D/D0, fig 5 (u0 = 0.25, Wendland)
 PAPER_T_BREAK = 0.78                                # s, fig 5
 KERNEL_LABEL = {"wendland": "Wendland", "cubic_spline": "cubic spline"}
-
-
-class StudyError(Exception):
-    pass
 
 
 # ---------------------------------------------------------------- physics of the paper
@@ -115,94 +110,11 @@ def study_dir(root, dx):
     return os.path.join(root, f"dx{dx:g}")
 
 
-# ---------------------------------------------------------------- run.log
-def read_lines(path):
-    try:
-        with open(path, errors="replace") as f:
-            return f.read().splitlines()
-    except FileNotFoundError:
-        return []
-
-
-def last_session(lines):
-    """The lines from the last `sphjet ... starting|resuming` on (all lines if none)."""
-    start = 0
-    for i, line in enumerate(lines):
-        if line.startswith("sphjet ") and (line.rstrip().endswith("starting") or
-                                           line.rstrip().endswith("resuming")):
-            start = i
-    return lines[start:]
-
-
+# ---------------------------------------------------------------- run
 def shown(path):
     """A path as a committed report may name it: relative to the repository when inside it."""
     rel = os.path.relpath(os.path.abspath(path), REPO)
     return path if rel.startswith("..") else rel
-
-
-def blew_up(run_dir):
-    """The run's last session stopped on a state check (NaN, density band, collapsed step):
-    a result of the study, not something a resume would get past. -> the FAILED line or None."""
-    session = last_session(read_lines(os.path.join(run_dir, "run.log")))
-    return next((l for l in session if l.startswith("FAILED: state check")), None)
-
-
-def finished(run_dir):
-    session = last_session(read_lines(os.path.join(run_dir, "run.log")))
-    return ((any(l.startswith("done:") for l in session) and
-             not any(l.startswith("stopped by signal") for l in session)) or
-            blew_up(run_dir) is not None)
-
-
-def parse_log(run_dir):
-    """run.log -> dict particles, boundary, fluid, wall_s (summed over sessions), steps,
-    t_end, particle_steps_per_s, sessions, finished."""
-    import re
-    lines = read_lines(os.path.join(run_dir, "run.log"))
-    out = {"particles": None, "boundary": None, "fluid": None, "wall_s": 0.0, "steps": 0,
-           "t_end": None, "particle_steps_per_s": None, "sessions": 0,
-           "finished": finished(run_dir)}
-    for line in lines:
-        m = re.search(r"\| particles (\d+) \(boundary (\d+), fluid (\d+)\)", line)
-        if line.startswith("case:") and m and out["particles"] is None:
-            out["particles"], out["boundary"], out["fluid"] = map(int, m.groups())
-        m = re.match(r"done: (\d+) steps \((\d+) in all\) to t = ([-+0-9.eE]+) s .* in "
-                     r"([-+0-9.eE]+) s wall; ([-+0-9.eE]+) particle-steps/s", line)
-        if m:
-            out["steps"] += int(m.group(1))
-            out["t_end"] = float(m.group(3))
-            out["wall_s"] += float(m.group(4))
-            out["sessions"] += 1
-            out["particle_steps_per_s"] = float(m.group(5))
-    if out["sessions"] > 1 and out["particles"] and out["wall_s"] > 0:
-        # over all sessions: the particle count is the one sphjet uses (particles at start)
-        out["particle_steps_per_s"] = out["particles"] * out["steps"] / out["wall_s"]
-    if out["sessions"] == 0:
-        out["wall_s"] = None
-    return out
-
-
-# ---------------------------------------------------------------- run
-def run_command(sphjet, case, run_dir, sets, threads, tmax):
-    """-> (state, argv): state is 'done', 'resume' or 'new'."""
-    if finished(run_dir):
-        return "done", None
-    if os.path.isfile(os.path.join(run_dir, "checkpoint.h5")):
-        argv = [sphjet, "run", "--resume", run_dir, "-j", str(threads)]
-    else:
-        argv = [sphjet, "run", case, "--out", run_dir, "-j", str(threads)]
-        if os.path.isdir(run_dir) and os.listdir(run_dir):
-            argv.append("--force")   # an aborted start without checkpoint: nothing to keep
-        for s in sets:
-            argv += ["--set", s]
-    if tmax is not None:
-        argv += ["--tmax", f"{tmax:g}"]
-    return ("resume" if "--resume" in argv else "new"), argv
-
-
-def tail(path, n=15):
-    lines = read_lines(path)
-    return "\n".join("    " + l for l in lines[-n:]) if lines else "    (no run.log)"
 
 
 def cmd_run(args):
@@ -224,83 +136,10 @@ def cmd_run(args):
     if not os.path.isfile(case):
         raise StudyError(f"{case}: base case not found")
 
-    lock = None
-    if not args.dry_run:
-        os.makedirs(sdir, exist_ok=True)
-        import fcntl
-        lock = open(os.path.join(sdir, ".lock"), "w")
-        try:
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            raise StudyError(f"{sdir}: another `jet_study.py run` is working in this study "
-                             f"(lock {lock.name}); one at a time")
-
-    got_signal = []
-    child = [None]
-
-    def forward(sig, _frame):
-        got_signal.append(sig)
-        p = child[0]
-        if p is not None and p.poll() is None:
-            try:
-                p.send_signal(sig)
-            except ProcessLookupError:
-                pass
-
-    if not args.dry_run:
-        signal.signal(signal.SIGINT, forward)
-        signal.signal(signal.SIGTERM, forward)
-
-    m = len(todo)
-    print(f"jet study: {m} run(s) in {sdir} (D0/dx = {D0 / args.dx:g}, sets {', '.join(names)})",
-          flush=True)
-    n_done = n_run = 0
-    for k, (_set, name, sets) in enumerate(todo, 1):
-        if got_signal:
-            break
-        run_dir = os.path.join(sdir, name)
-        state, argv = run_command(args.sphjet, case, run_dir, sets, args.threads, args.tmax)
-        head = f"[{k}/{m}] {name}"
-        if state == "done":
-            print(f"{head}: finished, skipped", flush=True)
-            n_done += 1
-            continue
-        what = "resuming from its checkpoint" if state == "resume" else "starting"
-        print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
-        if args.dry_run:
-            continue
-        os.makedirs(os.path.dirname(run_dir), exist_ok=True)
-        child[0] = subprocess.Popen(argv, cwd=REPO)
-        rc = child[0].wait()
-        child[0] = None
-        log = os.path.join(run_dir, "run.log")
-        if got_signal:
-            sig = got_signal[0]
-            print(f"{head}: stopped by signal {sig} (sphjet exit {rc}); "
-                  f"run `jet_study.py run` again to resume", file=sys.stderr, flush=True)
-            return 128 + sig
-        if rc != 0 and blew_up(run_dir):
-            # A blow-up is a result (reported by `report`); the study goes on.
-            print(f"{head}: blew up ({blew_up(run_dir)[:160]}); going on", flush=True)
-            n_run += 1
-            continue
-        if rc != 0:
-            print(f"{head}: FAILED with exit code {rc}; the end of {log}:\n{tail(log)}",
-                  file=sys.stderr, flush=True)
-            return rc if 0 < rc < 256 else 1
-        if not finished(run_dir):
-            print(f"{head}: sphjet exited 0 but {log} has no `done:` line; the end of it:\n"
-                  f"{tail(log)}", file=sys.stderr, flush=True)
-            return 1
-        n_run += 1
-        print(f"{head}: done", flush=True)
-    if got_signal:
-        return 128 + got_signal[0]
-    if args.dry_run:
-        print(f"dry run: {m - n_done} of {m} run(s) to do")
-    else:
-        print(f"jet study: {n_run} run(s) made, {n_done} already finished, {m} in all")
-    return 0
+    title = (f"jet study: {len(todo)} run(s) in {sdir} (D0/dx = {D0 / args.dx:g}, "
+             f"sets {', '.join(names)})")
+    return run_all([(name, sets) for _set, name, sets in todo], sdir, case, args.sphjet,
+                   args.threads, args.tmax, args.dry_run, "jet_study.py run", title, REPO)
 
 
 # ---------------------------------------------------------------- report: reading a run
