@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""tools/round_jet_study.py on a fake study (synthetic jet.csv, drops.csv and run.log; no sphjet):
+the breakup length is the mean of L over the window t >= 1.25 L_ref / U and needs every sample
+there broken; the fits of L/d0 = C x (x = sqrt(We_d)(1 + 3 Oh_d)) are least squares through the
+origin; the groups are the diameter ones; missing runs are listed; `run --dry-run` sizes a run
+as its docstring says.
+
+The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
+t = 1.25 * 67.52 * 0.001194 / 0.7814 = 0.12897 s) has samples 60, 70 (before the window, not
+counted) and 64, 66, 68, 70 in it: mean 67, std sqrt(5) = 2.236. Run mc_u1.0179 has one
+intact sample in its window: no steady length. The fit through the origin to two points
+(x1, y1), (x2, y2) is (x1 y1 + x2 y2) / (x1^2 + x2^2).
+
+usage: test_round_jet_report.py   (exit 0 on success, 1 with a message on failure)
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
+TOOL = os.path.join(REPO, "tools", "round_jet_study.py")
+PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+sys.path.insert(0, os.path.join(REPO, "tools"))
+import round_jet_study as rjs  # noqa: E402
+
+failures = []
+
+
+def check(cond, msg):
+    if not cond:
+        failures.append(msg)
+
+
+HEADER = ("time,step,volume_out,flux,u_flux,u_orifice,broken,L,L_over_d0,jet_tip_over_d0,n_drops,"
+          "head_drop_d_over_d0,largest_drop_d_over_d0,n_satellites,neck_r_over_d0,neck_s_over_d0")
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def fake_run(d, samples):
+    """samples: (time, step, broken, L/d0)."""
+    rows = [HEADER] + [f"{t},{s},0,0,0.78,0.78,{b},{l * 0.001194},{l},{l + 2},1,1.9,1.9,0,0.3,5"
+                       for t, s, b, l in samples]
+    write(os.path.join(d, "jet.csv"), "\n".join(rows) + "\n")
+    write(os.path.join(d, "run.log"),
+          "sphjet 0.1.0 (abc) starting\n"
+          "case: x | particles 9000 (boundary 0, fluid 9000) | h | kernel wendland | threads 2\n"
+          "done: 1000 steps (1000 in all) to t = 0.25 s (SPHysics clock 0.25 s) in 100.00 s wall; "
+          "9e+04 particle-steps/s; 8 outputs; 0 particles left the domain\n")
+
+
+def main():
+    with tempfile.TemporaryDirectory(prefix="round_jet_test_") as tmp:
+        root = os.path.join(tmp, "root")
+        sdir = os.path.join(root, "eps0.01_n10")
+        d = os.path.join(sdir, "mc_u0.7814")
+        fake_run(d, [(0.05, 10, 1, 60.0), (0.10, 20, 1, 70.0), (0.13, 30, 1, 64.0),
+                     (0.15, 40, 1, 66.0), (0.20, 50, 1, 68.0), (0.25, 60, 1, 70.0)])
+        write(os.path.join(d, "drops.csv"),
+              "time,step,drop,particles,volume,d_eq_over_d0,xc,zc,s_max_over_d0,satellite\n"
+              "0.25,60,0,50,1e-9,1.8,0,0.01,80,0\n0.25,60,1,60,1e-9,2.0,0,0.01,75,0\n"
+              "0.25,60,2,3,1e-11,0.4,0,0.01,72,1\n0.2,50,0,3,1e-11,5.0,0,0.01,72,0\n")
+        fake_run(os.path.join(sdir, "mc_u1.0179"),
+                 [(0.05, 10, 1, 80.0), (0.2, 20, 1, 90.0), (0.25, 30, 0, 0.0)])
+        out = os.path.join(tmp, "out")
+        p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures"],
+                           capture_output=True, text=True)
+        check(p.returncode == 0, f"report exit {p.returncode}: {p.stderr}")
+        with open(os.path.join(out, "round_jets.csv")) as f:
+            rows = {r["run"]: r for r in csv.DictReader(f)}
+        r = rows.get("mc_u0.7814", {})
+        check(r.get("L/d0 SPH (std)") == "67.00 (2.24)", f"mc_u0.7814 L: {r.get('L/d0 SPH (std)')}")
+        check(r.get("err vs measured") == "-1%", f"error vs 67.52: {r.get('err vs measured')}")
+        check(r.get("main drop d/d0") == "1.90", f"main drops (1.8 + 2.0) / 2: {r.get('main drop d/d0')}")
+        check(r.get("drops (satellites)") == "3 (1)", f"drops: {r.get('drops (satellites)')}")
+        check(r.get("first breakup t [s], L/d0") == "0.0500, 60.00", r.get("first breakup t [s], L/d0"))
+        we_d = 1000 * 0.7814 ** 2 * 0.001194 / 0.072
+        check(r.get("We_d") == f"{we_d:.3g}", f"We_d {r.get('We_d')} vs {we_d:.3g}")
+        r2 = rows.get("mc_u1.0179", {})
+        check(r2.get("L/d0 SPH (std)") == "- (-)", f"an intact sample in the window: {r2.get('L/d0 SPH (std)')}")
+        check(r2.get("status") == "finished, no steady breakup", r2.get("status"))
+        check(rows.get("mc_u0.3441", {}).get("status") == "missing", "missing run")
+        with open(os.path.join(out, "round_jets.md")) as f:
+            md = f.read()
+        x1 = rjs.groups(0.7814, 0.001194)["x"]
+        check(f"| SPH (1 runs) | {67.0 / x1:.2f} |" in md, f"C of one SPH point = 67 / x: {md[-600:]}")
+        g = rjs.groups(0.3441, 0.001194)
+        check(abs(g["Oh_d"] - 1e-3 / math.sqrt(1000 * 0.072 * 0.001194)) < 1e-12, "Oh_d")
+        check(abs(rjs.fit_origin([1.0, 2.0], [3.0, 5.0]) - 13.0 / 5.0) < 1e-12, "fit through origin")
+        c, b, r2fit = rjs.fit_line([1.0, 2.0, 3.0], [2.0, 4.0, 6.0])
+        check(abs(c - 2) < 1e-12 and abs(b) < 1e-12 and abs(r2fit - 1) < 1e-12, "line fit")
+        # run --dry-run: the run of U = 0.7814 m/s lasts 2.5 L_ref / U with a nozzle that holds it
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        t_end = 2.5 * 67.52 * 0.001194 / 0.7814
+        check(f"time.tmax={t_end:.6g}" in p.stdout, f"dry run tmax {t_end:.6g}: {p.stdout}")
+        check("nozzle.disturbance=0.01" in p.stdout, "the disturbance of the study")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)
+        check(p.returncode == 2 and "not in the plan" in p.stderr, f"unknown run: {p.stderr}")
+    if failures:
+        for f in failures:
+            print("FAIL:", f, file=sys.stderr)
+        print("test_round_jet_report: FAILED", file=sys.stderr)
+        return 1
+    print("test_round_jet_report: all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,354 @@
+#!/usr/bin/python3
+"""Round (axisymmetric) jets against measurements: the laminar water jets of Mansour & Chigier
+(1994) and the paper's four jets as round jets. Run them, then tabulate and plot them.
+
+Usage (Debian's python3 has numpy, matplotlib and h5py):
+  /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
+      [--d0-over-dx 10] [--set-name mc paper] [--only RUN ...] [--threads 2]
+      [--sphjet build/cpp_driver/sphjet] [--dry-run]
+  /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
+      [--d0-over-dx 10] [--out cases/round_jet]
+
+The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
+  mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
+  paper  paper_u{0.07,0.17,0.2,0.25}: the paper's jets (d0 = 10 mm) as round jets, c0 = 4 m/s
+The disturbance amplitude EPS (nozzle.disturbance, the plug speed u0 (1 + EPS sin(omega t)) at
+k a = 0.697) is the one free parameter: the same for every run of a study directory.
+
+Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
+(1 + 3 Oh_d) d0 for paper, at least 10 d0): it runs to T = 2.5 L_ref / U, the nozzle holds
+the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d0 below the
+orifice (drops beyond leave the run). The breakup length of a run is the mean of the jet's
+intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.25 L_ref / U,
+by when the start-up head has long gone (the first breakup comes at about L / U); it counts
+only when every sample of that window has the jet broken. Its standard deviation over the
+window is given beside it. Drops: those of the last sample of the window (equivalent sphere
+diameters, satellites are drops smaller than d0).
+
+Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
+x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
+C in L / d0 = C x through the origin to the measurements and to the runs, and a line
+L / d0 = C x + b with its R^2 to each. The paper's eq 37 is the same form with radius groups
+(We = We_d / 2, Oh = Oh_d sqrt 2) and C = 13.
+
+`run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+from study_runs import StudyError, blew_up, parse_log, run_all
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BASE_CASE = os.path.join("cases", "round_jet", "round_jet.toml")
+MC_CSV = os.path.join(REPO, "cases", "round_jet", "mansour_chigier_1994.csv")
+
+RHO, MU, SIGMA = 1000.0, 1.0e-3, 0.072       # the base case's water
+D0_MC, D0_PAPER = 0.001194, 0.01
+PAPER_U0S = (0.07, 0.17, 0.20, 0.25)
+RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the fastest-growing wave
+RUN_T_FACTOR, WINDOW_T_FACTOR = 2.5, 1.25     # T and the window start, in L_ref / U
+BOX_L_FACTOR = 1.6
+
+
+# ---------------------------------------------------------------- physics
+def groups(u, d0, mu=MU):
+    we_d = RHO * u * u * d0 / SIGMA
+    oh_d = mu / math.sqrt(RHO * SIGMA * d0)
+    x = math.sqrt(we_d) * (1.0 + 3.0 * oh_d)
+    return {"We_d": we_d, "Oh_d": oh_d, "x": x,
+            "eq37": 13.0 * math.sqrt(we_d / 2) * (1.0 + 3.0 * oh_d * math.sqrt(2)),
+            "eq37_d": 13.0 * x}
+
+
+def fit_origin(xs, ys):
+    """C of y = C x (least squares) -> C, or None without points."""
+    sxx = sum(x * x for x in xs)
+    return sum(x * y for x, y in zip(xs, ys)) / sxx if sxx > 0 else None
+
+
+def fit_line(xs, ys):
+    """y = C x + b -> (C, b, R^2), or None with fewer than 3 points."""
+    n = len(xs)
+    if n < 3:
+        return None
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    syy = sum((y - my) ** 2 for y in ys)
+    if sxx == 0:
+        return None
+    c = sxy / sxx
+    b = my - c * mx
+    return c, b, (sxy * sxy / (sxx * syy) if syy > 0 else 1.0)
+
+
+def read_mc(path=MC_CSV):
+    """-> list of (U, L/d0) of the measurements (comment lines start with #)."""
+    try:
+        with open(path) as f:
+            rows = list(csv.DictReader(l for l in f if not l.startswith("#")))
+        return [(float(r["U_m_per_s"]), float(r["L_over_d0"])) for r in rows]
+    except (OSError, KeyError, ValueError) as e:
+        raise StudyError(f"{path}: cannot read the measurements ({e})")
+
+
+# ---------------------------------------------------------------- the plan
+def u_tag(u):
+    return f"u{u:g}"
+
+
+def sizing(u, d0, l_ref, n):
+    """The overrides that size one run: nozzle length, box, orifice height, end time, sampling."""
+    dx = d0 / n
+    t_end = RUN_T_FACTOR * l_ref / u
+    nozzle = u * t_end / d0 + 2.0
+    below = BOX_L_FACTOR * l_ref + 10.0 * d0
+    z0 = below
+    lz = below + nozzle * d0 + 2.0 * dx
+    return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
+            f"nozzle.length_over_d0={nozzle:.6g}", f"nozzle.z0={z0:.9g}", f"domain.lz={lz:.9g}",
+            f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
+            f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"]
+
+
+def plan(eps, n):
+    """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas."""
+    runs = []
+    for u, l_meas in read_mc():
+        l_ref = max(l_meas, 10.0) * D0_MC
+        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n),
+                     {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas}))
+    for u in PAPER_U0S:
+        l_ref = max(groups(u, D0_PAPER)["eq37_d"], 10.0) * D0_PAPER
+        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n) + ["fluid.c0=4"],
+                     {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None}))
+    return [(s, name, sets + [f"nozzle.disturbance={eps:g}"], info) for s, name, sets, info in runs]
+
+
+SET_NAMES = ("mc", "paper")
+
+
+def study_dir(root, eps, n):
+    return os.path.join(root, f"eps{eps:g}_n{n:g}")
+
+
+def cmd_run(args):
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx)
+    case = os.path.join(REPO, BASE_CASE)
+    names = args.set_name or list(SET_NAMES)
+    full = plan(args.eps, args.d0_over_dx)
+    todo = [r for r in full if r[0] in names]
+    if args.only:
+        known = {r[1] for r in full}
+        bad = [x for x in args.only if x not in known]
+        if bad:
+            raise StudyError(f"--only {' '.join(bad)}: not in the plan; the runs are "
+                             f"{', '.join(r[1] for r in full)}")
+        todo = [r for r in todo if r[1] in args.only]
+    if not args.dry_run and not os.access(args.sphjet, os.X_OK):
+        raise StudyError(f"{args.sphjet}: sphjet binary not found or not executable "
+                         f"(build it with tools/build.sh, or give --sphjet PATH)")
+    title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
+             f"disturbance {args.eps:g}, sets {', '.join(names)})")
+    return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
+                   args.threads, args.tmax, args.dry_run, "round_jet_study.py run", title, REPO)
+
+
+# ---------------------------------------------------------------- report
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def read_run(run_dir, info):
+    r = {"status": "missing", "L": None, "L_std": None, "n_window": 0, "t_first": None,
+         "L_first": None, "drops_main": None, "n_drops": None, "n_sat": None, "notes": [],
+         "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
+    if not os.path.isdir(run_dir):
+        return r
+    r.update(parse_log(run_dir))
+    path = os.path.join(run_dir, "jet.csv")
+    if not os.path.isfile(path):
+        r["status"] = "no jet.csv"
+        return r
+    try:
+        rows = read_csv(path)
+        first = next((x for x in rows if x["broken"] == "1"), None)
+        t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
+        window = [x for x in rows if float(x["time"]) >= t0]
+    except (OSError, KeyError, ValueError) as e:
+        r["status"] = "unreadable"
+        r["notes"].append(f"{path}: {e}")
+        return r
+    if first is not None:
+        r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
+    broken = [x for x in window if x["broken"] == "1"]
+    r["n_window"] = len(window)
+    if window and len(broken) == len(window):
+        ls = [float(x["L_over_d0"]) for x in window]
+        r["L"] = sum(ls) / len(ls)
+        r["L_std"] = math.sqrt(sum((v - r["L"]) ** 2 for v in ls) / len(ls))
+        step = window[-1]["step"]
+        try:
+            d = [x for x in read_csv(os.path.join(run_dir, "drops.csv")) if x["step"] == step]
+            main = [float(x["d_eq_over_d0"]) for x in d if x["satellite"] == "0"]
+            r["n_drops"], r["n_sat"] = len(d), len(d) - len(main)
+            r["drops_main"] = sum(main) / len(main) if main else None
+        except (OSError, KeyError, ValueError) as e:
+            r["notes"].append(f"drops.csv: {e}")
+    elif window:
+        r["notes"].append(f"{len(window) - len(broken)} of {len(window)} samples after "
+                          f"t = {t0:.4g} s intact: no steady breakup length")
+    boom = blew_up(run_dir)
+    if boom:
+        r["status"] = "blew up"
+        r["notes"].append(boom)
+    elif r["finished"]:
+        r["status"] = "finished" if r["L"] is not None else "finished, no steady breakup"
+    else:
+        r["status"] = "unfinished"
+    return r
+
+
+def fmt(v, spec=".2f", none="-"):
+    return none if v is None else format(v, spec)
+
+
+def md_table(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(out) + "\n"
+
+
+def report(args):
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx)
+    if not os.path.isdir(sdir):
+        raise StudyError(f"{sdir}: no study there (run `round_jet_study.py run --eps {args.eps:g} "
+                         f"--d0-over-dx {args.d0_over_dx:g}` first)")
+    os.makedirs(args.out, exist_ok=True)
+    runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
+            for s, name, _sets, info in plan(args.eps, args.d0_over_dx)]
+    header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
+              "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "err vs measured",
+              "first breakup t [s], L/d0", "main drop d/d0", "drops (satellites)", "status",
+              "particles", "wall [s]"]
+    rows, missing = [], []
+    xs_m, ys_m, xs_s, ys_s = [], [], [], []
+    for s, name, info, r in runs:
+        g = groups(info["U"], info["d0"])
+        if r["status"] == "missing":
+            missing.append(name)
+        err = (None if r["L"] is None or info["L_meas"] is None
+               else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
+        if info["L_meas"] is not None:
+            xs_m.append(g["x"]), ys_m.append(info["L_meas"])
+        if s == "mc" and r["L"] is not None:
+            xs_s.append(g["x"]), ys_s.append(r["L"])
+        rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
+                     fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
+                     f"{fmt(r['L'])} ({fmt(r['L_std'])})", fmt(err, "+.0f") + ("%" if err is not None else ""),
+                     f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
+                     f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
+                     fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
+    with open(os.path.join(args.out, "round_jets.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
+    c_m, c_s = fit_origin(xs_m, ys_m), fit_origin(xs_s, ys_s)
+    line_m, line_s = fit_line(xs_m, ys_m), fit_line(xs_s, ys_s)
+
+    def line_text(fit):
+        return "-" if fit is None else f"L/d0 = {fit[0]:.2f} x {fit[1]:+.1f}, R^2 = {fit[2]:.3f}"
+
+    text = (f"# Round jets (generated by tools/round_jet_study.py report)\n\n"
+            f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else sdir}: d0/dx = "
+            f"{args.d0_over_dx:g}, nozzle disturbance {args.eps:g} (plug speed u0 (1 + eps "
+            f"sin(omega t)), k a = 0.697), the same for every run.\n\n"
+            + md_table(header, rows) +
+            f"\nFits over the Mansour & Chigier speeds (x = sqrt(We_d)(1 + 3 Oh_d)):\n\n"
+            f"| | C of L/d0 = C x | line |\n|---|---|---|\n"
+            f"| measured ({len(xs_m) - sum(1 for *_x, i, _r in runs if i['L_meas'] is None)} jets) | "
+            f"{fmt(c_m)} | {line_text(line_m)} |\n"
+            f"| SPH ({len(xs_s)} runs) | {fmt(c_s)} | {line_text(line_s)} |\n\n"
+            f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
+            f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n")
+    with open(os.path.join(args.out, "round_jets.md"), "w") as f:
+        f.write(text)
+    if not args.no_figures:
+        figure(args.out, runs, c_m, c_s)
+    print(text)
+    return 0
+
+
+def figure(out, runs, c_m, c_s):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    mx = [groups(i["U"], i["d0"])["x"] for s, _n, i, _r in runs if s == "mc"]
+    my = [i["L_meas"] for s, _n, i, _r in runs if s == "mc"]
+    ax.plot(mx, my, "ko", mfc="none", label="Mansour & Chigier (1994), measured")
+    sx = [groups(i["U"], i["d0"])["x"] for s, _n, i, r in runs if s == "mc" and r["L"] is not None]
+    sy = [r["L"] for s, _n, i, r in runs if s == "mc" and r["L"] is not None]
+    se = [r["L_std"] for s, _n, i, r in runs if s == "mc" and r["L"] is not None]
+    if sx:
+        ax.errorbar(sx, sy, yerr=se, fmt="s", color="C0", label="sphjet, axisymmetric (std over the window)")
+    xs = [0, max(mx) * 1.1]
+    ax.plot(xs, [13 * x for x in xs], "k:", label="13 x (diameter groups)")
+    if c_m:
+        ax.plot(xs, [c_m * x for x in xs], "k--", lw=0.8, label=f"fit to measured, C = {c_m:.1f}")
+    if c_s:
+        ax.plot(xs, [c_s * x for x in xs], "--", color="C0", lw=0.8, label=f"fit to sphjet, C = {c_s:.1f}")
+    ax.set_xlabel("sqrt(We_d) (1 + 3 Oh_d)")
+    ax.set_ylabel("breakup length L / d0")
+    ax.set_title("Laminar round water jets, d0 = 1.194 mm")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "round_jets_L.png"), dpi=120)
+    plt.close(fig)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    root_default = os.path.join(REPO, "runs", "round_jet")
+    for name in ("run", "report"):
+        p = sub.add_parser(name, help="run what is missing (resumable)" if name == "run"
+                           else "tables and the figure of the runs that exist")
+        p.add_argument("--root", default=root_default, help="study root (default: REPO/runs/round_jet)")
+        p.add_argument("--eps", type=float, default=0.01, help="nozzle disturbance amplitude (default 0.01)")
+        p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
+        if name == "run":
+            p.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES)
+            p.add_argument("--only", action="extend", nargs="+", metavar="RUN")
+            p.add_argument("--threads", "-j", type=int, default=2)
+            p.add_argument("--sphjet", default=os.path.join(REPO, "build", "cpp_driver", "sphjet"))
+            p.add_argument("--dry-run", action="store_true")
+            p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
+        else:
+            p.add_argument("--out", default=os.path.join(REPO, "cases", "round_jet"))
+            p.add_argument("--no-figures", action="store_true")
+    args = ap.parse_args(argv)
+    if not (0 <= args.eps < 1):
+        ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
+    if not args.d0_over_dx >= 4:
+        ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
+    args.root = os.path.abspath(args.root)
+    try:
+        if args.cmd == "run":
+            args.sphjet = os.path.abspath(args.sphjet)
+            return cmd_run(args)
+        return report(args)
+    except StudyError as e:
+        print(f"round_jet_study: {e}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
