@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Regression test of a round jet's start (cases/round_jet/round_jet.toml, axisymmetric,
+d0 = 1.194 mm at U = 0.7814 m/s, d0/dx = 10, no disturbance; the first 12 ms: about 10 d0 of
+jet; well under a minute on two cores).
+
+Checks, each with its reason:
+  1. The orifice speed: every sample once the jet is out by d0 has flux / (pi d0^2 / 4) within
+     2% of u0 (as the planar jet's bound: the plug of rings is rigid, so only the fluid's
+     compressibility just past the orifice moves it). This checks that the nozzle's ring
+     masses and the monitor's volumes are the 3D ones: a planar mass (per unit depth) would
+     be off by a factor of order d0.
+  2. The volume out at the last sample is pi d0^2 / 4 u0 t within 2% (the integral of 1).
+  3. The jet leaves the orifice round and d0 wide: its neck (thinnest slice from the orifice
+     to 1 d0 short of its tip) is between 0.35 and 0.55 d0 in radius. At 12 ms (0.3 capillary
+     times sqrt(rho a^3 / sigma) = 36 ms) an unperturbed jet has not thinned anywhere by
+     more than the start-up: the lower bound 0.35 d0 (not 0.5) allows the jet's first ring
+     of particles to have left the surface, the upper 0.55 d0 a half-spacing of swelling.
+  4. No particle crosses the axis (x >= 0 for every fluid particle in the last snapshot):
+     the mirror images hold the axis.
+  5. The jet is intact (no breakup yet: the tip is 10 d0 out; Rayleigh's fastest mode needs
+     about 13 e-foldings of 1 / (0.343 sqrt(sigma / (rho a^3))) = 0.1 s from noise).
+Usage: check_round_jet.py SPHJET SOURCE_DIR WORK_DIR
+"""
+import csv
+import math
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+D0, U0, T_END = 0.001194, 0.7814, 0.012
+
+
+def main():
+    try:
+        import h5py  # noqa: F401
+    except ImportError:
+        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
+        sys.exit("FAIL: h5py is needed (Debian python3-h5py)")
+    import h5py
+    import numpy as np
+    sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    out = work / "run"
+    sets = ["nozzle.disturbance=0", "nozzle.length_over_d0=14", "nozzle.z0=0.02", "domain.lz=0.0375",
+            f"time.tmax={T_END}", "time.out=0.004", "breakup.check_every=0.0005"]
+    cmd = [str(sphjet), "run", str(src / "cases" / "round_jet" / "round_jet.toml"), "--out", str(out), "-j", "2", "-q"]
+    for s in sets:
+        cmd += ["--set", s]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}\n{r.stderr[-3000:]}")
+    with open(out / "jet.csv") as f:
+        rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+    fails = []
+    area = math.pi * D0 * D0 / 4
+    out_rows = [x for x in rows if x["jet_tip_over_d0"] >= 1.0]
+    dev = max(abs(x["u_flux"] / U0 - 1) for x in out_rows) if out_rows else None
+    print(f"1. orifice speed: {len(out_rows)} samples, largest deviation "
+          f"{'-' if dev is None else f'{100 * dev:.2f}%'} (bound 2%)")
+    if dev is None or dev > 0.02:
+        fails.append("orifice speed")
+    last = rows[-1]
+    vol = area * U0 * last["time"]
+    print(f"2. volume out {last['volume_out']:.4e} m^3 at t = {last['time']:.4f} s, "
+          f"pi d0^2/4 u0 t = {vol:.4e} ({100 * (last['volume_out'] / vol - 1):+.2f}%, bound 2%)")
+    if abs(last["volume_out"] / vol - 1) > 0.02:
+        fails.append("volume out")
+    neck = last["neck_r_over_d0"]
+    print(f"3. neck radius {neck:.3f} d0 at s = {last['neck_s_over_d0']:.2f} d0, tip "
+          f"{last['jet_tip_over_d0']:.2f} d0 (bounds 0.35-0.55 d0)")
+    if not (0.35 <= neck <= 0.55):
+        fails.append("neck radius")
+    snaps = sorted(out.glob("snap_*.h5"))
+    with h5py.File(snaps[-1], "r") as f:
+        x = np.asarray(f["particles/x"])
+        kind = np.asarray(f["particles/kind"])
+    xmin = float(x[kind == 2].min())  # ParticleKind::Fluid
+    print(f"4. smallest x of the fluid in {snaps[-1].name}: {xmin:.3e} m (must be >= 0)")
+    if xmin < 0:
+        fails.append("axis crossed")
+    print(f"5. broken at the end: {int(last['broken'])} (must be 0)")
+    if last["broken"] != 0:
+        fails.append("broke early")
+    if fails:
+        sys.exit("FAIL: " + ", ".join(fails))
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
