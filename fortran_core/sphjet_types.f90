@@ -20,6 +20,8 @@ module sphjet_types
     integer(c_int) :: variable_dt = 1        !< 1: dt from CFL each step
     integer(c_int) :: remove_out_of_domain = 1 !< 1: remove leavers and count, 0: error
     integer(c_int) :: st_delta = 0           !< CSF delta in eq 24: 0 pressure-consistent, 1 colour gradient (paper)
+    integer(c_int) :: geometry = 0           !< 0 planar (x, z); 1 axisymmetric (x = r >= 0, axis x = 0)
+    integer(c_int) :: periodic_z = 0         !< 1: periodic in z with period dom_zmax - dom_zmin
     real(c_double) :: h = 0.0_rp             !< smoothing length [m]
     real(c_double) :: rho0 = 1000.0_rp       !< reference density [kg/m^3]
     real(c_double) :: b = 0.0_rp             !< Tait B [Pa]

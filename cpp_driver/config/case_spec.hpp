@@ -74,6 +74,15 @@ struct FluidDisc {
     double elongation = 0;
 };
 
+// A liquid cylinder about the axis x = 0 (axisymmetric geometry only), radius
+// r(z) = radius (1 + eps cos(2 pi (z - zmin) / wavelength)) for zmin <= z < zmax: the
+// Rayleigh-Plateau test. The lattice of the unperturbed cylinder, ((i + 1/2) dx, k dz) with
+// x < radius, is stretched radially by 1 + eps cos(...) (geometry/generator.hpp).
+struct FluidCylinder {
+    double radius = 0, eps = 0, wavelength = 0;
+    double zmin = 0, zmax = 0;  // [m]; the reader's default is the whole box height
+};
+
 // A square of fluid, sides parallel to the axes (the classic surface-tension test: a square
 // drop relaxes to a circle). Filled on the case lattice like a FluidBlock.
 struct FluidSquare {
@@ -131,6 +140,7 @@ struct CaseSpec {
     std::vector<FluidBlock> fluid_blocks;
     std::vector<FluidDisc> fluid_discs;
     std::vector<FluidSquare> fluid_squares;
+    std::vector<FluidCylinder> fluid_cylinders;
     OutputSpec output;
     std::vector<WallSpec> walls;  // legacy "Add wall" (dynamic boundaries)
     std::vector<GateSpec> gates;  // legacy "Add gate": at most one (legacy moves only the first)

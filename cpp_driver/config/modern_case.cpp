@@ -111,6 +111,11 @@ constexpr KeySpec kKeys[] = {
     {"fluid.disc[].w0", Kind::Float},
     {"fluid.disc[].lattice", Kind::String},
     {"fluid.disc[].elongation", Kind::Float},
+    {"fluid.cylinder[].radius", Kind::Float},
+    {"fluid.cylinder[].eps", Kind::Float},
+    {"fluid.cylinder[].wavelength", Kind::Float},
+    {"fluid.cylinder[].zmin", Kind::Float},
+    {"fluid.cylinder[].zmax", Kind::Float},
     {"fluid.square[].xc", Kind::Float},
     {"fluid.square[].zc", Kind::Float},
     {"fluid.square[].side", Kind::Float},
@@ -130,6 +135,8 @@ constexpr KeySpec kKeys[] = {
     {"domain.wall_bottom", Kind::Bool},
     {"domain.wall_top", Kind::Bool},
     {"domain.floor_inclination_deg", Kind::Float},
+    {"domain.geometry", Kind::String},
+    {"domain.periodic_z", Kind::Bool},
     // [resolution]
     {"resolution.dx", Kind::Float},
     {"resolution.dz", Kind::Float},
@@ -1068,6 +1075,24 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         spec.floor_beta_deg = f->value;
     }
     const Box box{p.lx, p.lz};
+    if (auto f = dom.string("geometry"))
+        p.geometry = choose<Geometry>(*f, {{"planar", Geometry::Planar}, {"axisymmetric", Geometry::Axisymmetric}});
+    const bool axi = p.geometry == Geometry::Axisymmetric;
+    dom.get("periodic_z", p.periodic_z);
+    if (axi && spec.wall_left)
+        throw InputError(ctx.where(dom.key_path("wall_left")),
+                         "domain.geometry = \"axisymmetric\" has its symmetry axis at x = 0, not a wall",
+                         "domain.wall_left = false", "true (the default)");
+    if (axi && p.lattice == Lattice::BodyCentred)
+        throw InputError(ctx.where(top.sub("numerics").key_path("lattice")),
+                         "domain.geometry = \"axisymmetric\" fills shapes on the lattice ((i + 1/2) dx, k dz)",
+                         "numerics.lattice = \"sc\"", "\"bcc\" (the default)");
+    if (p.periodic_z && (spec.wall_bottom || spec.wall_top))
+        throw InputError(ctx.where(dom.key_path("periodic_z")),
+                         "a domain periodic in z has no bottom or top wall",
+                         "domain.wall_bottom = false and domain.wall_top = false with periodic_z = true",
+                         spec.wall_bottom ? "wall_bottom = true (the default)" : "wall_top = true");
+    if (p.periodic_z) p.domain_box = true;  // the box [0, lx] x [0, lz]; z in [0, lz) is the period
 
     // [time]
     const Section tim = top.sub("time");
@@ -1236,7 +1261,15 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         const auto zc = s.required_num("zc", "the centre z [m]");
         const auto r = s.required_num("radius", "the radius [m]");
         positive(r);
-        centred_inside(xc, zc, r, r.value, box, "fluid disc");
+        // axisymmetric: a disc centred on the axis is a sphere (the generator fills x >= 0);
+        // one that crosses the axis elsewhere would be a self-intersecting ring: refused
+        const bool sphere = axi && xc.value == 0.0;
+        if (axi && !sphere && xc.value - r.value < 0.0)
+            fail(xc, "an axisymmetric disc reaches x < 0 (the other side of the axis)",
+                 "xc = 0 (a sphere) or xc >= radius = " + num(r.value) + " (a torus)");
+        // a sphere takes x in [0, R] only: checked as a disc in a box twice as wide
+        const Box dbox = sphere ? Box{2 * box.lx, box.lz} : box;
+        centred_inside(sphere ? Field<double>{box.lx, xc.where} : xc, zc, r, r.value, dbox, "fluid disc");
         d.xc = xc.value, d.zc = zc.value, d.radius = r.value;
         s.get("u0", d.u0);
         s.get("w0", d.w0);
@@ -1246,9 +1279,34 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
             if (!(f->value > -0.5 && f->value < 0.5)) fail(*f, "out of range", "a number in (-0.5, 0.5)");
             d.elongation = f->value;
             const double a = r.value * (1 + std::abs(f->value));
-            centred_inside(xc, zc, r, a, box, "fluid disc (stretched)");
+            centred_inside(sphere ? Field<double>{box.lx, xc.where} : xc, zc, r, a, dbox, "fluid disc (stretched)");
         }
         spec.fluid_discs.push_back(d);
+    }
+    for (const Section& s : fluid.array_of_tables("cylinder")) {
+        // axisymmetric only: r(z) = radius (1 + eps cos(2 pi (z - zmin) / wavelength))
+        FluidCylinder c;
+        const auto r = s.required_num("radius", "the radius a [m]");
+        positive(r);
+        if (!axi)
+            fail(r, "[[fluid.cylinder]] is a liquid cylinder about the axis x = 0",
+                 "domain.geometry = \"axisymmetric\"");
+        c.radius = r.value;
+        c.zmin = 0.0, c.zmax = box.lz;
+        if (auto f = s.num("zmin")) inside(*f, box.lz, "z", "fluid cylinder"), c.zmin = f->value;
+        if (auto f = s.num("zmax")) inside(*f, box.lz, "z", "fluid cylinder"), c.zmax = f->value;
+        if (!(c.zmax > c.zmin)) fail(r, "empty cylinder", "zmax > zmin = " + num(c.zmin));
+        if (auto f = s.num("eps")) {
+            if (!(f->value > -0.5 && f->value < 0.5)) fail(*f, "out of range", "a number in (-0.5, 0.5)");
+            c.eps = f->value;
+        }
+        if (auto f = s.num("wavelength")) positive(*f), c.wavelength = f->value;
+        else if (c.eps != 0.0)
+            throw InputError(ctx.where(s.key_path("wavelength")), "missing required key",
+                             "fluid.cylinder.wavelength [m] with eps != 0", "nothing");
+        if (!(c.radius * (1 + std::abs(c.eps)) <= box.lx))
+            fail(r, "fluid cylinder outside the box", "radius (1 + |eps|) <= domain.lx = " + num(box.lx));
+        spec.fluid_cylinders.push_back(c);
     }
     for (const Section& s : fluid.array_of_tables("square")) {
         FluidSquare q;
@@ -1266,9 +1324,10 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         throw InputError(ctx.where(fluid.key_path("h_swl")), "missing required key",
                          "fluid.coef and fluid.h_swl with legacy.fill = true (the legacy fill stops at h_swl)",
                          "nothing");
-    if (spec.fluid_blocks.empty() && spec.fluid_discs.empty() && spec.fluid_squares.empty() && !spec.nozzle)
+    if (spec.fluid_blocks.empty() && spec.fluid_discs.empty() && spec.fluid_squares.empty() &&
+        spec.fluid_cylinders.empty() && !spec.nozzle)
         throw InputError(ctx.file + ": fluid", "no fluid in the case",
-                         "at least one [[fluid.block]], [[fluid.disc]] or [[fluid.square]], or a [nozzle]",
+                         "at least one [[fluid.block]], [[fluid.disc]], [[fluid.square]] or [[fluid.cylinder]], or a [nozzle]",
                          "none");
 
     // [output]
@@ -1487,6 +1546,14 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("u0", num(d.u0), "initial velocity [m/s]");
         s += line("w0", num(d.w0), "m/s");
     }
+    for (const auto& c : spec.fluid_cylinders) {
+        s += "\n[[fluid.cylinder]]               # axisymmetric: r(z) = a (1 + eps cos(2 pi (z - zmin) / wavelength))\n";
+        s += line("radius", num(c.radius), "a [m]");
+        s += line("eps", num(c.eps), "relative amplitude of the perturbation");
+        if (c.wavelength > 0) s += line("wavelength", num(c.wavelength), "m");
+        s += line("zmin", num(c.zmin), "m");
+        s += line("zmax", num(c.zmax), "m");
+    }
     for (const auto& q : spec.fluid_squares) {
         s += "\n[[fluid.square]]\n";
         s += line("xc", num(q.xc), "centre [m]");
@@ -1514,6 +1581,8 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += line("wall_bottom", boolean(spec.wall_bottom), "");
     s += line("wall_top", boolean(spec.wall_top), "");
     s += line("floor_inclination_deg", num(spec.floor_beta_deg), "only 0 is supported");
+    s += line("geometry", str(to_string(p.geometry)), "planar | axisymmetric (x = r >= 0, axis x = 0)");
+    s += line("periodic_z", boolean(p.periodic_z), "periodic in z with period lz");
 
     s += "\n[resolution]\n";
     s += line("dx", num(p.dx), "particle spacing [m]");

@@ -54,4 +54,12 @@ std::string to_string(SurfaceTensionDelta d) {
     return "unknown";
 }
 
+std::string to_string(Geometry g) {
+    switch (g) {
+        case Geometry::Planar: return "planar";
+        case Geometry::Axisymmetric: return "axisymmetric";
+    }
+    return "unknown";
+}
+
 }  // namespace sphjet

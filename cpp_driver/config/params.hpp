@@ -19,7 +19,9 @@ enum class Lattice : int { SimpleCubic = 1, BodyCentred = 2 };
 // force balances the discrete pressure force at the Laplace pressure at a free surface
 // (fortran_core/loops/surface_tension_loops.f90, cases/CASE_FORMAT.md).
 enum class SurfaceTensionDelta : int { PressureConsistent = 0, ColourGradient = 1 };
-// Planar 2D, or axisymmetric (r, z): x is the radius r >= 0 and the symmetry axis is x = 0.
+// Planar (x, z) or axisymmetric (r, z): then x is the radius r >= 0, the symmetry axis is the
+// line x = 0 and a particle is a ring whose mass is its true 3D mass (core: sph_params_t::geometry,
+// fortran_core/physics/axisymmetric.f90, cases/axisymmetric/README.md).
 enum class Geometry : int { Planar = 0, Axisymmetric = 1 };
 
 struct SimParams {
@@ -83,8 +85,10 @@ struct SimParams {
     // Where fluid leaves the domain: false (legacy) beyond the fixed boundary particles'
     // extent (x and floor; no top); true the box [0, lx] x [0, lz] (open jets, no box walls).
     bool domain_box = false;
+    // Planar or axisymmetric (r, z) geometry, and a domain periodic in z with period lz
+    // (case keys domain.geometry, domain.periodic_z; either geometry).
     Geometry geometry = Geometry::Planar;
-    bool periodic_z = false;           // periodic in z with period lz
+    bool periodic_z = false;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;
@@ -97,5 +101,6 @@ struct SimParams {
 [[nodiscard]] std::string to_string(ViscosityModel v);
 [[nodiscard]] std::string to_string(BoundaryType b);
 [[nodiscard]] std::string to_string(SurfaceTensionDelta d);
+[[nodiscard]] std::string to_string(Geometry g);
 
 }  // namespace sphjet

@@ -16,7 +16,10 @@ namespace {
 // else the legacy rule (legacy_domain).
 DomainBounds run_domain(const SimParams& p, const ParticleSet& ps) {
     if (p.domain_box) return {0.0, p.lx, 0.0, p.lz};
-    return legacy_domain(ps);
+    DomainBounds d = legacy_domain(ps);
+    // periodic in z: the period is [0, lz] (the core folds particles back into it)
+    if (p.periodic_z) d.zmin = 0.0, d.zmax = p.lz;
+    return d;
 }
 }  // namespace
 
@@ -31,6 +34,8 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.variable_dt = p.variable_dt ? 1 : 0;
     c.remove_out_of_domain = out.remove_out_of_domain ? 1 : 0;
     c.st_delta = static_cast<int>(p.st_delta);
+    c.geometry = static_cast<int>(p.geometry);
+    c.periodic_z = p.periodic_z ? 1 : 0;
     c.h = p.h;
     c.rho0 = p.rho0;
     c.b = p.B;

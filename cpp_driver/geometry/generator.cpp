@@ -23,6 +23,7 @@ class Builder {
 public:
     explicit Builder(const CaseSpec& spec) : spec_(spec), p_(spec.params) {
         repulsive_ = p_.boundary == BoundaryType::Repulsive;
+        axi_ = p_.geometry == Geometry::Axisymmetric;
         bcc_ = p_.lattice == Lattice::BodyCentred;
         // N and L spacings across the box; legacy holds LX and LZ in single precision.
         n_ = nint(f32(p_.lx) / p_.dx);
@@ -53,8 +54,15 @@ public:
             const Rect r{q.xc - q.side / 2, q.xc + q.side / 2, q.zc - q.side / 2, q.zc + q.side / 2};
             fill_shape(r, r.zmax, q.u0, q.w0, [&](double x, double z) { return inside_rect(r, x, z); });
         }
+        for (const FluidCylinder& c : spec_.fluid_cylinders) cylinder(c);
         for (const FluidDisc& d : spec_.fluid_discs) {
             const double sx = 1 + d.elongation, sz = 1 / sx;  // semi-axes R sx, R sz
+            if (d.rings && axi_ && d.xc == 0) {
+                // an ellipsoid of revolution of the sphere's volume: semi-axes R sx (x, twice)
+                // and R / sx^2 (z), r = R (1 - 2 e P2(cos theta)) + O(e^2)
+                sphere_rings(d, sx, 1 / (sx * sx));
+                continue;
+            }
             if (d.rings) {
                 ring_disc(d, sx, sz);
                 continue;
@@ -67,6 +75,11 @@ public:
                 return ex * ex + ez * ez <= r2;
             });
         }
+        // Axisymmetric: every particle so far carries rho x its area in the meridian plane;
+        // its mass is that of its ring, 2 pi x times as much (a wall particle on the axis
+        // gets none: it has no ring).
+        if (axi_)
+            for (std::size_t i = 0; i < ps_.size(); ++i) ps_.m[i] *= 2 * std::numbers::pi * ps_.x[i];
         if (ps_.n_fluid() == 0)
             throw InputError(spec_.source, "the case places no fluid particle",
                              "fluid regions that hold at least one lattice point", "none");
@@ -217,14 +230,13 @@ private:
     }
 
     // The nozzle's plug: fluid at rho0 (p = 0) moving at u0 along the axis; its mass is rho0
-    // times its share of the nozzle's volume (planar: d0 x length per unit depth; round: its
-    // ring of the pipe, so the plug's mass is rho0 pi d0^2 / 4 x length).
+    // times its share of the nozzle's cross-section, so the plug's volume is d0 x length
+    // (round: build() then gives each ring its 2 pi r, so the plug's mass is rho0 pi d0^2 / 4
+    // x length).
     void nozzle_fluid(const NozzleSpec& nz, const NozzleLayout& lay) {
-        const bool round = p_.geometry == Geometry::Axisymmetric;
-        const double m_planar = p_.rho0 * lay.spacing_across * lay.spacing_along;
-        for (std::size_t k = 0; k < lay.fluid.size(); ++k)
-            ps_.push(lay.fluid[k].x, lay.fluid[k].z, nz.u0 * nz.ex, nz.u0 * nz.ez, p_.rho0, 0.0,
-                     round ? p_.rho0 * lay.volume[k] : m_planar, ParticleKind::Fluid);
+        const double m = p_.rho0 * lay.spacing_across * lay.spacing_along;
+        for (const NozzlePoint& q : lay.fluid)
+            ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, p_.rho0, 0.0, m, ParticleKind::Fluid);
     }
 
     void obstacle(const ObstacleSpec& o) {
@@ -442,9 +454,11 @@ private:
         const long i1 = static_cast<long>(std::ceil(bbox.xmax / dx)) + 1;
         const long k0 = static_cast<long>(std::floor(bbox.zmin / dz)) - 1;
         const long k1 = static_cast<long>(std::ceil(bbox.zmax / dz)) + 1;
+        // axisymmetric: columns at (i + 1/2) dx, none on the axis (the reader refuses BCC)
+        const double xoff = axi_ ? 0.5 * dx : 0.0;
         for (long i = i0; i <= i1; ++i) {
             for (long k = k0; k <= k1; ++k) {
-                add(i * dx, k * dz);
+                add(i * dx + xoff, k * dz);
                 if (bcc_) add((i + 0.5) * dx, (k + 0.5) * dz);
             }
         }
@@ -490,11 +504,67 @@ private:
         }
     }
 
+    // A sphere of concentric half rings (axisymmetric, a FluidDisc with rings and xc = 0):
+    // N = max(1, round(R / dx)) rings at radii (j - 1/2) ds, ds = R / N, j = 1..N (no centre
+    // particle: it would sit on the axis), ring j holding n_j = 2 round(pi (j - 1/2)) particles
+    // on the whole circle (4, 10, 16, 22, ...), of which the n_j / 2 with x > 0 are placed; the
+    // angles 2 pi (k + t) / n_j with t = 1/2 when n_j is a multiple of 4, else 0, so that no
+    // particle lies on the axis and the placed half is the mirror image of the other. Each
+    // carries its share of the annulus ((j - 1) ds, j ds), the area pi (2j - 1) ds^2 / n_j (within
+    // 22% of ds^2 on the first ring, 6% on the second, 2% from the fourth; mass: the ring rule
+    // in build()), so the outer ring lies half a spacing inside R. (Rings at j ds with no centre
+    // particle leave a hole on the axis that the colour function of the CSF sees as a bubble:
+    // its curvature pushed the first ring outwards.) Then the stretch of the mode-2 ellipsoid.
+    void sphere_rings(const FluidDisc& d, double sx, double sz) {
+        const double rho0 = p_.rho0, pi = std::numbers::pi;
+        if (gravity() != 0) require_B();
+        const long nrings = std::max(1L, nint(d.radius / p_.dx));
+        const double ds = d.radius / static_cast<double>(nrings);
+        const double ztop = d.zc + d.radius * sz, g = gravity();
+        for (long j = 1; j <= nrings; ++j) {
+            const double rj = (static_cast<double>(j) - 0.5) * ds;
+            const long nj = 2 * nint(pi * (static_cast<double>(j) - 0.5));
+            const double area = pi * static_cast<double>(2 * j - 1) * ds * ds / static_cast<double>(nj);
+            const double turn = nj % 4 == 0 ? 0.5 : 0.0;
+            for (long k = 0; k < nj; ++k) {
+                const double th = 2 * pi * (static_cast<double>(k) + turn) / static_cast<double>(nj);
+                const double x = sx * rj * std::cos(th), z = d.zc + sz * rj * std::sin(th);
+                if (!(x > 0) || !clear(x, z)) continue;
+                const double rho =
+                    g == 0 ? rho0 : rho0 * std::pow(1.0 + rho0 * g * (ztop - z) / p_.B, 1.0 / p_.gamma);
+                const double pr = g == 0 ? 0.0 : p_.B * (std::pow(rho / rho0, p_.gamma) - 1.0);
+                ps_.push(x, z, d.u0, d.w0, rho, pr, rho * area * sx * sz, ParticleKind::Fluid);
+            }
+        }
+    }
+
+    // A liquid cylinder about the axis (FluidCylinder): N = max(1, round(a / dx)) columns at
+    // x_i = (i + 1/2) dr, dr = a / N, and M = max(1, round((zmax - zmin) / dz)) rows at
+    // z_k = zmin + (k + 1/2) dzc, dzc = (zmax - zmin) / M (so that a periodic z closes with one
+    // spacing across the ends), each column stretched by s(z) = 1 + eps cos(2 pi (z - zmin) /
+    // wavelength): x = s x_i, area s dr dzc, the volume per length pi a^2 s^2. At rest, rho0.
+    void cylinder(const FluidCylinder& c) {
+        const double pi = std::numbers::pi;
+        const long ncol = std::max(1L, nint(c.radius / p_.dx));
+        const long nrow = std::max(1L, nint((c.zmax - c.zmin) / p_.dz));
+        const double dr = c.radius / static_cast<double>(ncol);
+        const double dzc = (c.zmax - c.zmin) / static_cast<double>(nrow);
+        for (long i = 0; i < ncol; ++i) {
+            for (long k = 0; k < nrow; ++k) {
+                const double z = c.zmin + (static_cast<double>(k) + 0.5) * dzc;
+                const double s = c.wavelength > 0 ? 1 + c.eps * std::cos(2 * pi * (z - c.zmin) / c.wavelength) : 1.0;
+                const double x = s * (static_cast<double>(i) + 0.5) * dr;
+                if (!clear(x, z)) continue;
+                ps_.push(x, z, 0.0, 0.0, p_.rho0, 0.0, p_.rho0 * s * dr * dzc, ParticleKind::Fluid);
+            }
+        }
+    }
+
     const CaseSpec& spec_;
     SimParams p_;
     ParticleSet ps_;
     std::vector<WallLink> links_;
-    bool repulsive_ = false, bcc_ = false;
+    bool repulsive_ = false, bcc_ = false, axi_ = false;
     long n_ = 0, l_ = 0;
 };
 
@@ -554,7 +624,8 @@ void check_spec(const CaseSpec& spec) {
                              "|gate velocity| dt <= h = " + std::to_string(p.h) + " m (or a variable time step)",
                              "|v| = " + std::to_string(v) + " m/s, dt = " + std::to_string(p.dt) + " s");
     }
-    if (spec.fluid_blocks.empty() && spec.fluid_squares.empty() && spec.fluid_discs.empty() && !spec.nozzle)
+    if (spec.fluid_blocks.empty() && spec.fluid_squares.empty() && spec.fluid_discs.empty() &&
+        spec.fluid_cylinders.empty() && !spec.nozzle)
         throw InputError(where, "no fluid in the case", "at least one fluid region or a nozzle", "none");
     if (spec.nozzle) {
         const NozzleSpec& nz = *spec.nozzle;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace sphjet {
@@ -29,7 +28,6 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     out.spacing_across = dl;
     out.spacing_along = ds;
     out.fluid.reserve(static_cast<std::size_t>(n_across * m_along));
-    out.volume.reserve(out.fluid.capacity());
     // l of the first column: the edge of the orifice (planar) or the axis (axisymmetric).
     // The axis's direction CCW(e) is +x for a jet going up and -x going down: the rings
     // stand on the side r = x >= 0.
@@ -39,7 +37,6 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
         for (long j = 0; j < n_across; ++j) {
             const double l = l_first + (static_cast<double>(j) + 0.5) * dl;
             out.fluid.push_back(at(-(static_cast<double>(k) + 0.5) * ds, side_r * l));
-            out.volume.push_back(axisymmetric ? 2.0 * std::numbers::pi * l * dl * ds : dl * ds);
         }
     if (!nz.walls) return out;
 

@@ -14,7 +14,7 @@
 // spacing upstream, as the box walls have.
 // Axisymmetric (a round jet; the axis is x = 0, along z): the pipe's half r >= 0 only, with
 // N = max(1, round(d0 / (2 dl))) rings at r = (j + 1/2) d0 / (2N), and one wall at
-// r = d0/2 + d0/(4N); each plug particle stands for its ring, volume 2 pi r (d0 / 2N) ds. The walls end `recess` upstream of the orifice
+// r = d0/2 + d0/(4N) (the generator gives each particle the mass of its ring). The walls end `recess` upstream of the orifice
 // line (s = -k ds from k0 = ceil(recess / ds)): with recess = 2h no fluid past the orifice
 // is within a wall particle's reach. (The repulsive force is scaled for hydrostatic columns,
 // 0.01 c0^2 / h: about 2000 m/s^2 on the jet's outer rows at c0 = 20 m/s, h = 1.3 mm, a
@@ -43,7 +43,6 @@ struct NozzleWall {
 
 struct NozzleLayout {
     std::vector<NozzlePoint> fluid;  // the plug
-    std::vector<double> volume;      // of each plug particle: dl ds (planar, per unit depth) or its ring's [m^3]
     std::vector<NozzleWall> walls;   // empty without walls
     double spacing_across = 0;       // d0 / N
     double spacing_along = 0;        // ds

@@ -653,13 +653,7 @@ std::string enum_name(DensityFilter v) { return to_string(v); }
 std::string enum_name(ViscosityModel v) { return to_string(v); }
 std::string enum_name(BoundaryType v) { return to_string(v); }
 std::string enum_name(SurfaceTensionDelta v) { return to_string(v); }
-std::string enum_name(Geometry v) {
-    switch (v) {
-        case Geometry::Planar: return "planar";
-        case Geometry::Axisymmetric: return "axisymmetric";
-    }
-    return "unknown";
-}
+std::string enum_name(Geometry v) { return to_string(v); }
 std::string enum_name(Integrator v) {
     return v == Integrator::PredictorCorrector ? "predictor_corrector" : "unknown";
 }
@@ -701,8 +695,8 @@ SimParams read_params(hid_t loc) {
         // Added after files were first written: files without it keep the default (for
         // st_delta the pressure-consistent delta, the only model older builds had).
         // The gate_* fields likewise (no moving boundary particles before them).
-        // The drive_* fields and domain_box likewise (no driven nozzle before them), and
-        // geometry and periodic_z (planar, not periodic before them).
+        // The drive_* fields and domain_box likewise (no driven nozzle before them).
+        // geometry and periodic_z likewise (planar, not periodic before them).
         if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_") ||
              std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box" ||
              std::string_view(name) == "geometry" || std::string_view(name) == "periodic_z") &&

@@ -7,7 +7,8 @@ module sphjet_capi
   use omp_lib, only: omp_set_num_threads, omp_get_max_threads
   use sphjet_kinds, only: rp, ip, i8, SPH_OK, SPH_ERR_ARGUMENT, SPH_ERR_CAPACITY, &
                           SPH_ERR_DT_COLLAPSE, BC_REPULSIVE, BC_DYNAMIC, VISC_ARTIFICIAL, &
-                          VISC_LAMINAR, FILTER_NONE, FILTER_MLS, KIND_FLUID
+                          VISC_LAMINAR, FILTER_NONE, FILTER_MLS, KIND_FLUID, &
+                          GEOM_PLANAR, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
   use sorted_state, only: sorted_t, gather_sorted
@@ -67,7 +68,12 @@ contains
       .and. any(prm%viscosity == [VISC_ARTIFICIAL, VISC_LAMINAR]) &
       .and. prm%density_filter >= FILTER_NONE .and. prm%density_filter <= FILTER_MLS &
       .and. prm%cfl > 0.0_rp .and. prm%sigma >= 0.0_rp &
-      .and. any(prm%st_delta == [ST_DELTA_PRESSURE, ST_DELTA_COLOUR])
+      .and. any(prm%st_delta == [ST_DELTA_PRESSURE, ST_DELTA_COLOUR]) &
+      .and. any(prm%geometry == [GEOM_PLANAR, GEOM_AXISYMMETRIC]) &
+      .and. any(prm%periodic_z == [0, 1])
+    ! a period must hold the images of both ends apart (two kernel supports)
+    if (prm%periodic_z /= 0) params_ok = params_ok .and. &
+      prm%dom_zmax - prm%dom_zmin > 4.0_rp * prm%h
     if (prm%boundary == BC_REPULSIVE) params_ok = params_ok .and. prm%h_swl > 0.0_rp &
       .and. prm%coef > 0.0_rp
   end function params_ok
@@ -216,7 +222,7 @@ contains
     if (st%n > 0 .and. .not. (associated(st%colour) .and. associated(st%st_nx) .and. &
                               associated(st%st_nz) .and. associated(st%kappa))) return
     call c_f_pointer(ws_handle, ws)
-    call gather_sorted(st, prm%h, ws%sorted)
+    call gather_sorted(st, prm%h, ws%sorted, prm)
     call surface_tension_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted)
     if (c_associated(arr%ax) .and. c_associated(arr%az)) then
       call c_f_pointer(arr%ax, ax, [st%n])
@@ -224,6 +230,7 @@ contains
       ax = 0.0_rp
       az = 0.0_rp
       do k = 1, ws%sorted%n
+        if (ws%sorted%grid%order(k) > st%n) cycle   ! an image slot
         ax(ws%sorted%grid%order(k)) = ws%sorted%ax(k)
         az(ws%sorted%grid%order(k)) = ws%sorted%az(k)
       end do

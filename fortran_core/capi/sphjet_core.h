@@ -31,6 +31,8 @@ typedef struct sph_params_t {
     int variable_dt;          /* 1: dt from the CFL condition each step */
     int remove_out_of_domain; /* 1: remove leavers and count them; 0: fail */
     int st_delta;             /* CSF delta in eq 24: 0 pressure-consistent (free surface), 1 colour gradient (paper) */
+    int geometry;             /* 0 planar (x, z); 1 axisymmetric (x = r >= 0, symmetry axis x = 0) */
+    int periodic_z;           /* 1: periodic in z with period dom_zmax - dom_zmin */
     double h;                 /* smoothing length [m] */
     double rho0;              /* reference density [kg/m^3] */
     double b;                 /* Tait B [Pa] */

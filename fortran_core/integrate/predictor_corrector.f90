@@ -17,7 +17,7 @@ module predictor_corrector
   use rates, only: compute_rates
   use time_step, only: cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
-  use state_checks, only: check_domain
+  use state_checks, only: check_domain, fold_into_domain
   use nozzle_drive, only: in_driven_nozzle
   implicit none
   private
@@ -146,6 +146,7 @@ contains
     end if
 
     call move_gate(prm, st, info%time, dt)
+    call fold_into_domain(prm, st)   ! axis reflection, periodic z (nothing in planar runs)
 
     info%visc_dt = vmax
     info%dt_next = merge(min(dt_p, dt_c), dt, prm%variable_dt /= 0)

@@ -3,11 +3,11 @@
 module state_checks
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, SPH_OK, SPH_ERR_NONFINITE, SPH_ERR_DENSITY, &
-                          SPH_ERR_OUT_OF_DOMAIN
+                          SPH_ERR_OUT_OF_DOMAIN, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
   implicit none
   private
-  public :: check_domain, check_finite
+  public :: check_domain, check_finite, fold_into_domain
 
 contains
 
@@ -41,6 +41,37 @@ contains
       end if
     end do
   end subroutine check_domain
+
+  !> After a step, before check_domain: in axisymmetric mode a fluid particle that crossed the
+  !> axis is reflected (x -> -x, u -> -u: it is now where its mirror image was); with a periodic
+  !> z a fluid particle beyond dom_zmax (below dom_zmin) re-enters at the other end, z -+ lz.
+  subroutine fold_into_domain(prm, st)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    integer :: i
+    real(rp) :: lz
+    logical :: axi, per
+    axi = prm%geometry == GEOM_AXISYMMETRIC
+    per = prm%periodic_z /= 0
+    if (.not. (axi .or. per)) return
+    lz = prm%dom_zmax - prm%dom_zmin
+    !$omp parallel do schedule(static)
+    do i = st%nb + 1, st%n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      if (axi .and. st%x(i) < 0.0_rp) then
+        st%x(i) = -st%x(i)
+        st%u(i) = -st%u(i)
+      end if
+      if (per) then
+        if (st%z(i) >= prm%dom_zmax) then
+          st%z(i) = st%z(i) - lz
+        else if (st%z(i) < prm%dom_zmin) then
+          st%z(i) = st%z(i) + lz
+        end if
+      end if
+    end do
+    !$omp end parallel do
+  end subroutine fold_into_domain
 
   !> First active particle with a non-finite field or a density outside [rho_min, rho_max].
   subroutine check_finite(prm, st, bad, status)

@@ -42,7 +42,7 @@ contains
     n_singular = 0
     if (prm%density_filter /= FILTER_SHEPARD .and. prm%density_filter /= FILTER_MLS) return
     mls = prm%density_filter == FILTER_MLS
-    call gather_sorted(st, prm%h, s)
+    call gather_sorted(st, prm%h, s, prm)
     n = s%n
     w0 = kernel_w0(kern)
     allocate(body%v(n), body%rnew(n), body%beta(3, n))
@@ -74,6 +74,7 @@ contains
     do k = 1, n
       if (.not. s%fluid(k)) cycle
       i = s%grid%order(k)
+      if (i > st%n) cycle   ! an image slot (sorted_state.f90)
       if (mls) then
         st%rho(i) = rnew(k) + beta(1, k) * w0 * s%m(k)
       else

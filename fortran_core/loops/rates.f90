@@ -10,7 +10,7 @@
 !> Boundary-boundary pairs are skipped.
 module rates
   use sphjet_kinds, only: rp, ip, KERNEL_CUBIC, KERNEL_GAUSSIAN, KERNEL_WENDLAND, &
-                          VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE
+                          VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
   use sorted_state, only: sorted_t, gather_sorted
@@ -19,6 +19,7 @@ module rates
   use tensile_correction, only: tensile_r, tensile_term
   use repulsive_wall, only: repulsive_force
   use surface_tension_loops, only: surface_tension_rates
+  use axisymmetric_loops, only: axisymmetric_rates
   implicit none
   private
   public :: compute_rates, tensile_q
@@ -75,7 +76,7 @@ contains
     body%gz = prm%gz
     body%wall_viscosity = prm%wall_viscosity
 
-    call gather_sorted(st, prm%h, s)
+    call gather_sorted(st, prm%h, s, prm)
     n = s%n
     body%s => s
 
@@ -92,9 +93,9 @@ contains
     if (body%repulsive) then
       allocate(body%wnx(n), body%wnz(n), body%wdb(n), body%wdf(n))
       do k = 1, n
-        i = s%grid%order(k)
-        if (i <= st%nb) then
-          body%wnx(k) = st%wall_nx(i); body%wnz(k) = st%wall_nz(i)
+        i = s%src(k)
+        if (i <= st%nb) then   ! an axis image's normal is mirrored (usign = -1)
+          body%wnx(k) = s%usign(k) * st%wall_nx(i); body%wnz(k) = st%wall_nz(i)
           body%wdb(k) = st%wall_dback(i); body%wdf(k) = st%wall_dfwd(i)
         else
           body%wnx(k) = 0.0_rp; body%wnz(k) = 0.0_rp; body%wdb(k) = 0.0_rp; body%wdf(k) = 0.0_rp
@@ -104,15 +105,20 @@ contains
 
     call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax)
 
+    ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
+    if (prm%geometry == GEOM_AXISYMMETRIC) call axisymmetric_rates(prm, kern, s, st%n)
+
     if (prm%sigma > 0.0_rp) call surface_tension_rates(prm, kern, st, s)
 
     ! Scatter back to particle order; inactive particles get zero rates. The sorted slots are
     ! exactly the active particles, so the two loops write disjoint entries and need no
-    ! barrier between them (nowait): one barrier per scatter, not two.
+    ! barrier between them (nowait): one barrier per scatter, not two. Image slots
+    ! (order > st%n) are not scattered: their sums are discarded.
     !$omp parallel private(i)
     !$omp do schedule(static)
     do k = 1, n
       i = s%grid%order(k)
+      if (i > st%n) cycle
       st%ax(i) = s%ax(k)
       st%az(i) = s%az(k)
       st%ar(i) = s%ar(k)

@@ -1,19 +1,34 @@
 !> The active particles gathered in cell order (contiguous per cell), the layout every pair
 !> traversal works on; rates are accumulated here and scattered back afterwards.
+!>
+!> Image particles (axisymmetric mode and periodic z; sph_params_t%geometry, %periodic_z):
+!> gather_sorted then adds, as extra sorted slots, the mirror image of every active particle
+!> within 2h of the axis x = 0 (x -> -x, u -> -u, the rest equal) and the periodic image of
+!> every particle or axis image within 2h of z = dom_zmin or dom_zmax (z -+ lz). An image slot
+!> has grid%order(k) > st%n, src(k) its source particle; the pair sums treat it as any
+!> neighbour and what accumulates in its slot is discarded: every real particle sees each of
+!> its neighbours, real or image, once. In axisymmetric mode m holds the planar mass
+!> m / (2 pi r) (physics/axisymmetric.f90), so that every pair loop is the SPH of the
+!> meridian plane.
 module sorted_state
-  use sphjet_kinds, only: rp, ip, KIND_FLUID
-  use sphjet_types, only: state_t
+  use sphjet_kinds, only: rp, ip, KIND_FLUID, GEOM_AXISYMMETRIC
+  use sphjet_types, only: state_t, sph_params_t
+  use axisymmetric, only: planar_mass
   use cell_list, only: cell_grid_t, build_cell_list
   use pair_list, only: pair_list_t
   implicit none
   private
-  public :: sorted_t, gather_sorted
+  public :: sorted_t, gather_sorted, copy_to_images
 
   type :: sorted_t
     integer :: n = 0
     type(cell_grid_t) :: grid
     real(rp), allocatable :: x(:), z(:), u(:), w(:), rho(:), p(:), c(:), m(:), pr(:)
     logical, allocatable :: fluid(:)
+    integer :: n_real = 0                !< slots of real particles (n - n_real are images)
+    integer, allocatable :: src(:)       !< particle (state index) each slot stands for
+    integer, allocatable :: src_slot(:)  !< the slot of that particle (k itself for a real slot)
+    real(rp), allocatable :: usign(:)    !< -1 for a mirror image across the axis, else 1
     ! accumulated rates (sorted order)
     real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
     ! one pair list per thread (traversal.f90)
@@ -22,23 +37,53 @@ module sorted_state
 
 contains
 
-  !> Builds the cell list over the active particles and gathers their fields.
-  subroutine gather_sorted(st, h, s)
+  !> Builds the cell list over the active particles and gathers their fields; with prm
+  !> (axisymmetric or periodic in z) also their image particles and the planar masses.
+  subroutine gather_sorted(st, h, s, prm)
     type(state_t), intent(in) :: st
     real(rp), intent(in) :: h
     type(sorted_t), intent(inout) :: s
-    integer :: k, i, n
+    type(sph_params_t), intent(in), optional :: prm
+    integer :: k, i, n, j
+    logical :: images, axi
+    real(rp), allocatable :: xe(:), ze(:), sg(:)
+    integer(ip), allocatable :: ae(:)
+    integer, allocatable :: isrc(:), isrc_slot(:)
 
-    call build_cell_list(st%x, st%z, st%active, 2.0_rp * h, s%grid)
+    images = .false.
+    axi = .false.
+    if (present(prm)) then
+      axi = prm%geometry == GEOM_AXISYMMETRIC
+      images = axi .or. prm%periodic_z /= 0
+    end if
+    if (.not. images) then
+      call build_cell_list(st%x, st%z, st%active, 2.0_rp * h, s%grid)
+    else
+      ! ---- image particles (axis mirror, periodic z): appended after the st%n particles ----
+      call image_particles(st, h, prm, axi, xe, ze, ae, isrc, sg)
+      call build_cell_list(xe, ze, ae, 2.0_rp * h, s%grid)
+    end if
     n = s%grid%nsorted
     s%n = n
     call ensure(s, n)
-    !$omp parallel do schedule(static) private(i)
+    !$omp parallel do schedule(static) private(i, j)
     do k = 1, n
       i = s%grid%order(k)
-      s%x(k) = st%x(i)
-      s%z(k) = st%z(i)
-      s%u(k) = st%u(i)
+      if (i <= st%n) then
+        s%x(k) = st%x(i)
+        s%z(k) = st%z(i)
+        s%u(k) = st%u(i)
+        s%src(k) = i
+        s%usign(k) = 1.0_rp
+      else  ! an image slot
+        j = isrc(i - st%n)
+        s%x(k) = xe(i)
+        s%z(k) = ze(i)
+        s%u(k) = sg(i - st%n) * st%u(j)
+        s%src(k) = j
+        s%usign(k) = sg(i - st%n)
+        i = j
+      end if
       s%w(k) = st%w(i)
       s%rho(k) = st%rho(i)
       s%p(k) = st%p(i)
@@ -53,7 +98,101 @@ contains
       s%xw(k) = 0.0_rp
     end do
     !$omp end parallel do
+    s%n_real = count(st%active(1:st%n) /= 0)
+    if (images) then
+      ! the slot of each image's source: multi-pass loops (CSF) copy the source's fields to
+      ! its images between passes, since an image's own sums lack the neighbours beyond the
+      ! image band (copy_to_images)
+      allocate(isrc_slot(st%n))
+      do k = 1, n
+        if (s%grid%order(k) <= st%n) isrc_slot(s%grid%order(k)) = k
+      end do
+      do k = 1, n
+        s%src_slot(k) = isrc_slot(s%src(k))
+      end do
+    else
+      do k = 1, n
+        s%src_slot(k) = k
+      end do
+    end if
+    if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
+
+  !> The positions of the st%n particles followed by their images (xe, ze, active ae), each
+  !> image's source particle isrc and velocity sign sg (-1 across the axis). Serial and in
+  !> particle order: the same images in the same order whatever the thread count.
+  subroutine image_particles(st, h, prm, axi, xe, ze, ae, isrc, sg)
+    type(state_t), intent(in) :: st
+    real(rp), intent(in) :: h
+    type(sph_params_t), intent(in) :: prm
+    logical, intent(in) :: axi
+    real(rp), allocatable, intent(out) :: xe(:), ze(:), sg(:)
+    integer(ip), allocatable, intent(out) :: ae(:)
+    integer, allocatable, intent(out) :: isrc(:)
+    integer :: n, i, m, m1, j, cap
+    real(rp) :: reach, lz, zlo, zhi
+    logical :: per
+    n = st%n
+    reach = 2.0_rp * h
+    per = prm%periodic_z /= 0
+    lz = prm%dom_zmax - prm%dom_zmin
+    zlo = prm%dom_zmin + reach
+    zhi = prm%dom_zmax - reach
+    ! at most one axis image per particle, and two periodic images per particle or axis image
+    cap = n
+    if (axi) cap = cap + n
+    if (per) cap = cap + 2 * cap
+    allocate(xe(cap), ze(cap), ae(cap), isrc(cap - n), sg(cap - n))
+    xe(1:n) = st%x(1:n)
+    ze(1:n) = st%z(1:n)
+    ae(1:n) = st%active(1:n)
+    m = n
+    if (axi) then
+      do i = 1, n
+        if (st%active(i) == 0 .or. abs(st%x(i)) >= reach) cycle
+        call add(i, -st%x(i), st%z(i), -1.0_rp)
+      end do
+    end if
+    if (per) then
+      m1 = m
+      do j = 1, m1   ! the particles and their axis images
+        if (ae(j) == 0) cycle
+        i = j
+        if (j > n) i = isrc(j - n)
+        if (ze(j) < zlo) call add(i, xe(j), ze(j) + lz, merge(1.0_rp, sg(max(j - n, 1)), j <= n))
+        if (ze(j) > zhi) call add(i, xe(j), ze(j) - lz, merge(1.0_rp, sg(max(j - n, 1)), j <= n))
+      end do
+    end if
+    ! shrink to the slots used (build_cell_list sizes its work by size(x))
+    xe = xe(1:m)
+    ze = ze(1:m)
+    ae = ae(1:m)
+  contains
+    subroutine add(src, x, z, sgn)
+      integer, intent(in) :: src
+      real(rp), intent(in) :: x, z, sgn
+      m = m + 1
+      xe(m) = x
+      ze(m) = z
+      ae(m) = 1
+      isrc(m - n) = src
+      sg(m - n) = sgn
+    end subroutine add
+  end subroutine image_particles
+
+  !> Sets every image slot of f to its source slot's value times sgn (1, or s%usign for the
+  !> radial component of a vector); real slots are left alone.
+  subroutine copy_to_images(s, f, radial)
+    type(sorted_t), intent(in) :: s
+    real(rp), intent(inout) :: f(:)
+    logical, intent(in) :: radial
+    integer :: k
+    do k = 1, s%n
+      if (s%src_slot(k) == k) cycle
+      f(k) = f(s%src_slot(k))
+      if (radial) f(k) = s%usign(k) * f(k)
+    end do
+  end subroutine copy_to_images
 
   subroutine ensure(s, n)
     type(sorted_t), intent(inout) :: s
@@ -61,10 +200,11 @@ contains
     if (allocated(s%x)) then
       if (size(s%x) >= n) return
       deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, &
-                 s%ax, s%az, s%ar, s%xu, s%xw)
+                 s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%src_slot)
     end if
     allocate(s%x(n), s%z(n), s%u(n), s%w(n), s%rho(n), s%p(n), s%c(n), s%m(n), s%pr(n), &
-             s%fluid(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n))
+             s%fluid(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n), s%src(n), s%usign(n), &
+             s%src_slot(n))
   end subroutine ensure
 
 end module sorted_state

@@ -14,15 +14,17 @@
 !> faces of a thin nozzle wall look like a liquid surface and pull fluid inside the nozzle
 !> towards them. Walls hold the fluid through the boundary scheme only.
 module surface_tension_loops
-  use sphjet_kinds, only: rp, KERNEL_WENDLAND
+  use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC
+  use axisymmetric, only: azimuthal_curvature
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t
+  use sorted_state, only: sorted_t, copy_to_images
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
-                             csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N
+                             csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N, &
+                             DEPTH_FACTOR_MIN
   implicit none
   private
   public :: surface_tension_rates
@@ -85,10 +87,10 @@ contains
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
     type(csf_work_t), target :: wk
-    real(rp) :: w0, eps, kap, ax, az, wt
+    real(rp) :: w0, eps, kap, ax, az, wt, kin, kaz, depth
     real(rp), allocatable :: kappa(:)
     integer :: n, k, i
-    logical :: colour_delta
+    logical :: colour_delta, axi
 
     n = s%n
     if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
@@ -97,6 +99,7 @@ contains
     w0 = kernel_w0(kern)
     eps = csf_threshold(prm%h)
     colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
+    axi = prm%geometry == GEOM_AXISYMMETRIC
 
     ! colour (eq 14), self term included
     !$omp parallel do schedule(static)
@@ -110,9 +113,18 @@ contains
     end do
     !$omp end parallel do
     call sweep(PASS_COLOUR, kern, s, wk)
+    ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
+    ! beyond the image band (sorted_state.f90); nothing to do without images
+    if (s%n > s%n_real) call copy_to_images(s, wk%c, .false.)
 
     ! normal (eq 18), then filter and unit normal (eqs 20-21)
     call sweep(PASS_NORMAL, kern, s, wk)
+    if (s%n > s%n_real) then
+      call copy_to_images(s, wk%nx, .true.)
+      call copy_to_images(s, wk%nz, .false.)
+      call copy_to_images(s, wk%gx, .true.)
+      call copy_to_images(s, wk%gz, .false.)
+    end if
     !$omp parallel do schedule(static)
     do k = 1, n
       if (s%fluid(k)) then
@@ -138,9 +150,19 @@ contains
       end if
       !$omp end critical (csf_depth_cache)
     end if
-    !$omp parallel do schedule(static) private(kap, ax, az, wt)
+    !$omp parallel do schedule(static) private(kap, ax, az, wt, kin, kaz, depth)
     do k = 1, n
-      if (colour_delta) then   ! eq 23 as printed
+      if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
+        if (colour_delta) then
+          kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+          kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+        else   ! each moved from the particle's row to the surface by k / (1 - k delta)
+          kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
+          kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+          depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h)
+          kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
+        end if
+      else if (colour_delta) then   ! eq 23 as printed
         kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
       else                     ! free-surface curvature (physics/surface_tension.f90)
         kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
@@ -174,6 +196,7 @@ contains
       !$omp parallel do schedule(static) private(i)
       do k = 1, n
         i = s%grid%order(k)
+        if (i > st%n) cycle   ! an image slot
         st%colour(i) = wk%c(k)
         st%st_nx(i) = wk%nx(k)
         st%st_nz(i) = wk%nz(k)
@@ -182,6 +205,15 @@ contains
       !$omp end parallel do
     end if
   end subroutine surface_tension_rates
+
+  !> A principal curvature k of a particle's row moved to the surface at depth delta:
+  !> k / (1 - k delta), the factor kept >= DEPTH_FACTOR_MIN as in csf_surface_curvature (whose tangential
+  !> denominator test has already zeroed an invalid k).
+  pure elemental function depth_moved(k, delta) result(ks)
+    real(rp), intent(in) :: k, delta
+    real(rp) :: ks
+    ks = k / max(DEPTH_FACTOR_MIN, 1.0_rp - k * delta)
+  end function depth_moved
 
   !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal).
   subroutine sweep(pass, kern, s, wk)

@@ -42,7 +42,7 @@ module surface_tension
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
             csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
             csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
-            ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N
+            ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN
 
   !> Values of sph_params_t%st_delta (case key surface_tension.delta).
   integer, parameter :: ST_DELTA_PRESSURE = 0  !< "pressure_consistent": d = 2 sum_b V_b grad_a W_ab

@@ -1,0 +1,90 @@
+!> Axisymmetric (r, z) SPH: the pointwise formulas (cases/axisymmetric/README.md gives the
+!> equations and the reference). Particles live in the meridian half-plane, x = r >= 0, the
+!> symmetry axis is the line x = 0; a particle stands for a ring and carries its true 3D mass
+!> m = rho 2 pi r A (A its area in the meridian plane). The in-plane operators are the planar
+!> ones with the planar mass m / (2 pi r) = rho A, i.e. the SPH of the meridian plane with
+!> particle area A_b = m_b / (2 pi r_b rho_b), after Brookshaw (1985) and the "area" form
+!> of Garcia-Senz, Relano, Cabezon & Bravo (2012, MNRAS 422, 3449) without their eta-based
+!> conservative rewriting. The axis is closed by mirror images (loops/sorted_state.f90). The
+!> hoop terms that the meridian-plane operators lack:
+!>   momentum     the planar symmetric form with planar masses mp_b = m_b / (2 pi r_b):
+!>                du_a/dt = -sum_b mp_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab (+ viscosity)
+!>                (no hoop pressure term: -(1/rho) grad p has none in (r, z))
+!>   continuity   drho_a/dt = (1/r_a) sum_b mp_b (r_a v_a - r_b v_b) . grad_a W_ab
+!>                ~ -(rho/r) div_2D(r v) = -rho (div_2D v + u_r / r): the hoop term is inside.
+!>                This is the form for which the momentum equation above conserves the energy
+!>                sum_a m_a (v_a^2/2 + e(rho_a)) exactly (semi-discrete, m_a = 2 pi r_a mp_a):
+!>                the planar continuity plus -rho u_r / r does not, and an acoustic mode of the
+!>                particles next to the axis then grew from 1e-2 to 1 m/s within 20 ms.
+!>   viscosity    du_r/dt += nu ((1/r) du_r/dr - u_r / r^2),  du_z/dt += nu (1/r) du_z/dr
+!>   CSF          kappa = div_2D nhat + nhat_r / r  (both principal curvatures)
+!> Near the axis 1/r is taken as 1/max(r, R_MIN_H h) (axis_radius): a lattice particle
+!> (r >= dx/2 = 0.38 h at h = 1.3 dx) never feels it, it only bounds the terms of a particle
+!> that reaches the axis, where u_r / r -> du_r/dr is finite anyway (u_r is odd in r). The
+!> azimuthal curvature nhat_r / r, whose numerator is a small difference near the axis, is
+!> blended within r < h towards the in-plane one: a smooth axisymmetric surface meets the
+!> axis at an umbilic, where both principal curvatures are equal (azimuthal_curvature).
+module axisymmetric
+  use sphjet_kinds, only: rp, pi
+  implicit none
+  private
+  public :: axis_radius, planar_mass, continuity_pair, viscous_hoop, azimuthal_curvature, &
+            R_MIN_H
+
+  !> Smallest radius used in 1/r, in units of h.
+  real(rp), parameter :: R_MIN_H = 0.25_rp
+
+contains
+
+  !> The radius used in 1/r: max(|x|, R_MIN_H h) [m].
+  pure elemental function axis_radius(x, h) result(r)
+    real(rp), intent(in) :: x, h
+    real(rp) :: r
+    r = max(abs(x), R_MIN_H * h)
+  end function axis_radius
+
+  !> The planar mass of a ring particle of mass m at x: m / (2 pi r) = rho A [kg/m].
+  pure elemental function planar_mass(m, x, h) result(mp)
+    real(rp), intent(in) :: m, x, h
+    real(rp) :: mp
+    mp = m / (2.0_rp * pi * axis_radius(x, h))
+  end function planar_mass
+
+  !> The continuity pair term (r_a v_a - r_b v_b) . grad_a W_ab with grad_a W_ab = f (dx, dz),
+  !> r the radii of axis_radius (an image's r is its source's, and its u is mirrored, so that
+  !> r u is odd across the axis) [m^2/s per m^2 of kernel].
+  pure elemental function continuity_pair(ra, ua, wa, rb, ub, wb, f, dx, dz) result(q)
+    real(rp), intent(in) :: ra, ua, wa, rb, ub, wb, f, dx, dz
+    real(rp) :: q
+    q = f * ((ra * ua - rb * ub) * dx + (ra * wa - rb * wb) * dz)
+  end function continuity_pair
+
+  !> The hoop terms of the viscous acceleration, nu ((1/r) du_r/dr - u_r / r^2) (radial) and
+  !> nu (1/r) du_z/dr (axial); dudr, dwdr the radial derivatives of u_r and u_z [1/s].
+  pure elemental subroutine viscous_hoop(nu, u, dudr, dwdr, x, h, ax, az)
+    real(rp), intent(in) :: nu, u, dudr, dwdr, x, h
+    real(rp), intent(out) :: ax, az
+    real(rp) :: r
+    r = axis_radius(x, h)
+    ax = nu * (dudr / r - u / (r * r))
+    az = nu * dwdr / r
+  end subroutine viscous_hoop
+
+  !> The azimuthal curvature nhat_r / r of a particle at x with unit normal component nhx (into
+  !> the liquid) and in-plane curvature kin (the same sign convention, -1/R for a sphere): for
+  !> r >= h nhat_r / r; for r < h the blend (r/h) nhat_r / r + (1 - r/h) kin, which tends to
+  !> the in-plane curvature at the axis (umbilic) and never divides by a small r.
+  pure elemental function azimuthal_curvature(nhx, x, kin, h) result(kaz)
+    real(rp), intent(in) :: nhx, x, kin, h
+    real(rp) :: kaz
+    real(rp) :: r, nr
+    r = abs(x)
+    nr = sign(1.0_rp, x) * nhx
+    if (r >= h) then
+      kaz = nr / r
+    else
+      kaz = nr / h + (1.0_rp - r / h) * kin
+    end if
+  end function azimuthal_curvature
+
+end module axisymmetric

@@ -1,0 +1,267 @@
+#!/usr/bin/env python3
+"""Axisymmetric (r, z) runs: the analytic answers and the measurements of the tests in
+cases/axisymmetric/ (README.md there gives the physics, the fits and the tolerances).
+
+Analytic (standard library only):
+  rayleigh_omega2(ka)         Rayleigh (1878), inviscid cylinder, in units of sigma/(rho a^3):
+                              omega^2 = ka (1 - (ka)^2) I1(ka)/I0(ka); > 0 grows, < 0 oscillates
+  weber_omega(ka, oh2)        Weber (1931) with Rayleigh's inviscid term, in units of
+                              sqrt(sigma/(rho a^3)): omega^2 + 3 Oh k^2 a^2 omega = rayleigh_omega2,
+                              Oh = nu sqrt(rho / (sigma a)) (the growing root)
+  sphere_mode2_omega2         Rayleigh (1879), mode 2 of a sphere: 8 sigma / (rho R^3)
+
+Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
+  laplace  RUN --sigma S [--from T]     p_inner / (2 sigma / R) of a sphere at rest
+  mode2    RUN --sigma S --rho R0       omega of the mode-2 oscillation vs 8 sigma/(rho R^3)
+  growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
+                                        growth rate of the Fourier mode of r_s(z) vs Rayleigh
+Each prints a line `SUMMARY key=value ...` (the format of `sphjet drop`), which
+tests/regression/surface_tension/check_drop.py can check with --analyse.
+"""
+import argparse
+import glob
+import math
+import os
+import sys
+
+
+# ---------------------------------------------------------------- analytic
+def bessel_i(n, x, terms=60):
+    """Modified Bessel function I_n(x) of integer order n >= 0 by its power series."""
+    s = 0.0
+    t = (x / 2.0) ** n / math.factorial(n)
+    for k in range(terms):
+        s += t
+        t *= (x / 2.0) ** 2 / ((k + 1) * (k + 1 + n))
+    return s
+
+
+def rayleigh_omega2(ka):
+    """Rayleigh's inviscid dispersion relation, omega^2 / (sigma / (rho a^3))."""
+    return ka * (1.0 - ka * ka) * bessel_i(1, ka) / bessel_i(0, ka)
+
+
+def weber_omega(ka, oh):
+    """Weber's viscous relation, omega / sqrt(sigma / (rho a^3)), the root with the larger real
+    part: omega^2 + 3 oh (ka)^2 omega - rayleigh_omega2(ka) = 0. Returns the real part (a
+    decaying oscillation has a negative real part)."""
+    b = 3.0 * oh * ka * ka
+    c = -rayleigh_omega2(ka)
+    disc = b * b - 4.0 * c
+    if disc >= 0:
+        return (-b + math.sqrt(disc)) / 2.0
+    return -b / 2.0
+
+
+def sphere_mode2_omega2(sigma, rho, radius):
+    """Rayleigh (1879) mode n = 2 of a free drop: omega^2 = n (n - 1) (n + 2) sigma / (rho R^3)."""
+    return 8.0 * sigma / (rho * radius ** 3)
+
+
+# ---------------------------------------------------------------- snapshots
+def snapshots(run):
+    import h5py
+    files = sorted(glob.glob(os.path.join(run, "*.h5")))
+    out = []
+    for f in files:
+        with h5py.File(f, "r") as h:
+            if "particles" not in h or "time" not in h.attrs:
+                continue
+            g = h["particles"]
+            d = {k: g[k][()] for k in ("x", "z", "u", "w", "rho", "p", "m") if k in g}
+            if "kind" in g:
+                d["kind"] = g["kind"][()]
+            d["time"] = float(h.attrs["time"])
+            out.append(d)
+    out.sort(key=lambda d: d["time"])
+    return out
+
+
+def fluid(d):
+    import numpy as np
+    keep = np.ones(len(d["x"]), bool)
+    if "kind" in d:
+        keep &= d["kind"] == 2
+    return {k: (v[keep] if hasattr(v, "__len__") else v) for k, v in d.items()}
+
+
+def volume(d):
+    return float((d["m"] / d["rho"]).sum())
+
+
+# ---------------------------------------------------------------- laplace
+def laplace(a):
+    import numpy as np
+    snaps = [fluid(d) for d in snapshots(a.run)]
+    tend = snaps[-1]["time"]
+    t0 = a.t_from if a.t_from is not None else 0.5 * tend
+    ratios, vols = [], []
+    for d in snaps:
+        if d["time"] < t0 - 1e-12:
+            continue
+        v = volume(d)
+        radius = (3.0 * v / (4.0 * math.pi)) ** (1.0 / 3.0)
+        zc = float((d["m"] * d["z"]).sum() / d["m"].sum())
+        dist = np.hypot(d["x"], d["z"] - zc)
+        inner = dist < 0.5 * radius
+        ratios.append(float(d["p"][inner].mean()) / (2.0 * a.sigma / radius))
+        vols.append(v)
+    v0 = volume(snaps[0])
+    r0 = (3.0 * v0 / (4.0 * math.pi)) ** (1.0 / 3.0)
+    print(f"SUMMARY laplace_ratio={np.mean(ratios):.5f} ratio_sd={np.std(ratios):.5f} "
+          f"snapshots={len(ratios)} radius={r0:.6g} volume_change={vols[-1] / v0 - 1:.3e} "
+          f"t_from={t0:.4g}")
+    return 0
+
+
+# ---------------------------------------------------------------- mode 2
+def mode2(a):
+    import numpy as np
+    snaps = [fluid(d) for d in snapshots(a.run)]
+    t, dd = [], []
+    for d in snaps:
+        m = d["m"]
+        zc = (m * d["z"]).sum() / m.sum()
+        # second moments of the 3D body: <z^2> against <y^2> = <x^2> = <r^2>/2
+        izz = (m * (d["z"] - zc) ** 2).sum() / m.sum()
+        irr = (m * d["x"] ** 2).sum() / m.sum() / 2.0
+        t.append(d["time"])
+        dd.append((izz - irr) / (izz + irr))
+    t, dd = np.array(t), np.array(dd)
+    dev = dd - dd.mean()
+    cross = []
+    for i in range(len(t) - 1):
+        if dev[i] == 0 or dev[i] * dev[i + 1] < 0:
+            cross.append(t[i] + (t[i + 1] - t[i]) * dev[i] / (dev[i] - dev[i + 1]))
+    v0 = volume(snaps[0])
+    radius = (3.0 * v0 / (4.0 * math.pi)) ** (1.0 / 3.0)
+    om_th = math.sqrt(sphere_mode2_omega2(a.sigma, a.rho, radius))
+    use = cross[: a.crossings] if a.crossings else cross
+    if len(use) < 2:
+        print(f"SUMMARY crossings={len(cross)} period_error=nan omega_error=nan")
+        return 0
+    period = 2.0 * (use[-1] - use[0]) / (len(use) - 1)
+    om = 2.0 * math.pi / period
+    print(f"SUMMARY crossings={len(use)} period={period:.5f} omega={om:.4f} omega_theory={om_th:.4f} "
+          f"omega_error={om / om_th - 1:.4f} omega2_error={(om / om_th) ** 2 - 1:.4f} "
+          f"radius={radius:.6g} first_extremum={dev[np.argmax(abs(dev[: max(2, len(dev) // 4)]))]:.4f}")
+    return 0
+
+
+# ---------------------------------------------------------------- growth
+def mode_amplitude(d, wavelength, nbins):
+    """|Fourier coefficient| at k = 2 pi / wavelength of the surface radius r_s(z) = sqrt(A(z)/pi),
+    A(z) the volume per length of the particles in each of nbins slices of one wavelength."""
+    import numpy as np
+    z = np.mod(d["z"], wavelength)
+    vol = d["m"] / d["rho"]
+    dz = wavelength / nbins
+    a = np.bincount(np.minimum((z / dz).astype(int), nbins - 1), weights=vol, minlength=nbins) / dz
+    rs = np.sqrt(a / math.pi)
+    zc = (np.arange(nbins) + 0.5) * dz
+    k = 2 * math.pi / wavelength
+    c = 2.0 / nbins * (rs * np.exp(-1j * k * zc)).sum()
+    return abs(c), float(rs.mean())
+
+
+def fit_exp2(t, amp):
+    """Least squares amp = c1 e^{w t} + c2 e^{-w t} (relative residual), w by golden section."""
+    import numpy as np
+
+    def resid(w):
+        m = np.vstack([np.exp(w * t), np.exp(-w * t)]).T / amp[:, None]
+        c, *_ = np.linalg.lstsq(m, np.ones_like(amp), rcond=None)
+        return float(((m @ c - 1.0) ** 2).sum()), c
+
+    lo, hi = 1e-6, 50.0 / max(t[-1], 1e-12)
+    g = (math.sqrt(5) - 1) / 2
+    for _ in range(200):
+        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        if resid(x1)[0] < resid(x2)[0]:
+            hi = x2
+        else:
+            lo = x1
+    w = 0.5 * (lo + hi)
+    return w, resid(w)
+
+
+def growth(a):
+    import numpy as np
+    snaps = [fluid(d) for d in snapshots(a.run)]
+    nbins = a.bins
+    t, amp, rmean = [], [], []
+    for d in snaps:
+        c, rm = mode_amplitude(d, a.wavelength, nbins)
+        t.append(d["time"])
+        amp.append(c)
+        rmean.append(rm)
+    t, amp = np.array(t), np.array(amp)
+    scale = math.sqrt(a.sigma / (a.rho * a.radius ** 3))
+    ka = 2 * math.pi / a.wavelength * a.radius
+    om2 = rayleigh_omega2(ka)
+    oh = a.nu * math.sqrt(a.rho / (a.sigma * a.radius)) if a.nu else 0.0
+    base = (f"ka={ka:.4f} a0_over_a={amp[0] / a.radius:.4g} scale={scale:.5g} "
+            f"snapshots={len(t)}")
+    if om2 > 0:
+        # the linear range: from the start to the first snapshot where the amplitude exceeds
+        # a.linear x a (0.1 a: the nonlinear terms are then O(0.1) of the linear ones)
+        big = np.nonzero(amp > a.linear * a.radius)[0]
+        end = big[0] if len(big) else len(t)
+        if end < 4:
+            print(f"SUMMARY {base} growth_error=nan (linear range too short: {end} snapshots)")
+            return 0
+        w, (res, c) = fit_exp2(t[:end], amp[:end])
+        th = math.sqrt(om2) * scale
+        wb = weber_omega(ka, oh) * scale
+        print(f"SUMMARY {base} growth={w:.5g} rayleigh={th:.5g} growth_error={w / th - 1:.4f} "
+              f"weber={wb:.5g} weber_error={w / wb - 1:.4f} oh={oh:.4g} t_linear={t[end - 1]:.4g} "
+              f"amp_end={amp[end - 1] / a.radius:.4g} fit_rms={math.sqrt(res / end):.3g}")
+    else:
+        # stable: the amplitude oscillates, A(t) ~ A0 cos(|omega| t); report the largest
+        # amplitude reached and the first zero-amplitude time against pi / (2 |omega|)
+        grow = float(amp.max() / amp[0])
+        th = math.sqrt(-om2) * scale
+        # signed projection onto cos(kz) for the crossing
+        print(f"SUMMARY {base} stable=1 max_amp_ratio={grow:.4g} amp_end_ratio={amp[-1] / amp[0]:.4g} "
+              f"omega_theory={th:.5g} quarter_period={math.pi / (2 * th):.4g}")
+    if a.table:
+        for ti, ai in zip(t, amp):
+            print(f"{ti:.5f} {ai / a.radius:.6e}")
+    return 0
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    p = sub.add_parser("laplace")
+    p.add_argument("run")
+    p.add_argument("--sigma", type=float, required=True)
+    p.add_argument("--from", dest="t_from", type=float, default=None)
+    p = sub.add_parser("mode2")
+    p.add_argument("run")
+    p.add_argument("--sigma", type=float, required=True)
+    p.add_argument("--rho", type=float, default=1000.0)
+    p.add_argument("--crossings", type=int, default=0, help="use the first N zero crossings (0: all)")
+    p = sub.add_parser("growth")
+    p.add_argument("run")
+    p.add_argument("--sigma", type=float, required=True)
+    p.add_argument("--rho", type=float, default=1000.0)
+    p.add_argument("--radius", type=float, required=True)
+    p.add_argument("--wavelength", type=float, required=True)
+    p.add_argument("--nu", type=float, default=0.0)
+    p.add_argument("--bins", type=int, default=32)
+    p.add_argument("--linear", type=float, default=0.1, help="end of the linear range, amplitude / a")
+    p.add_argument("--table", action="store_true")
+    p = sub.add_parser("theory")
+    p.add_argument("ka", type=float, nargs="+")
+    a = ap.parse_args(argv)
+    if a.cmd == "theory":
+        for ka in a.ka:
+            o2 = rayleigh_omega2(ka)
+            print(f"ka={ka:.4f} omega2={o2:.6f} omega={math.copysign(math.sqrt(abs(o2)), o2):.6f}")
+        return 0
+    return {"laplace": laplace, "mode2": mode2, "growth": growth}[a.cmd](a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
