@@ -46,7 +46,8 @@ contains
     laminar = prm%viscosity == VISC_LAMINAR .and. prm%visc_value > 0.0_rp
     allocate(body%v(n), body%r(n), body%cont(n), body%dudr(n), body%dwdr(n))
     body%v = s%m(1:n) / s%rho(1:n)
-    body%r = axis_radius(s%x(1:n), prm%h)
+    ! signed radii: an image's r is -r of its source, so that r v is smooth across the axis
+    body%r = sign(axis_radius(s%x(1:n), prm%h), s%x(1:n))
     body%cont = 0.0_rp
     body%dudr = 0.0_rp
     body%dwdr = 0.0_rp
