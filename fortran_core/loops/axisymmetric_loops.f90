@@ -1,6 +1,7 @@
 !> The axisymmetric mode's part of the rates (physics/axisymmetric.f90), on top of the planar
 !> pair sweep of rates.f90 (sorted order, real slots only):
-!>   continuity   drho_a/dt = (1/r_a) sum_b mp_b (r_a v_a - r_b v_b) . grad_a W_ab
+!>   continuity   drho_a/dt = (1/r_a) sum_b mp_b (r_a u_a - r_b u_b) dW_ab/dr_a
+!>                            + sum_b mp_b (w_a - w_b) dW_ab/dz_a
 !>                replaces the planar sum (every real particle: dynamic boundaries too); one
 !>                extra sweep over the pairs with a fluid particle, images included
 !>   laminar      du_r/dt += nu ((1/r) du_r/dr - u_r / r^2),  du_z/dt += nu (1/r) du_z/dr
@@ -74,7 +75,7 @@ contains
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
     integer :: k, a, b
-    real(rp) :: g, du, dw, q
+    real(rp) :: g, du, dw, qa, qb
     associate (u => self%s%u, w => self%s%w, m => self%s%m, v => self%v, r => self%r, &
                cont => self%cont, dudr => self%dudr, dwdr => self%dwdr, fl => self%s%fluid)
       do k = 1, pl%n
@@ -82,9 +83,10 @@ contains
         b = pl%b(k)
         ! continuity: a gets mp_b q, b gets mp_a q (grad_b W_ba = -grad_a W_ab and the
         ! difference changes sign too)
-        q = continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k))
-        cont(a) = cont(a) + m(b) * q
-        cont(b) = cont(b) + m(a) * q
+        qa = continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k), r(a))
+        qb = continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k), r(b))
+        cont(a) = cont(a) + m(b) * qa
+        cont(b) = cont(b) + m(a) * qb
         if (.not. (self%laminar .and. fl(a) .and. fl(b))) cycle
         ! dW_ab/dx_a = F dx; dW_ba/dx_b = -F dx, and u_a - u_b = -(u_b - u_a): both get + g du
         g = pl%f(k) * pl%dx(k)

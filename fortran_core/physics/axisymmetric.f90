@@ -50,13 +50,18 @@ contains
     mp = m / (2.0_rp * pi * axis_radius(x, h))
   end function planar_mass
 
-  !> The continuity pair term (r_a v_a - r_b v_b) . grad_a W_ab with grad_a W_ab = f (dx, dz),
-  !> r the radii of axis_radius (an image's r is its source's, and its u is mirrored, so that
-  !> r u is odd across the axis) [m^2/s per m^2 of kernel].
-  pure elemental function continuity_pair(ra, ua, wa, rb, ub, wb, f, dx, dz) result(q)
-    real(rp), intent(in) :: ra, ua, wa, rb, ub, wb, f, dx, dz
+  !> The continuity pair term of particle a times r_a: (r_a u_a - r_b u_b) dW/dr_a +
+  !> r_a (w_a - w_b) dW/dz_a with grad_a W_ab = f (dx, dz); r the signed radii (an image's r is
+  !> minus its source's, and its u is mirrored, so that r u is odd and smooth across the axis).
+  !> The radial part is the product form of (1/r) d(r u)/dr (the hoop term inside it); the
+  !> axial part is the difference form of dw/dz, exactly zero for a uniform w: the product form
+  !> r w there left (1/r_a) sum mp_b (r_a - r_b) w dW/dz_a, which is not zero where the kernel is
+  !> cut by a free surface (a jet's plug drifted by 50% in density at its corners in 2 ms).
+  !> For b, swap a and b: ra_or_rb = r_b (the same radial part, the axial one times r_b).
+  pure elemental function continuity_pair(ra, ua, wa, rb, ub, wb, f, dx, dz, rself) result(q)
+    real(rp), intent(in) :: ra, ua, wa, rb, ub, wb, f, dx, dz, rself
     real(rp) :: q
-    q = f * ((ra * ua - rb * ub) * dx + (ra * wa - rb * wb) * dz)
+    q = f * ((ra * ua - rb * ub) * dx + rself * (wa - wb) * dz)
   end function continuity_pair
 
   !> The hoop terms of the viscous acceleration, nu ((1/r) du_r/dr - u_r / r^2) (radial) and
