@@ -122,6 +122,8 @@ SimParams unusual_params() {
     p.drive_ez = 0.0;
     p.drive_half_width = 0.005 + 1e-3 / 7.0;
     p.domain_box = true;
+    p.geometry = Geometry::Axisymmetric;  // not the default
+    p.periodic_z = true;
     return p;
 }
 
@@ -171,6 +173,8 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
     EXPECT_EQ(a.variable_dt, b.variable_dt);
     EXPECT_EQ(a.st_delta, b.st_delta);
     EXPECT_EQ(a.domain_box, b.domain_box);
+    EXPECT_EQ(a.geometry, b.geometry);
+    EXPECT_EQ(a.periodic_z, b.periodic_z);
 }
 
 RunState unusual_state() {
@@ -214,7 +218,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // field to the checkpoint (visit_params in io/h5_util.cpp, visit_state in io/checkpoint.cpp)
 // and to this test, then update the sizes here.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(SimParams), 320u) << "SimParams changed: update the checkpoint";
+    EXPECT_EQ(sizeof(SimParams), 328u) << "SimParams changed: update the checkpoint";
     EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
 }
 
