@@ -504,6 +504,12 @@ private:
         }
     }
 
+    // The density at which the Tait EoS gives the pressure p (rho0 when B = 0 or p = 0).
+    [[nodiscard]] double laplace_density(double p) const {
+        if (!(p_.B > 0) || p == 0) return p_.rho0;
+        return p_.rho0 * std::pow(1.0 + p / p_.B, 1.0 / p_.gamma);
+    }
+
     // A sphere of concentric half rings (axisymmetric, a FluidDisc with rings and xc = 0):
     // N = max(1, round(R / dx)) rings at radii (j - 1/2) ds, ds = R / N, j = 1..N (no centre
     // particle: it would sit on the axis), ring j holding n_j = 2 round(pi (j - 1/2)) particles
@@ -530,9 +536,11 @@ private:
                 const double th = 2 * pi * (static_cast<double>(k) + turn) / static_cast<double>(nj);
                 const double x = sx * rj * std::cos(th), z = d.zc + sz * rj * std::sin(th);
                 if (!(x > 0) || !clear(x, z)) continue;
-                const double rho =
-                    g == 0 ? rho0 : rho0 * std::pow(1.0 + rho0 * g * (ztop - z) / p_.B, 1.0 / p_.gamma);
-                const double pr = g == 0 ? 0.0 : p_.B * (std::pow(rho / rho0, p_.gamma) - 1.0);
+                // without gravity, at the sphere's Laplace pressure 2 sigma / R (0 without
+                // surface tension), so that switching the tension on starts no breathing mode
+                const double rho = g == 0 ? laplace_density(2 * p_.sigma / d.radius)
+                                          : rho0 * std::pow(1.0 + rho0 * g * (ztop - z) / p_.B, 1.0 / p_.gamma);
+                const double pr = p_.B > 0 ? p_.B * (std::pow(rho / rho0, p_.gamma) - 1.0) : 0.0;
                 ps_.push(x, z, d.u0, d.w0, rho, pr, rho * area * sx * sz, ParticleKind::Fluid);
             }
         }
@@ -542,9 +550,15 @@ private:
     // x_i = (i + 1/2) dr, dr = a / N, and M = max(1, round((zmax - zmin) / dz)) rows at
     // z_k = zmin + (k + 1/2) dzc, dzc = (zmax - zmin) / M (so that a periodic z closes with one
     // spacing across the ends), each column stretched by s(z) = 1 + eps cos(2 pi (z - zmin) /
-    // wavelength): x = s x_i, area s dr dzc, the volume per length pi a^2 s^2. At rest, rho0.
+    // wavelength): x = s x_i, area s dr dzc, the volume per length pi a^2 s^2. At rest, at the
+    // unperturbed cylinder's Laplace pressure sigma / radius (the density of the Tait EoS),
+    // so that switching the tension on starts no breathing mode: a 100 Pa mode started at
+    // p = 0 dephases along z (its frequency follows r(z)) into a z-periodic pressure wave on
+    // the axis 50 times the perturbation's own.
     void cylinder(const FluidCylinder& c) {
         const double pi = std::numbers::pi;
+        const double rho = laplace_density(p_.sigma / c.radius);
+        const double pr = p_.B > 0 ? p_.B * (std::pow(rho / p_.rho0, p_.gamma) - 1.0) : 0.0;
         const long ncol = std::max(1L, nint(c.radius / p_.dx));
         const long nrow = std::max(1L, nint((c.zmax - c.zmin) / p_.dz));
         const double dr = c.radius / static_cast<double>(ncol);
@@ -555,7 +569,7 @@ private:
                 const double s = c.wavelength > 0 ? 1 + c.eps * std::cos(2 * pi * (z - c.zmin) / c.wavelength) : 1.0;
                 const double x = s * (static_cast<double>(i) + 0.5) * dr;
                 if (!clear(x, z)) continue;
-                ps_.push(x, z, 0.0, 0.0, p_.rho0, 0.0, p_.rho0 * s * dr * dzc, ParticleKind::Fluid);
+                ps_.push(x, z, 0.0, 0.0, rho, pr, rho * s * dr * dzc, ParticleKind::Fluid);
             }
         }
     }

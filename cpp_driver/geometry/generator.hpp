@@ -50,6 +50,11 @@
 // ds = R / (N + 1/2), ring j at radius j ds with round(2 pi j) particles, each with the mass
 // rho x its share of the annulus, so that the volumes sum to pi R^2 (Builder::ring_disc). A disc with an
 // elongation e (either lattice) is the ellipse of semi-axes R (1 + e), R / (1 + e).
+// Axisymmetric geometry (SimParams::geometry): shapes on the lattice ((i + 1/2) dx, k dz), no
+// particle on the axis; a rings disc centred on the axis is a sphere of half rings
+// (Builder::sphere_rings), FluidCylinder a perturbed liquid cylinder (Builder::cylinder), both
+// at the Laplace pressure of the unperturbed shape without gravity; every mass is the ring's,
+// rho x area x 2 pi x (build()).
 #pragma once
 
 #include "config/case_spec.hpp"

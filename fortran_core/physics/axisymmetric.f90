@@ -12,10 +12,13 @@
 !>                (no hoop pressure term: -(1/rho) grad p has none in (r, z))
 !>   continuity   drho_a/dt = (1/r_a) sum_b mp_b (r_a v_a - r_b v_b) . grad_a W_ab
 !>                ~ -(rho/r) div_2D(r v) = -rho (div_2D v + u_r / r): the hoop term is inside.
-!>                This is the form for which the momentum equation above conserves the energy
-!>                sum_a m_a (v_a^2/2 + e(rho_a)) exactly (semi-discrete, m_a = 2 pi r_a mp_a):
-!>                the planar continuity plus -rho u_r / r does not, and an acoustic mode of the
-!>                particles next to the axis then grew from 1e-2 to 1 m/s within 20 ms.
+!>                r is signed: an image's r is minus its source's, so that r v is smooth
+!>                across the axis (div v on the first column of a Rayleigh-Plateau field: -0.05%
+!>                of k U I0 against -8% with r = |x|, whose r v has a kink there). With r = |x|
+!>                the pair would conserve sum_a m_a (v_a^2/2 + e(rho_a)) exactly
+!>                (m_a = 2 pi r_a mp_a), but that kink put a spurious pressure wave on the axis;
+!>                the planar continuity plus -rho u_r / r let an acoustic mode of the particles
+!>                next to the axis grow from 1e-2 to 1 m/s within 20 ms.
 !>   viscosity    du_r/dt += nu ((1/r) du_r/dr - u_r / r^2),  du_z/dt += nu (1/r) du_z/dr
 !>   CSF          kappa = div_2D nhat + nhat_r / r  (both principal curvatures)
 !> Near the axis 1/r is taken as 1/max(r, R_MIN_H h) (axis_radius): a lattice particle

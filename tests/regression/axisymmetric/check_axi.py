@@ -7,7 +7,8 @@ Usage:
 
 Runs `SPHJET run CASE --out OUT_DIR --force -q -j THREADS --set ...` (THREADS from the
 environment variable SPHJET_TEST_THREADS, default 1), then
-`tools/axisymmetric.py SUBCOMMAND OUT_DIR ARG...` with this interpreter, and checks
+`tools/axisymmetric.py SUBCOMMAND OUT_DIR ARG...` with /usr/bin/python3 (numpy, h5py; or
+$SPHJET_ANALYSIS_PYTHON), and checks
 LO <= value <= HI for every --expect (nan fails). Prints one line per check and a final line
 `N passed, M failed`; exit status 0 only when all passed. The physics and the reason for
 each tolerance are in the CMakeLists.txt that calls this script and in
@@ -63,7 +64,11 @@ def main():
         print(r.stderr[-3000:])
         print(f"0 passed, {len(a.expect)} failed")
         return 1
-    acmd = [sys.executable, TOOL, a.analyse, a.out] + a.args
+    # the analysis needs numpy and h5py: Debian's interpreter has them (README), the one that
+    # runs this script may not
+    py = os.environ.get("SPHJET_ANALYSIS_PYTHON",
+                        "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable)
+    acmd = [py, TOOL, a.analyse, a.out] + a.args
     print("$ " + " ".join(acmd), flush=True)
     r = subprocess.run(acmd, capture_output=True, text=True)
     print(r.stdout[-3000:], r.stderr[-2000:])

@@ -156,6 +156,8 @@ std::string error_of(const std::string& text, const std::vector<std::string>& ov
 void expect_same(const CaseSpec& a, const CaseSpec& b) {
     const SimParams &p = a.params, &q = b.params;
     EXPECT_EQ(p.kernel, q.kernel);
+    EXPECT_EQ(p.geometry, q.geometry);
+    EXPECT_EQ(p.periodic_z, q.periodic_z);
     EXPECT_EQ(p.integrator, q.integrator);
     EXPECT_EQ(p.density_filter, q.density_filter);
     EXPECT_EQ(p.filter_period, q.filter_period);
@@ -818,6 +820,49 @@ TEST(ModernCaseDoc, FullExampleParses) {
     EXPECT_EQ(s.params.dx, 0.002);
     EXPECT_EQ(s.obstacles.size(), 1u);
     expect_round_trip(s);
+}
+
+// domain.geometry and domain.periodic_z (cases/CASE_FORMAT.md): read, and the combinations the
+// axisymmetric mode cannot run refused with the key and what was expected.
+TEST(ModernCase, AxisymmetricAndPeriodicZ) {
+    const std::vector<std::string> axi = {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                          "numerics.lattice=\"sc\""};
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", axi);
+    EXPECT_EQ(s.params.geometry, Geometry::Axisymmetric);
+    EXPECT_FALSE(s.params.periodic_z);
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml").params.geometry, Geometry::Planar);
+
+    std::string e = error_of(kMinimal, {"domain.geometry=\"axisymmetric\""});
+    EXPECT_NE(e.find("domain.wall_left"), std::string::npos) << e;
+    e = error_of(kMinimal, {"domain.geometry=\"cylindrical\""});
+    EXPECT_NE(e.find("axisymmetric"), std::string::npos) << e;
+    e = error_of(kMinimal, {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false"});
+    EXPECT_NE(e.find("numerics.lattice"), std::string::npos) << e;
+
+    // a disc centred on the axis is a sphere; one crossing the axis elsewhere is refused
+    const std::string disc = std::string(kMinimal) + "[[fluid.disc]]\nxc = 0.0\nzc = 0.3\nradius = 0.05\n";
+    EXPECT_EQ(parse_modern_case(disc, "case.toml", axi).fluid_discs.size(), 1u);
+    std::vector<std::string> off = axi;
+    off.push_back("fluid.disc[0].xc=0.02");
+    e = error_of(disc, off);
+    EXPECT_NE(e.find("x < 0"), std::string::npos) << e;
+
+    // the cylinder needs the axisymmetric geometry; its wavelength is required with eps
+    const std::string cyl = std::string(kMinimal) + "[[fluid.cylinder]]\nradius = 0.01\neps = 0.02\nwavelength = 0.1\n";
+    e = error_of(cyl);
+    EXPECT_NE(e.find("axisymmetric"), std::string::npos) << e;
+    const CaseSpec c = parse_modern_case(cyl, "case.toml", axi);
+    ASSERT_EQ(c.fluid_cylinders.size(), 1u);
+    EXPECT_DOUBLE_EQ(c.fluid_cylinders[0].zmax, 0.5);
+    e = error_of(std::string(kMinimal) + "[[fluid.cylinder]]\nradius = 0.01\neps = 0.02\n", axi);
+    EXPECT_NE(e.find("wavelength"), std::string::npos) << e;
+
+    // periodic z: read in either geometry, refused with a bottom wall (the default)
+    e = error_of(kMinimal, {"domain.periodic_z=true"});
+    EXPECT_NE(e.find("periodic_z"), std::string::npos) << e;
+    const CaseSpec p = parse_modern_case(kMinimal, "case.toml", {"domain.periodic_z=true", "domain.wall_bottom=false"});
+    EXPECT_TRUE(p.params.periodic_z);
+    EXPECT_TRUE(p.params.domain_box);
 }
 
 }  // namespace
