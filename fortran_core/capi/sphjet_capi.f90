@@ -276,6 +276,11 @@ contains
     if (.not. (prm%h > 0.0_rp)) return
     call bind_state(arr, st, .false., .false., ok)
     if (.not. ok) return
+    ! a list of exactly the pairs closer than 2h, boundary-boundary pairs included
+    st%list_x => null()
+    st%list_z => null()
+    s%skin_per_h = 0.0_rp
+    s%all_pairs = .true.
     call gather_sorted(st, prm%h, s)
     status = SPH_OK
     do row = 0, s%grid%ncz - 1
