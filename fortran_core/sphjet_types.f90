@@ -68,6 +68,9 @@ module sphjet_types
     ! surface tension fields (may be null when sigma = 0)
     type(c_ptr) :: colour = c_null_ptr, st_nx = c_null_ptr, st_nz = c_null_ptr
     type(c_ptr) :: kappa = c_null_ptr
+    ! positions at the last neighbour-list build (may be null; NaN = no list yet). A
+    ! checkpoint that keeps them lets a resumed run list the pairs in the same order.
+    type(c_ptr) :: list_x = c_null_ptr, list_z = c_null_ptr
   end type sph_arrays_t
 
   !> What one step did (C struct sph_step_info_t).
@@ -99,6 +102,7 @@ module sphjet_types
     real(rp), pointer, contiguous :: wall_dback(:) => null(), wall_dfwd(:) => null()
     real(rp), pointer, contiguous :: colour(:) => null(), st_nx(:) => null(), st_nz(:) => null()
     real(rp), pointer, contiguous :: kappa(:) => null()
+    real(rp), pointer, contiguous :: list_x(:) => null(), list_z(:) => null()
   end type state_t
 
 contains
@@ -151,6 +155,11 @@ contains
     if (c_associated(a%st_nx)) call c_f_pointer(a%st_nx, st%st_nx, [n])
     if (c_associated(a%st_nz)) call c_f_pointer(a%st_nz, st%st_nz, [n])
     if (c_associated(a%kappa)) call c_f_pointer(a%kappa, st%kappa, [n])
+    ! optional neighbour-list build positions (both or none)
+    if (c_associated(a%list_x) .and. c_associated(a%list_z)) then
+      call c_f_pointer(a%list_x, st%list_x, [n])
+      call c_f_pointer(a%list_z, st%list_z, [n])
+    end if
     ok = .true.
 
   contains

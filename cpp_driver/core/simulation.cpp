@@ -219,6 +219,8 @@ RunSummary run_simulation(const RunOptions& opts) {
     CaseSpec spec;
     ParticleSet particles;
     RunState resumed;
+    std::vector<double> resumed_list_x, resumed_list_z;
+    std::vector<std::vector<double>> resumed_wall;
     if (opts.resume) {
         if (!fs::exists(checkpoint_path(dir)))
             throw InputError(checkpoint_path(dir).string(), "cannot resume: no checkpoint",
@@ -229,6 +231,10 @@ RunSummary run_simulation(const RunOptions& opts) {
         spec.params = cp.params;
         particles = std::move(cp.particles);
         resumed = cp.state;
+        if (const auto* lx = cp.array("list_x")) resumed_list_x = *lx;
+        if (const auto* lz = cp.array("list_z")) resumed_list_z = *lz;
+        for (const char* name : {"wall_nx", "wall_nz", "wall_dback", "wall_dfwd"})
+            resumed_wall.push_back(cp.array(name) ? *cp.array(name) : std::vector<double>{});
     } else {
         if (dir_has_files(dir) && !opts.force)
             throw InputError(dir.string(), "output directory exists and is not empty",
@@ -263,7 +269,13 @@ RunSummary run_simulation(const RunOptions& opts) {
 
     if (opts.threads > 0) Solver::set_threads(opts.threads);
     Solver solver(prm, spec.output, std::move(particles));
-    if (opts.resume) solver.state() = resumed;
+    if (opts.resume) {
+        solver.state() = resumed;
+        solver.set_list_positions(resumed_list_x, resumed_list_z);
+        if (resumed_wall.size() == 4)
+            solver.set_wall_geometry({&resumed_wall[0], &resumed_wall[1], &resumed_wall[2],
+                                      &resumed_wall[3]});
+    }
     RunState& st = solver.state();
 
     RunLog log(dir / "run.log", opts.resume);
@@ -327,7 +339,13 @@ RunSummary run_simulation(const RunOptions& opts) {
         saved.output = st.n_outputs, saved.output_time = t;
     };
     auto checkpoint = [&]() {
-        write_checkpoint(dir, solver.particles(), st, prm);
+        // the core's neighbour-list build positions: a resumed run lists the pairs as this
+        // run did (bitwise resume)
+        // and the repulsive-wall geometry as the run uses it
+        std::vector<ExtraField> kept{{"list_x", solver.list_x(), "m"},
+                                     {"list_z", solver.list_z(), "m"}};
+        for (ExtraField& f : solver.wall_geometry()) kept.push_back(std::move(f));
+        write_checkpoint(dir, solver.particles(), st, prm, kept);
         saved.checkpoint = true, saved.checkpoint_step = st.step, saved.checkpoint_time = st.time;
     };
     // A write that fails after the loop stops the run as one inside it does.

@@ -89,6 +89,7 @@ Solver::Solver(const SimParams& params, const OutputSpec& output, ParticleSet pa
     if (ps_.active.size() != n) ps_.active.assign(n, 1);
     for (auto* v : {&c_, &xo_, &zo_, &uo_, &wo_, &rhoo_, &ax_, &az_, &ar_, &xu_, &xw_})
         v->assign(n, 0.0);
+    for (auto* v : {&list_x_, &list_z_}) v->assign(n, std::numeric_limits<double>::quiet_NaN());
     if (params_.boundary == BoundaryType::Repulsive) {
         if (ps_.wall.size() != ps_.nb)
             throw InputError("particles", "repulsive walls need the wall links of every boundary "
@@ -165,6 +166,8 @@ void Solver::bind_arrays() {
         arr_.wall_dback = wall_db_.data();
         arr_.wall_dfwd = wall_df_.data();
     }
+    arr_.list_x = list_x_.data();
+    arr_.list_z = list_z_.data();
     if (!colour_.empty()) {
         arr_.colour = colour_.data();
         arr_.st_nx = st_nx_.data();
@@ -240,6 +243,29 @@ double Solver::compute_rates() {
     const int status = sph_compute_rates(ws_, &prm_, &arr_, &vmax);
     if (status != SPH_OK) fail(status, -1, "rates");
     return vmax;
+}
+
+void Solver::set_list_positions(const std::vector<double>& x, const std::vector<double>& z) {
+    if (x.size() != list_x_.size() || z.size() != list_z_.size()) return;
+    std::copy(x.begin(), x.end(), list_x_.begin());
+    std::copy(z.begin(), z.end(), list_z_.begin());
+}
+
+std::vector<ExtraField> Solver::wall_geometry() const {
+    if (wall_nx_.empty()) return {};
+    return {{"wall_nx", wall_nx_, "1"},
+            {"wall_nz", wall_nz_, "1"},
+            {"wall_dback", wall_db_, "m"},
+            {"wall_dfwd", wall_df_, "m"}};
+}
+
+void Solver::set_wall_geometry(const std::vector<const std::vector<double>*>& nx_nz_db_df) {
+    std::vector<double>* dst[] = {&wall_nx_, &wall_nz_, &wall_db_, &wall_df_};
+    if (wall_nx_.empty() || nx_nz_db_df.size() != 4) return;
+    for (std::size_t k = 0; k < 4; ++k)
+        if (nx_nz_db_df[k] == nullptr || nx_nz_db_df[k]->size() != dst[k]->size()) return;
+    for (std::size_t k = 0; k < 4; ++k)
+        std::copy(nx_nz_db_df[k]->begin(), nx_nz_db_df[k]->end(), dst[k]->begin());
 }
 
 void Solver::set_threads(int n) { sph_set_threads(n); }

@@ -11,6 +11,7 @@
 #include "config/params.hpp"
 #include "core/particles.hpp"
 #include "core/run_state.hpp"
+#include "io/hdf5_output.hpp"
 #include "sphjet_core.h"
 
 namespace sphjet {
@@ -52,6 +53,19 @@ public:
     [[nodiscard]] const std::vector<double>& st_nx() const { return st_nx_; }
     [[nodiscard]] const std::vector<double>& st_nz() const { return st_nz_; }
     [[nodiscard]] const std::vector<double>& curvature() const { return kappa_; }
+    // Positions at the core's last neighbour-list build (NaN: none yet). A checkpoint keeps
+    // them, so that a resumed run lists the pairs in the same order (bitwise resume).
+    [[nodiscard]] const std::vector<double>& list_x() const { return list_x_; }
+    [[nodiscard]] const std::vector<double>& list_z() const { return list_z_; }
+    // Restores them from a checkpoint; arrays of another length are ignored (the core then
+    // lists the pairs at the current positions).
+    void set_list_positions(const std::vector<double>& x, const std::vector<double>& z);
+    // Repulsive-wall geometry (unit normal, spacing to the wall neighbours; empty for other
+    // boundaries). sph_prepare computes it from the positions at construction: a moving gate
+    // would give it again from moved positions, which round differently, so a checkpoint
+    // keeps it and a resumed run restores it (bitwise resume).
+    [[nodiscard]] std::vector<ExtraField> wall_geometry() const;
+    void set_wall_geometry(const std::vector<const std::vector<double>*>& nx_nz_db_df);
     [[nodiscard]] RunState& state() { return state_; }
     [[nodiscard]] const RunState& state() const { return state_; }
     [[nodiscard]] const SimParams& params() const { return params_; }
@@ -74,6 +88,7 @@ private:
     std::vector<int> wall_prev_, wall_next_;
     std::vector<double> wall_nx_, wall_nz_, wall_db_, wall_df_;
     std::vector<double> colour_, st_nx_, st_nz_, kappa_;
+    std::vector<double> list_x_, list_z_;
     std::vector<char> was_active_;  // active flags before the last step with a removal
     void* ws_ = nullptr;
 };

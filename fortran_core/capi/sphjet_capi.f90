@@ -27,6 +27,12 @@ module sphjet_capi
             sph_prepare, sph_step, sph_density_filter, sph_check_state, sph_compute_rates, &
             sph_kernel_eval, sph_neighbour_pairs, sph_eos, sph_surface_tension_fields
 
+  !> A step or filter call uses at most one thread per this many particles: a step of a small
+  !> case (the 1321-particle Laplace disc: about 1 ms, with some ten parallel regions whose
+  !> passive wake-ups cost tens of microseconds each) is not worth sharing. Results do not
+  !> depend on the thread count, so this changes the speed only.
+  integer, parameter :: PARTICLES_PER_THREAD = 1000
+
   !> Scratch memory of the core, kept between calls (opaque to C++).
   type :: workspace_t
     type(sorted_t) :: sorted
@@ -58,6 +64,14 @@ contains
     integer(c_int) :: n
     n = omp_get_max_threads()
   end function sph_get_threads
+
+  !> Sets the threads of the next parallel regions to at most one per PARTICLES_PER_THREAD
+  !> of n particles (at least one); returns the count to restore afterwards.
+  integer function share_threads(n) result(nt_caller)
+    integer, intent(in) :: n
+    nt_caller = omp_get_max_threads()
+    call omp_set_num_threads(max(1, min(nt_caller, n / PARTICLES_PER_THREAD)))
+  end function share_threads
 
   !> Checks the options and values every routine relies on.
   logical function params_ok(prm)
@@ -118,6 +132,7 @@ contains
     type(state_t) :: st
     type(kernel_t) :: kern
     logical :: ok
+    integer :: nt
     status = SPH_ERR_ARGUMENT
     if (.not. c_associated(ws_handle)) return
     if (.not. params_ok(prm)) return
@@ -129,7 +144,9 @@ contains
     info%n_removed = 0
     info%bad_particle = -1
     info%bad_cause = SPH_OK
+    nt = share_threads(st%n)
     call pc_step(prm, kern, st, ws%sorted, info, status)
+    call omp_set_num_threads(nt)
     if (status /= SPH_OK) return
     if (prm%variable_dt /= 0 .and. info%dt_next < prm%dt_min) then
       status = SPH_ERR_DT_COLLAPSE
@@ -147,7 +164,7 @@ contains
     type(workspace_t), pointer :: ws
     type(state_t) :: st
     logical :: ok
-    integer :: ns
+    integer :: ns, nt
     status = SPH_ERR_ARGUMENT
     n_singular = 0
     if (.not. c_associated(ws_handle)) return
@@ -155,7 +172,9 @@ contains
     call bind_state(arr, st, .false., .false., ok)
     if (.not. ok) return
     call c_f_pointer(ws_handle, ws)
+    nt = share_threads(st%n)
     call apply_density_filter(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted, ns)
+    call omp_set_num_threads(nt)
     n_singular = ns
     status = SPH_OK
   end function sph_density_filter
@@ -283,6 +302,11 @@ contains
     if (.not. (prm%h > 0.0_rp)) return
     call bind_state(arr, st, .false., .false., ok)
     if (.not. ok) return
+    ! a list of exactly the pairs closer than 2h, boundary-boundary pairs included
+    st%list_x => null()
+    st%list_z => null()
+    s%skin_per_h = 0.0_rp
+    s%all_pairs = .true.
     call gather_sorted(st, prm%h, s)
     status = SPH_OK
     do row = 0, s%grid%ncz - 1

@@ -99,6 +99,8 @@ typedef struct sph_arrays_t {
     double* st_nx;
     double* st_nz;
     double* kappa;
+    double* list_x;           /* positions at the last neighbour-list build (may be NULL; */
+    double* list_z;           /* NaN = none yet); a checkpoint keeps them [m] */
 } sph_arrays_t;
 
 typedef struct sph_step_info_t {

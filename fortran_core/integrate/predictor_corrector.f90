@@ -10,6 +10,7 @@
 !> by the step taken; the driver keeps the legacy clock too, for comparisons).
 !> A driven nozzle (sphjet's jets, nozzle_drive) moves the fluid inside it as a rigid plug.
 module predictor_corrector
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
@@ -151,6 +152,13 @@ contains
     info%visc_dt = vmax
     info%dt_next = merge(min(dt_p, dt_c), dt, prm%variable_dt /= 0)
     call check_domain(prm, st, info%n_removed, info%bad_particle, status)
+    ! A removal changes the active set: the next gather lists the pairs again, from the
+    ! positions then (list_x = NaN, which a checkpoint keeps, so a resumed run does the same).
+    if (info%n_removed > 0) then
+      s%built = .false.
+      if (associated(st%list_x)) st%list_x = ieee_value(1.0_rp, ieee_quiet_nan)
+      if (associated(st%list_z)) st%list_z = ieee_value(1.0_rp, ieee_quiet_nan)
+    end if
     info%bad_cause = status
     if (status /= SPH_OK) return
   end subroutine pc_step

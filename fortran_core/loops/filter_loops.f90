@@ -7,7 +7,8 @@ module filter_loops
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, gather_sorted
-  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID, SWEEP_FRESH, &
+                       SWEEP_KEEP, SWEEP_REUSE
   use density_filter, only: mls_beta
   use eos_tait, only: tait_pressure, tait_sound_speed
   implicit none
@@ -56,7 +57,9 @@ contains
       body%acc = 0.0_rp
       body%rnew = 0.0_rp
       red = 0.0_rp
-      call pair_sweep(s, kern, PAIRS_FLUID, body, red)
+      ! MLS: pass 2 visits the pairs (and W) pass 1 found
+      call pair_sweep(s, kern, PAIRS_FLUID, body, red, &
+                      merge(merge(SWEEP_KEEP, SWEEP_REUSE, pass == 1), SWEEP_FRESH, mls))
       if (mls .and. pass == 1) then
         do k = 1, n
           if (.not. s%fluid(k)) cycle

@@ -22,19 +22,29 @@ module pair_list
 
 contains
 
-  !> Room for at least m pairs in pl; the list is emptied.
-  subroutine reserve(pl, m)
+  !> Room for at least m pairs in pl; the list is emptied. scratch (default .true.): with the
+  !> scratch columns pl%t.
+  subroutine reserve(pl, m, scratch)
     type(pair_list_t), intent(inout) :: pl
     integer, intent(in) :: m
+    logical, intent(in), optional :: scratch
     integer :: cap
+    logical :: with_t
+    with_t = .true.
+    if (present(scratch)) with_t = scratch
     pl%n = 0
     if (allocated(pl%a)) then
-      if (size(pl%a) >= m) return
-      deallocate(pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, pl%mixed, pl%t)
+      if (size(pl%a) < m) then
+        deallocate(pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, pl%mixed)
+        if (allocated(pl%t)) deallocate(pl%t)
+      end if
     end if
-    cap = max(1024, m + m / 2)
-    allocate(pl%a(cap), pl%b(cap), pl%dx(cap), pl%dz(cap), pl%r2(cap), pl%w(cap), pl%f(cap), &
-             pl%mixed(cap), pl%t(cap, N_SCRATCH))
+    if (.not. allocated(pl%a)) then
+      cap = max(1024, m + m / 2)
+      allocate(pl%a(cap), pl%b(cap), pl%dx(cap), pl%dz(cap), pl%r2(cap), pl%w(cap), pl%f(cap), &
+               pl%mixed(cap))
+    end if
+    if (with_t .and. .not. allocated(pl%t)) allocate(pl%t(size(pl%a), N_SCRATCH))
   end subroutine reserve
 
 end module pair_list

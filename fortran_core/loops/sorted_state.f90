@@ -10,15 +10,38 @@
 !> its neighbours, real or image, once. In axisymmetric mode m holds the planar mass
 !> m / (2 pi r) (physics/axisymmetric.f90), so that every pair loop is the SPH of the
 !> meridian plane.
+!>
+!> gather_sorted is also the one place that decides the neighbour list
+!> (neighbours/verlet_list.f90): the particles are sorted, and the pairs closer than
+!> 2h + skin listed, at their positions at the last build (xb, zb); between builds the sorted
+!> order and the list are kept and only the fields are gathered again. The list is built again
+!> when a particle has moved more than skin/2 from xb, zb, or the active set has changed.
+!>
+!> Kill -9 + resume stays bitwise: the pair order depends only on the build positions, and
+!> those live in the caller's arrays list_x, list_z (state_t), which a checkpoint keeps. A
+!> resumed run (or any call whose list_x, list_z differ from the work space's) sorts and lists
+!> from them again and gets the same order; the decision to build depends only on x, z,
+!> list_x, list_z and the active flags. Without those arrays the work space keeps its own
+!> copy (tests, diagnostics). list_x = NaN means "no list": build from the current positions.
+!> With image particles (axisymmetric or periodic z) the images follow their sources at every
+!> step, so the sorted set and the list are built again at every call (with no skin): the
+!> list is reused only by the passes of one evaluation (CSF, MLS), not over steps.
 module sorted_state
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use sphjet_kinds, only: rp, ip, KIND_FLUID, GEOM_AXISYMMETRIC
   use sphjet_types, only: state_t, sph_params_t
   use axisymmetric, only: planar_mass
   use cell_list, only: cell_grid_t, build_cell_list
   use pair_list, only: pair_list_t
+  use verlet_list, only: row_list_t, build_verlet_rows
+  !$ use omp_lib, only: omp_get_max_threads
   implicit none
   private
-  public :: sorted_t, gather_sorted, copy_to_images
+  public :: sorted_t, gather_sorted, copy_to_images, thread_lists, SKIN_PER_H
+
+  !> Skin of the neighbour list in units of h (cutoff 2h + skin). Case1 rebuilds every ~50
+  !> steps with 0.3 h; 0.15 h ran at the same speed there (README, Performance).
+  real(rp), parameter :: SKIN_PER_H = 0.3_rp
 
   type :: sorted_t
     integer :: n = 0
@@ -31,24 +54,36 @@ module sorted_state
     real(rp), allocatable :: usign(:)    !< -1 for a mirror image across the axis, else 1
     ! accumulated rates (sorted order)
     real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
-    ! one pair list per thread (traversal.f90)
-    type(pair_list_t), allocatable :: lists(:)
+    ! one pair list per thread, and the kept pairs of each row (traversal.f90)
+    type(pair_list_t), allocatable :: lists(:), cache(:)
+    ! the neighbour list: pairs of each row task (rows(0:grid%ncz-1)), build positions
+    ! (particle order), and what the build saw
+    type(row_list_t), allocatable :: rows(:)
+    real(rp), allocatable :: xb(:), zb(:)
+    logical :: built = .false.
+    integer :: n_all = -1, n_active = -1
+    integer :: n_builds = 0                !< builds so far (diagnostics)
+    real(rp) :: skin_per_h = SKIN_PER_H    !< 0: list exactly the pairs closer than 2h
+    logical :: all_pairs = .false.         !< list boundary-boundary pairs too
   end type sorted_t
 
 contains
 
-  !> Builds the cell list over the active particles and gathers their fields; with prm
-  !> (axisymmetric or periodic in z) also their image particles and the planar masses.
+  !> Gathers the fields of the active particles in sorted order, building the sorted order
+  !> and the neighbour list first when they are missing or no longer cover the state; with
+  !> prm (axisymmetric or periodic in z) also their image particles and the planar masses.
   subroutine gather_sorted(st, h, s, prm)
-    type(state_t), intent(in) :: st
+    type(state_t), intent(inout) :: st
     real(rp), intent(in) :: h
     type(sorted_t), intent(inout) :: s
     type(sph_params_t), intent(in), optional :: prm
-    integer :: k, i, n, j
-    logical :: images, axi
+    integer :: k, i, n, j, nact
+    real(rp) :: skin, d2max
+    logical :: valid, images, axi
     real(rp), allocatable :: xe(:), ze(:), sg(:)
     integer(ip), allocatable :: ae(:)
     integer, allocatable :: isrc(:), isrc_slot(:)
+    logical, allocatable :: fe(:)
 
     images = .false.
     axi = .false.
@@ -56,16 +91,50 @@ contains
       axi = prm%geometry == GEOM_AXISYMMETRIC
       images = axi .or. prm%periodic_z /= 0
     end if
-    if (.not. images) then
-      call build_cell_list(st%x, st%z, st%active, 2.0_rp * h, s%grid)
-    else
-      ! ---- image particles (axis mirror, periodic z): appended after the st%n particles ----
+    if (images) then
+      ! ---- image particles (axis mirror, periodic z): appended after the st%n particles,
+      ! sorted and listed anew at every call ----
       call image_particles(st, h, prm, axi, xe, ze, ae, isrc, sg)
-      call build_cell_list(xe, ze, ae, 2.0_rp * h, s%grid)
+      allocate(fe(size(xe)))
+      fe(1:st%n) = st%kind(1:st%n) == KIND_FLUID
+      do i = st%n + 1, size(xe)
+        fe(i) = st%kind(isrc(i - st%n)) == KIND_FLUID
+      end do
+      call build(xe, ze, ae, fe, h, 0.0_rp, s)
+      s%built = .false.
+    else
+      skin = s%skin_per_h * h
+      valid = s%built .and. s%n_all == st%n
+      if (associated(st%list_x) .and. associated(st%list_z)) then
+        ! the caller's build positions are the reference; ours may be of another run
+        if (valid) valid = all(s%xb(1:st%n) == st%list_x) .and. all(s%zb(1:st%n) == st%list_z)
+        if (.not. valid .and. listed_positions(st)) then
+          call build(st%list_x, st%list_z, st%active, st%kind == KIND_FLUID, h, skin, s)
+          valid = .true.
+        end if
+      end if
+      if (valid) then
+        nact = 0
+        d2max = 0.0_rp
+        !$omp parallel do schedule(static) reduction(+:nact) reduction(max:d2max)
+        do i = 1, st%n
+          if (st%active(i) == 0) cycle
+          nact = nact + 1
+          d2max = max(d2max, (st%x(i) - s%xb(i))**2 + (st%z(i) - s%zb(i))**2)
+        end do
+        !$omp end parallel do
+        valid = nact == s%n_active .and. d2max <= (0.5_rp * skin)**2
+      end if
+      if (.not. valid) then
+        call build(st%x, st%z, st%active, st%kind == KIND_FLUID, h, skin, s)
+        if (associated(st%list_x) .and. associated(st%list_z)) then
+          st%list_x = st%x
+          st%list_z = st%z
+        end if
+      end if
     end if
-    n = s%grid%nsorted
-    s%n = n
-    call ensure(s, n)
+
+    n = s%n
     !$omp parallel do schedule(static) private(i, j)
     do k = 1, n
       i = s%grid%order(k)
@@ -117,6 +186,71 @@ contains
     end if
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
+
+  !> Whether the caller's build positions are usable: finite for every active particle.
+  logical function listed_positions(st)
+    type(state_t), intent(in) :: st
+    integer :: i
+    listed_positions = .true.
+    do i = 1, st%n
+      if (st%active(i) == 0) cycle
+      if (ieee_is_finite(st%list_x(i)) .and. ieee_is_finite(st%list_z(i))) cycle
+      listed_positions = .false.
+      return
+    end do
+  end function listed_positions
+
+  !> Sorts the active entries of xl, zl (the particles, then any images) by cell of side
+  !> 2h + skin and lists their pairs closer than 2h + skin there (with at least one fluid
+  !> entry, fl); keeps xl, zl as the build positions.
+  subroutine build(xl, zl, act, fl, h, skin, s)
+    real(rp), intent(in) :: xl(:), zl(:), h, skin
+    integer(ip), intent(in) :: act(:)
+    logical, intent(in) :: fl(:)
+    type(sorted_t), intent(inout) :: s
+    integer :: k, i, n, n_all
+    real(rp) :: cut
+
+    cut = 2.0_rp * h + skin
+    n_all = size(xl)
+    call build_cell_list(xl, zl, act, cut, s%grid)
+    n = s%grid%nsorted
+    s%n = n
+    call ensure(s, n, n_all)
+    s%xb(1:n_all) = xl
+    s%zb(1:n_all) = zl
+    s%n_all = n_all
+    s%n_active = n
+    s%built = .true.
+    s%n_builds = s%n_builds + 1
+    call thread_lists(s)
+    if (allocated(s%rows)) then
+      if (size(s%rows) < s%grid%ncz) deallocate(s%rows)
+    end if
+    if (.not. allocated(s%rows)) allocate(s%rows(0:s%grid%ncz - 1))
+    ! the build positions in sorted order (s%x, s%z are gathered again afterwards)
+    do k = 1, n
+      i = s%grid%order(k)
+      s%x(k) = xl(i)
+      s%z(k) = zl(i)
+      s%fluid(k) = fl(i)
+    end do
+    call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), cut * cut, s%all_pairs, &
+                           s%lists, s%rows)
+  end subroutine build
+
+  !> One pair list per thread (at least omp_get_max_threads()), kept in the work space from
+  !> sweep to sweep.
+  subroutine thread_lists(s)
+    type(sorted_t), intent(inout) :: s
+    integer :: nt
+    nt = 1
+    !$ nt = omp_get_max_threads()
+    if (allocated(s%lists)) then
+      if (size(s%lists) < nt) deallocate(s%lists)
+    end if
+    if (.not. allocated(s%lists)) allocate(s%lists(nt))
+  end subroutine thread_lists
 
   !> The positions of the st%n particles followed by their images (xe, ze, active ae), each
   !> image's source particle isrc and velocity sign sg (-1 across the axis). Serial and in
@@ -194,9 +328,13 @@ contains
     end do
   end subroutine copy_to_images
 
-  subroutine ensure(s, n)
+  subroutine ensure(s, n, n_all)
     type(sorted_t), intent(inout) :: s
-    integer, intent(in) :: n
+    integer, intent(in) :: n, n_all
+    if (allocated(s%xb)) then
+      if (size(s%xb) < n_all) deallocate(s%xb, s%zb)
+    end if
+    if (.not. allocated(s%xb)) allocate(s%xb(n_all), s%zb(n_all))
     if (allocated(s%x)) then
       if (size(s%x) >= n) return
       deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, &

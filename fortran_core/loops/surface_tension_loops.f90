@@ -19,7 +19,8 @@ module surface_tension_loops
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, copy_to_images
-  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID, SWEEP_KEEP, &
+                       SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
@@ -215,7 +216,8 @@ contains
     ks = k / max(DEPTH_FACTOR_MIN, 1.0_rp - k * delta)
   end function depth_moved
 
-  !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal).
+  !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal). The colour
+  !> pass finds the pairs and evaluates the kernel; the later passes visit what it kept.
   subroutine sweep(pass, kern, s, wk)
     integer, intent(in) :: pass
     type(kernel_t), intent(in) :: kern
@@ -226,7 +228,8 @@ contains
     body%pass = pass
     body%wk => wk
     red = 0.0_rp
-    call pair_sweep(s, kern, PAIRS_FLUID, body, red)
+    call pair_sweep(s, kern, PAIRS_FLUID, body, red, &
+                    merge(SWEEP_KEEP, SWEEP_REUSE, pass == PASS_COLOUR))
   end subroutine sweep
 
   !> The pairs of one row task for one CSF pass.

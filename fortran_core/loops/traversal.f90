@@ -1,9 +1,11 @@
 !> The one pair traversal every pair loop uses (rates, density filters, surface tension, the
 !> neighbour search of the C API). Each unordered pair of particles closer than 2h is visited
-!> once: a cell meets itself and its east, north-west, north and north-east neighbours.
+!> once: the neighbour list of sorted_state.f90 (neighbours/verlet_list.f90) holds, per row
+!> of cells, the pairs that were closer than 2h + skin at its build (a cell with itself and
+!> its east, north-west, north and north-east neighbours), and stays valid over several steps.
 !>
-!> Work is split into row tasks. A task first gathers the pairs of its row that are within
-!> the kernel support into a compact list (pair_list_t: indices, separation, r^2 and, once
+!> Work is split into row tasks. A task first keeps the listed pairs of its row that are within
+!> the kernel support now in a compact list (pair_list_t: indices, separation, r^2 and, once
 !> for the whole list with the kernel chosen outside the loop, W and F); the loop body
 !> (pair_body_t%visit) then does branch-free arithmetic over that list. A task on row r
 !> writes only rows r and r+1, so tasks on rows of one parity never touch the same particle
@@ -16,18 +18,24 @@
 module traversal
   use sphjet_kinds, only: rp
   use sphjet_kernels, only: kernel_t, kernel_eval_list
-  use sorted_state, only: sorted_t
+  use sorted_state, only: sorted_t, thread_lists
   use pair_list, only: pair_list_t, reserve
-  !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
+  !$ use omp_lib, only: omp_get_thread_num
   implicit none
   private
   public :: pair_list_t, pair_body_t, pair_sweep, build_row_pairs, &
-            PAIRS_ALL, PAIRS_ANY_FLUID, PAIRS_FLUID
+            PAIRS_ALL, PAIRS_ANY_FLUID, PAIRS_FLUID, SWEEP_FRESH, SWEEP_KEEP, SWEEP_REUSE
 
   !> Which pairs a sweep visits.
   integer, parameter :: PAIRS_ALL = 0        !< every active pair closer than 2h (no kernel)
   integer, parameter :: PAIRS_ANY_FLUID = 1  !< at least one fluid particle, r > 0
   integer, parameter :: PAIRS_FLUID = 2      !< both fluid, r > 0
+
+  !> What a sweep does with the kernel-support pairs it keeps (pair_sweep's `cache`).
+  integer, parameter :: SWEEP_FRESH = 0  !< keep them in the thread's list, for this sweep only
+  integer, parameter :: SWEEP_KEEP = 1   !< keep them per row in the work space (s%cache)
+  integer, parameter :: SWEEP_REUSE = 2  !< visit the pairs (and W, F) the last SWEEP_KEEP kept:
+                                         !< same mode, positions unchanged since then
 
   !> Coincident particles (r^2 at most this) exert no pair force.
   real(rp), parameter :: R2_MIN = 1.0e-18_rp
@@ -52,31 +60,38 @@ module traversal
 contains
 
   !> Visits every pair of `mode` of the sorted particles with `body`: one parallel region,
-  !> two phases of row tasks. red: max over the tasks of what visit leaves in it.
-  subroutine pair_sweep(s, kern, mode, body, red)
+  !> two phases of row tasks. red: max over the tasks of what visit leaves in it. s must
+  !> hold the gathered state and its neighbour list (gather_sorted). cache (SWEEP_*, default
+  !> SWEEP_FRESH): a series of sweeps over the same positions (the CSF passes, the two MLS
+  !> passes) finds the pairs and evaluates the kernel once (SWEEP_KEEP, then SWEEP_REUSE).
+  !> Kept lists have no scratch columns (pl%t): their bodies must not use them.
+  subroutine pair_sweep(s, kern, mode, body, red, cache)
     type(sorted_t), intent(inout) :: s
     type(kernel_t), intent(in) :: kern
     integer, intent(in) :: mode
     class(pair_body_t), intent(inout) :: body
     real(rp), intent(inout) :: red
-    integer :: nt
-    ! one pair list per thread, kept in the work space from sweep to sweep
-    nt = 1
-    !$ nt = omp_get_max_threads()
-    if (allocated(s%lists)) then
-      if (size(s%lists) < nt) deallocate(s%lists)
+    integer, intent(in), optional :: cache
+    integer :: how
+    how = SWEEP_FRESH
+    if (present(cache)) how = cache
+    call thread_lists(s)
+    if (how == SWEEP_KEEP) then
+      if (allocated(s%cache)) then
+        if (size(s%cache) < s%grid%ncz) deallocate(s%cache)
+      end if
+      if (.not. allocated(s%cache)) allocate(s%cache(0:s%grid%ncz - 1))
     end if
-    if (.not. allocated(s%lists)) allocate(s%lists(nt))
     !$omp parallel reduction(max:red)
-    call sweep_thread(s, kern, mode, body, red)
+    call sweep_thread(s, kern, mode, how, body, red)
     !$omp end parallel
   end subroutine pair_sweep
 
-  !> One thread's share of a sweep, with the thread's own pair list.
-  subroutine sweep_thread(s, kern, mode, body, red)
+  !> One thread's share of a sweep, with the thread's own pair list (or the kept ones).
+  subroutine sweep_thread(s, kern, mode, how, body, red)
     type(sorted_t), intent(inout), target :: s
     type(kernel_t), intent(in) :: kern
-    integer, intent(in) :: mode
+    integer, intent(in) :: mode, how
     class(pair_body_t), intent(inout) :: body
     real(rp), intent(inout) :: red
     type(pair_list_t), pointer :: pl
@@ -87,112 +102,72 @@ contains
     do phase = 0, 1
       !$omp do schedule(dynamic, 1)
       do row = phase, s%grid%ncz - 1, 2
-        call build_row_pairs(s, row, kern%support2, mode, pl)
-        if (mode /= PAIRS_ALL) call kernel_eval_list(kern, pl%r2(1:pl%n), pl%w(1:pl%n), pl%f(1:pl%n))
+        if (how /= SWEEP_FRESH) pl => s%cache(row)
+        if (how /= SWEEP_REUSE) then
+          call build_row_pairs(s, row, kern%support2, mode, pl, how == SWEEP_FRESH)
+          if (mode /= PAIRS_ALL) call kernel_eval_list(kern, pl%r2(1:pl%n), pl%w(1:pl%n), pl%f(1:pl%n))
+        end if
         call body%visit(pl, red)
       end do
       !$omp end do
     end do
   end subroutine sweep_thread
 
-  !> The pairs of row task `row` (0-based) closer than sqrt(support2) into pl, in the order
-  !> cell (west to east), partner cell (self, E, NW, N, NE), a, b.
-  subroutine build_row_pairs(s, row, support2, mode, pl)
+  !> The pairs of row task `row` (0-based) closer than sqrt(support2) now into pl: the
+  !> row's neighbour list (sorted_state.f90) filtered, in its order (cell west to east,
+  !> partner cell self, E, NW, N, NE, a, b).
+  subroutine build_row_pairs(s, row, support2, mode, pl, scratch)
     type(sorted_t), intent(in) :: s
     integer, intent(in) :: row, mode
     real(rp), intent(in) :: support2
     type(pair_list_t), intent(inout) :: pl
-    integer :: cx, c, ncx, ncz, m
-    ncx = s%grid%ncx
-    ncz = s%grid%ncz
-    ! room for every candidate of the row: each particle with its own and the four next cells
-    m = 0
-    do cx = 0, ncx - 1
-      c = 1 + cx + ncx * row
-      m = m + count_in(c) * (count_in(c) + count_in(c + 1) + merge(count_in(c + ncx - 1) &
-          + count_in(c + ncx) + count_in(c + ncx + 1), 0, row + 1 < ncz))
-    end do
-    call reserve(pl, m)
-    do cx = 0, ncx - 1
-      c = 1 + cx + ncx * row
-      if (s%grid%start(c + 1) <= s%grid%start(c)) cycle
-      call cell_pair(c, .true.)
-      if (cx + 1 < ncx) call cell_pair(c + 1, .false.)
-      if (row + 1 < ncz) then
-        if (cx > 0) call cell_pair(c + ncx - 1, .false.)
-        call cell_pair(c + ncx, .false.)
-        if (cx + 1 < ncx) call cell_pair(c + ncx + 1, .false.)
-      end if
-    end do
-
-  contains
-
-    subroutine cell_pair(cb, self)
-      integer, intent(in) :: cb
-      logical, intent(in) :: self
-      integer :: a, b0, b1
-      logical :: fa
-      b1 = s%grid%start(cb + 1) - 1
-      do a = s%grid%start(c), s%grid%start(c + 1) - 1
-        b0 = merge(a + 1, s%grid%start(cb), self)
-        if (b1 < b0) cycle
-        fa = s%fluid(a)
-        if (mode == PAIRS_FLUID .and. .not. fa) cycle
-        call keep_close(a, b0, b1, s%x, s%z, s%fluid, support2, &
-                        merge(-1.0_rp, R2_MIN, mode == PAIRS_ALL), &
-                        mode == PAIRS_FLUID .or. (mode == PAIRS_ANY_FLUID .and. .not. fa), &
-                        pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%mixed)
-      end do
-    end subroutine cell_pair
-
-    !> Particles in cell cc (0 for a cell index beyond the grid).
-    pure integer function count_in(cc)
-      integer, intent(in) :: cc
-      if (cc > ncx * ncz) then
-        count_in = 0
-      else
-        count_in = s%grid%start(cc + 1) - s%grid%start(cc)
-      end if
-    end function count_in
-
+    logical, intent(in), optional :: scratch   !< with pl%t (default)
+    associate (rl => s%rows(row))
+      call reserve(pl, rl%n, scratch)
+      call keep_close(rl%n, rl%a, rl%b, s%x, s%z, s%fluid, support2, &
+                      merge(-1.0_rp, R2_MIN, mode == PAIRS_ALL), mode == PAIRS_FLUID, &
+                      mode == PAIRS_ANY_FLUID, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%mixed)
+    end associate
   end subroutine build_row_pairs
 
-  !> Appends the pairs (a, b), b = b0..b1, with lo2 < r^2 < support2 (and b fluid when
-  !> need_fluid) at n+1...: every candidate is written and kept by advancing n, so that the
-  !> loop has no data-dependent branch. The arrays must have room for n + b1 - b0 + 1.
-  pure subroutine keep_close(a, b0, b1, x, z, fluid, support2, lo2, need_fluid, n, pa, pb, &
-                             pdx, pdz, pr2, mixed)
-    integer, intent(in) :: a, b0, b1
+  !> Appends the listed pairs (la(j), lb(j)), j = 1..nl, with lo2 < r^2 < support2 (both
+  !> fluid when both_fluid, one of them when one_fluid) at n+1...: every pair is written and
+  !> kept by advancing n, so that the loop has no data-dependent branch. The arrays must have
+  !> room for n + nl.
+  pure subroutine keep_close(nl, la, lb, x, z, fluid, support2, lo2, both_fluid, one_fluid, &
+                             n, pa, pb, pdx, pdz, pr2, mixed)
+    integer, intent(in) :: nl, la(:), lb(:)
     real(rp), intent(in) :: x(:), z(:), support2, lo2
-    logical, intent(in) :: fluid(:), need_fluid
+    logical, intent(in) :: fluid(:), both_fluid, one_fluid
     integer, intent(inout) :: n
     integer, intent(inout) :: pa(:), pb(:)
     real(rp), intent(inout) :: pdx(:), pdz(:), pr2(:)
     logical, intent(inout) :: mixed(:)
-    integer :: b, k
-    real(rp) :: xa, za, dx, dz, r2
-    logical :: fa, keep, nf
-    xa = x(a)
-    za = z(a)
-    fa = fluid(a)
-    nf = .not. need_fluid
+    integer :: j, k, a, b
+    real(rp) :: dx, dz, r2
+    logical :: fa, fb, nb, no
+    nb = .not. both_fluid
+    no = .not. one_fluid
     k = n
-    do b = b0, b1
-      dx = xa - x(b)
-      dz = za - z(b)
+    do j = 1, nl
+      a = la(j)
+      b = lb(j)
+      dx = x(a) - x(b)
+      dz = z(a) - z(b)
       r2 = dx * dx + dz * dz
-      ! products of 0/1, not .and.: the compiler would branch on each operand
-      keep = merge(1, 0, r2 < support2) * merge(1, 0, r2 > lo2) * merge(1, 0, fluid(b) .or. nf) /= 0
+      fa = fluid(a)
+      fb = fluid(b)
       pa(k + 1) = a
       pb(k + 1) = b
       pdx(k + 1) = dx
       pdz(k + 1) = dz
       pr2(k + 1) = r2
-      mixed(k + 1) = fa .neqv. fluid(b)
-      k = k + merge(1, 0, keep)
+      mixed(k + 1) = fa .neqv. fb
+      ! products of 0/1, not .and.: the compiler would branch on each operand
+      k = k + merge(1, 0, r2 < support2) * merge(1, 0, r2 > lo2) &
+            * merge(1, 0, (fa .and. fb) .or. nb) * merge(1, 0, fa .or. fb .or. no)
     end do
     n = k
   end subroutine keep_close
-
 
 end module traversal
