@@ -41,7 +41,7 @@ import math
 import os
 import sys
 
-from study_runs import StudyError, blew_up, parse_log, run_all
+from study_runs import StudyError, blew_up, parse_log, run_all, select_runs
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "jet", "jet.toml")
@@ -122,17 +122,7 @@ def cmd_run(args):
     sdir = study_dir(root, args.dx)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = [r for r in plan(args.dx) if r[0] in names]
-    if args.only:
-        known = {r[1] for r in plan(args.dx)}
-        bad = [n for n in args.only if n not in known]
-        if bad:
-            raise StudyError(f"--only {' '.join(bad)}: not in the plan; the runs are "
-                             f"{', '.join(r[1] for r in plan(args.dx))}")
-        todo = [r for r in todo if r[1] in args.only]
-    if not args.dry_run and not os.access(args.sphjet, os.X_OK):
-        raise StudyError(f"{args.sphjet}: sphjet binary not found or not executable "
-                         f"(build it with tools/build.sh, or give --sphjet PATH)")
+    todo = select_runs(plan(args.dx), names, args.only, args.sphjet, args.dry_run)
     if not os.path.isfile(case):
         raise StudyError(f"{case}: base case not found")
 

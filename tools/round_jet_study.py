@@ -39,7 +39,7 @@ import math
 import os
 import sys
 
-from study_runs import StudyError, blew_up, parse_log, run_all
+from study_runs import StudyError, blew_up, parse_log, run_all, select_runs
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "round_jet", "round_jet.toml")
@@ -139,18 +139,7 @@ def cmd_run(args):
     sdir = study_dir(args.root, args.eps, args.d0_over_dx)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    full = plan(args.eps, args.d0_over_dx)
-    todo = [r for r in full if r[0] in names]
-    if args.only:
-        known = {r[1] for r in full}
-        bad = [x for x in args.only if x not in known]
-        if bad:
-            raise StudyError(f"--only {' '.join(bad)}: not in the plan; the runs are "
-                             f"{', '.join(r[1] for r in full)}")
-        todo = [r for r in todo if r[1] in args.only]
-    if not args.dry_run and not os.access(args.sphjet, os.X_OK):
-        raise StudyError(f"{args.sphjet}: sphjet binary not found or not executable "
-                         f"(build it with tools/build.sh, or give --sphjet PATH)")
+    todo = select_runs(plan(args.eps, args.d0_over_dx), names, args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,

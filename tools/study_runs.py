@@ -106,6 +106,24 @@ def tail(path, n=15):
     return "\n".join("    " + l for l in lines[-n:]) if lines else "    (no run.log)"
 
 
+def select_runs(full, names, only, sphjet, dry_run):
+    """The runs of the plan `full` (tuples whose [0] is the set name and [1] the run name) in
+    the sets `names`, only those named in `only` when given; StudyError for a name not in the
+    plan, or for a missing sphjet binary when runs are to be made."""
+    todo = [r for r in full if r[0] in names]
+    if only:
+        known = {r[1] for r in full}
+        bad = [x for x in only if x not in known]
+        if bad:
+            raise StudyError(f"--only {' '.join(bad)}: not in the plan; the runs are "
+                             f"{', '.join(r[1] for r in full)}")
+        todo = [r for r in todo if r[1] in only]
+    if not dry_run and not os.access(sphjet, os.X_OK):
+        raise StudyError(f"{sphjet}: sphjet binary not found or not executable "
+                         f"(build it with tools/build.sh, or give --sphjet PATH)")
+    return todo
+
+
 def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd):
     """Runs `todo` (a list of (name, [key=value overrides])) of the base case `case` in
     sdir/NAME, one at a time, as the module says. tool: the command named in messages

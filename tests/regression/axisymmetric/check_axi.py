@@ -25,18 +25,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOOL = os.path.join(HERE, "..", "..", "..", "tools", "axisymmetric.py")
 
 
-def summary(text):
-    for line in text.splitlines():
-        if line.startswith("SUMMARY "):
-            out = {}
-            for item in line.split()[1:]:
-                k, _, v = item.partition("=")
-                try:
-                    out[k] = float(v)
-                except ValueError:
-                    out[k] = v
-            return out
-    return None
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from summary_line import summary  # noqa: E402  (tests/regression/summary_line.py)
 
 
 def main():
