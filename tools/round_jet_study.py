@@ -259,7 +259,7 @@ def report(args):
             + md_table(header, rows) +
             f"\nFits over the Mansour & Chigier speeds (x = sqrt(We_d)(1 + 3 Oh_d)):\n\n"
             f"| | C of L/d0 = C x | line |\n|---|---|---|\n"
-            f"| measured ({len(xs_m) - sum(1 for *_x, i, _r in runs if i['L_meas'] is None)} jets) | "
+            f"| measured ({len(xs_m)} jets) | "
             f"{fmt(c_m)} | {line_text(line_m)} |\n"
             f"| SPH ({len(xs_s)} runs) | {fmt(c_s)} | {line_text(line_s)} |\n\n"
             f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
