@@ -20,7 +20,7 @@ module axisymmetric_loops
   private
   public :: axisymmetric_rates
 
-  !> The sweep: the continuity sum (with r_a v_a - r_b v_b) and, with laminar viscosity, the
+  !> The sweep: the continuity sum (its radial and axial parts) and, with laminar viscosity, the
   !> radial derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area.
   type, extends(pair_body_t) :: axi_body_t
     type(sorted_t), pointer :: s => null()
@@ -75,18 +75,17 @@ contains
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
     integer :: k, a, b
-    real(rp) :: g, du, dw, qa, qb
+    real(rp) :: g, du, dw, qr, qz
     associate (u => self%s%u, w => self%s%w, m => self%s%m, v => self%v, r => self%r, &
                cont => self%cont, dudr => self%dudr, dwdr => self%dwdr, fl => self%s%fluid)
       do k = 1, pl%n
         a = pl%a(k)
         b = pl%b(k)
-        ! continuity: a gets mp_b q, b gets mp_a q (grad_b W_ba = -grad_a W_ab and the
+        ! continuity: a gets mp_b (qr + r_a qz), b mp_a (qr + r_b qz) (grad_b W_ba = -grad_a W_ab and the
         ! difference changes sign too)
-        qa = continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k), r(a))
-        qb = continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k), r(b))
-        cont(a) = cont(a) + m(b) * qa
-        cont(b) = cont(b) + m(a) * qb
+        call continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k), qr, qz)
+        cont(a) = cont(a) + m(b) * (qr + r(a) * qz)
+        cont(b) = cont(b) + m(a) * (qr + r(b) * qz)
         if (.not. (self%laminar .and. fl(a) .and. fl(b))) cycle
         ! dW_ab/dx_a = F dx; dW_ba/dx_b = -F dx, and u_a - u_b = -(u_b - u_a): both get + g du
         g = pl%f(k) * pl%dx(k)

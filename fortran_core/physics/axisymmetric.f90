@@ -53,19 +53,21 @@ contains
     mp = m / (2.0_rp * pi * axis_radius(x, h))
   end function planar_mass
 
-  !> The continuity pair term of particle a times r_a: (r_a u_a - r_b u_b) dW/dr_a +
-  !> r_a (w_a - w_b) dW/dz_a with grad_a W_ab = f (dx, dz); r the signed radii (an image's r is
-  !> minus its source's, and its u is mirrored, so that r u is odd and smooth across the axis).
-  !> The radial part is the product form of (1/r) d(r u)/dr (the hoop term inside it); the
-  !> axial part is the difference form of dw/dz, exactly zero for a uniform w: the product form
-  !> r w there left (1/r_a) sum mp_b (r_a - r_b) w dW/dz_a, which is not zero where the kernel is
-  !> cut by a free surface (a jet's plug drifted by 50% in density at its corners in 2 ms).
-  !> For b, swap a and b: ra_or_rb = r_b (the same radial part, the axial one times r_b).
-  pure elemental function continuity_pair(ra, ua, wa, rb, ub, wb, f, dx, dz, rself) result(q)
-    real(rp), intent(in) :: ra, ua, wa, rb, ub, wb, f, dx, dz, rself
-    real(rp) :: q
-    q = f * ((ra * ua - rb * ub) * dx + rself * (wa - wb) * dz)
-  end function continuity_pair
+  !> The two parts of the continuity pair term: the radial qr = (r_a u_a - r_b u_b) dW/dr_a
+  !> and the axial qz = (w_a - w_b) dW/dz_a, grad_a W_ab = f (dx, dz); r the signed radii (an
+  !> image's r is minus its source's, and its u is mirrored, so that r u is odd and smooth
+  !> across the axis). Particle a gets mp_b (qr + r_a qz) / r_a, particle b mp_a (qr + r_b qz)
+  !> / r_b (both parts change sign with grad and with the difference). The radial part is the
+  !> product form of (1/r) d(r u)/dr (the hoop term inside it); the axial part is the
+  !> difference form of dw/dz, exactly zero for a uniform w: the product form r w there left
+  !> (1/r_a) sum mp_b (r_a - r_b) w dW/dz_a, which is not zero where the kernel is cut by a
+  !> free surface (a jet's plug drifted by 50% in density at its corners in 2 ms).
+  pure elemental subroutine continuity_pair(ra, ua, wa, rb, ub, wb, f, dx, dz, qr, qz)
+    real(rp), intent(in) :: ra, ua, wa, rb, ub, wb, f, dx, dz
+    real(rp), intent(out) :: qr, qz
+    qr = f * (ra * ua - rb * ub) * dx
+    qz = f * (wa - wb) * dz
+  end subroutine continuity_pair
 
   !> The hoop terms of the viscous acceleration, nu ((1/r) du_r/dr - u_r / r^2) (radial) and
   !> nu (1/r) du_z/dr (axial); dudr, dwdr the radial derivatives of u_r and u_z [1/s].
