@@ -15,18 +15,16 @@ each tolerance are in the CMakeLists.txt that calls this script and in
 cases/axisymmetric/README.md.
 """
 import argparse
-import math
 import os
 import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOOL = os.path.join(HERE, "..", "..", "..", "tools", "axisymmetric.py")
 
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_line import summary  # noqa: E402  (tests/regression/summary_line.py)
+from summary_checks import check, run_case, summary  # noqa: E402  (tests/regression/)
 
 
 def main():
@@ -41,18 +39,7 @@ def main():
     ap.add_argument("--show", action="append", default=[])
     a = ap.parse_args()
 
-    threads = os.environ.get("SPHJET_TEST_THREADS", "1")
-    cmd = [a.sphjet, "run", a.case, "--out", a.out, "--force", "-q", "-j", threads]
-    for s in a.sets:
-        cmd += ["--set", s]
-    print("$ " + " ".join(cmd), flush=True)
-    t0 = time.time()
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    print(f"run: exit {r.returncode}, {time.time() - t0:.1f} s wall", flush=True)
-    if r.returncode != 0:
-        print(r.stdout[-3000:])
-        print(r.stderr[-3000:])
-        print(f"0 passed, {len(a.expect)} failed")
+    if not run_case(a.sphjet, a.case, a.out, a.sets, len(a.expect)):
         return 1
     # the analysis needs numpy and h5py: Debian's interpreter has them (README), the one that
     # runs this script may not
@@ -66,18 +53,7 @@ def main():
     if r.returncode != 0 or s is None:
         print(f"0 passed, {len(a.expect)} failed")
         return 1
-    ok = bad = 0
-    for e in a.expect:
-        key, lo, hi = e.rsplit(":", 2)
-        v = s.get(key, float("nan"))
-        good = isinstance(v, float) and not math.isnan(v) and float(lo) <= v <= float(hi)
-        print(f"{'PASS' if good else 'FAIL'} {key} = {v} in [{lo}, {hi}]")
-        ok += good
-        bad += not good
-    for k in a.show:
-        print(f"show {k} = {s.get(k)}")
-    print(f"{ok} passed, {bad} failed")
-    return 0 if bad == 0 else 1
+    return check(s, a.expect, a.show)
 
 
 if __name__ == "__main__":

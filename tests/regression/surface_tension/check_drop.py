@@ -13,15 +13,13 @@ the exit status is 0 only when every check passed. The physics and the reason fo
 tolerance are stated in the CMakeLists.txt that calls this script and in the case READMEs.
 """
 import argparse
-import math
 import os
 import subprocess
 import sys
-import time
 
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_line import summary  # noqa: E402  (tests/regression/summary_line.py)
+from summary_checks import check, run_case, summary  # noqa: E402  (tests/regression/)
 
 
 def main():
@@ -35,18 +33,7 @@ def main():
     ap.add_argument("--show", action="append", default=[], help="KEY to print, not checked")
     a = ap.parse_args()
 
-    threads = os.environ.get("SPHJET_TEST_THREADS", "1")
-    cmd = [a.sphjet, "run", a.case, "--out", a.out, "--force", "-q", "-j", threads]
-    for s in a.sets:
-        cmd += ["--set", s]
-    print("$ " + " ".join(cmd), flush=True)
-    t0 = time.time()
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    print(f"run: exit {r.returncode}, {time.time() - t0:.1f} s wall", flush=True)
-    if r.returncode != 0:
-        print(r.stdout[-3000:])
-        print(r.stderr[-3000:])
-        print(f"0 passed, {len(a.expect)} failed")
+    if not run_case(a.sphjet, a.case, a.out, a.sets, len(a.expect)):
         return 1
     dcmd = [a.sphjet, "drop", a.out, "-q"] + a.drop
     print("$ " + " ".join(dcmd), flush=True)
@@ -58,19 +45,7 @@ def main():
         print(f"0 passed, {len(a.expect)} failed")
         return 1
     print(next(l for l in d.stdout.splitlines() if l.startswith("SUMMARY ")))
-    for k in a.show:
-        print(f"  {k} = {s.get(k)}")
-    passed = failed = 0
-    for e in a.expect:
-        key, lo, hi = e.split(":")
-        lo, hi = float(lo), float(hi)
-        v = s.get(key)
-        ok = isinstance(v, float) and not math.isnan(v) and lo <= v <= hi
-        print(f"{'PASS' if ok else 'FAIL'} {key} = {v} (expected in [{lo:g}, {hi:g}])")
-        passed += ok
-        failed += not ok
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return check(s, a.expect, a.show)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,61 @@
+"""What the SUMMARY-line regression scripts share (surface_tension/check_drop.py,
+axisymmetric/check_axi.py): run a case, read the line `SUMMARY key=value ...` that an analysis
+prints, and check its numbers against [LO, HI] ranges.
+
+Every function prints what it does; a failure prints `0 passed, N failed` and returns None or
+exit status 1, so that the caller's last line is always `N passed, M failed`."""
+import math
+import os
+import subprocess
+import time
+
+
+def summary(text):
+    """`SUMMARY key=value ...` -> dict, numbers as floats; None when there is no such line."""
+    for line in text.splitlines():
+        if line.startswith("SUMMARY "):
+            out = {}
+            for item in line.split()[1:]:
+                k, _, v = item.partition("=")
+                try:
+                    out[k] = float(v)
+                except ValueError:
+                    out[k] = v
+            return out
+    return None
+
+
+def run_case(sphjet, case, out, sets, n_expect):
+    """`SPHJET run CASE --out OUT --force -q -j THREADS --set ...` (THREADS from
+    SPHJET_TEST_THREADS, default 1) -> True when it exited 0."""
+    threads = os.environ.get("SPHJET_TEST_THREADS", "1")
+    cmd = [sphjet, "run", case, "--out", out, "--force", "-q", "-j", threads]
+    for s in sets:
+        cmd += ["--set", s]
+    print("$ " + " ".join(cmd), flush=True)
+    t0 = time.time()
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    print(f"run: exit {r.returncode}, {time.time() - t0:.1f} s wall", flush=True)
+    if r.returncode != 0:
+        print(r.stdout[-3000:])
+        print(r.stderr[-3000:])
+        print(f"0 passed, {n_expect} failed")
+        return False
+    return True
+
+
+def check(s, expect, show):
+    """LO <= s[KEY] <= HI for every KEY:LO:HI of expect (a missing or nan value fails), and
+    the values named in show printed -> exit status (0 when every check passed)."""
+    ok = bad = 0
+    for e in expect:
+        key, lo, hi = e.rsplit(":", 2)
+        v = s.get(key, float("nan"))
+        good = isinstance(v, float) and not math.isnan(v) and float(lo) <= v <= float(hi)
+        print(f"{'PASS' if good else 'FAIL'} {key} = {v} (expected in [{lo}, {hi}])")
+        ok += good
+        bad += not good
+    for k in show:
+        print(f"  {k} = {s.get(k)}")
+    print(f"{ok} passed, {bad} failed")
+    return 0 if bad == 0 else 1
