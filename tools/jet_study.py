@@ -15,14 +15,8 @@ The plan: `--set` overrides on the base case cases/jet/jet.toml, every run at re
   physics   phys_base (u0 = 0.25, Wendland), phys_nogravity (gravity.gz=0),
             phys_nosigma (surface_tension.sigma=0), phys_fine (resolution.dx = DX/2)
 
-`run` runs what is missing, one run at a time: a run is finished when the last session of its
-run.log (the lines from the last `sphjet ... starting|resuming`) has a `done:` line and no
-`stopped by signal` line (sphjet writes `done:` also when interrupted); otherwise it resumes
-from DIR/checkpoint.h5 when there is one, else starts afresh (--force: a directory without a
-checkpoint holds nothing to keep). The first failure stops the study with the run's exit code
-and the end of its log. SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and
-exits; the study then exits with 128 + signal, and the next `run` resumes. One `run` per
-study directory at a time (a lock file, ROOT/dxDX/.lock). A hidden --tmax T is passed to
+`run` runs what is missing, one run at a time, resumable, a blow-up counted as a result
+(tools/study_runs.py says how; its lock is ROOT/dxDX/.lock). A hidden --tmax T is passed to
 sphjet as --tmax (short plumbing checks; use a scratch --root: such runs count as finished).
 
 `report` reads the run directories that exist (missing ones are listed, not fatal) and writes
