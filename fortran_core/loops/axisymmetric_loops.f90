@@ -10,25 +10,30 @@
 !> Artificial viscosity gets no hoop term: it is numerical damping of the meridian plane,
 !> not a model of a physical viscosity. Image slots (order > n_state) are left alone.
 module axisymmetric_loops
-  use sphjet_kinds, only: rp, VISC_LAMINAR
+  use sphjet_kinds, only: rp, VISC_LAMINAR, KERNEL_WENDLAND
   use sphjet_types, only: sph_params_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID
-  use axisymmetric, only: axis_radius, continuity_pair, viscous_hoop
+  use axisymmetric, only: axis_radius, viscous_hoop, axis_weight_tables, axis_weights, &
+                          AXIS_TABLE_N
   implicit none
   private
-  public :: axisymmetric_rates
+  public :: axisymmetric_rates, axis_weights_of
 
   !> The sweep: the continuity sum (its radial and axial parts) and, with laminar viscosity, the
   !> radial derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area.
   type, extends(pair_body_t) :: axi_body_t
     type(sorted_t), pointer :: s => null()
     logical :: laminar = .false.
-    real(rp), allocatable :: v(:), r(:), cont(:), dudr(:), dwdr(:)
+    real(rp), allocatable :: v(:), mu(:), pg(:), cont(:), pax(:), paz(:), dudr(:), dwdr(:)
   contains
     procedure :: visit => axi_visit
   end type axi_body_t
+
+  !> Axis weight tables per kernel kind (axis_weight_tables), built on first use.
+  real(rp), save :: tab_gi(AXIS_TABLE_N, KERNEL_WENDLAND), tab_hoop(AXIS_TABLE_N, KERNEL_WENDLAND)
+  logical, save :: tab_ready(KERNEL_WENDLAND) = .false.
 
 contains
 
@@ -41,15 +46,20 @@ contains
     type(axi_body_t) :: body
     integer :: k, n
     real(rp) :: red, hx, hz
+    real(rp), allocatable :: gi(:), hoop(:)
     logical :: laminar
 
     n = s%n
     laminar = prm%viscosity == VISC_LAMINAR .and. prm%visc_value > 0.0_rp
-    allocate(body%v(n), body%r(n), body%cont(n), body%dudr(n), body%dwdr(n))
+    allocate(body%v(n), body%mu(n), body%pg(n), body%cont(n), body%pax(n), body%paz(n), &
+             body%dudr(n), body%dwdr(n), gi(n), hoop(n))
+    call axis_weights_of(kern, s%x(1:n), gi, hoop)
     body%v = s%m(1:n) / s%rho(1:n)
-    ! signed radii: an image's r is -r of its source, so that r v is smooth across the axis
-    body%r = sign(axis_radius(s%x(1:n), prm%h), s%x(1:n))
+    body%mu = s%m(1:n) * axis_radius(s%x(1:n), prm%h)   ! m / (2 pi): s%m is m / (2 pi r)
+    body%pg = s%pr(1:n) * gi
     body%cont = 0.0_rp
+    body%pax = 0.0_rp
+    body%paz = 0.0_rp
     body%dudr = 0.0_rp
     body%dwdr = 0.0_rp
     body%laminar = laminar
@@ -59,7 +69,11 @@ contains
     !$omp parallel do schedule(static) private(hx, hz)
     do k = 1, n
       if (s%grid%order(k) > n_state) cycle
-      s%ar(k) = body%cont(k) / body%r(k)
+      s%ar(k) = (body%cont(k) - s%rho(k) * hoop(k) / gi(k) * s%u(k)) * gi(k)
+      if (s%fluid(k)) then
+        s%ax(k) = s%ax(k) + body%pax(k) + s%p(k) / s%rho(k) * hoop(k)
+        s%az(k) = s%az(k) + body%paz(k)
+      end if
       if (laminar .and. s%fluid(k)) then
         call viscous_hoop(prm%visc_value, s%u(k), body%dudr(k), body%dwdr(k), s%x(k), prm%h, &
                           hx, hz)
@@ -70,22 +84,48 @@ contains
     !$omp end parallel do
   end subroutine axisymmetric_rates
 
+  !> The axis weights 1/g, the radial weight and the hoop factor of every x
+  !> (physics/axisymmetric.f90: axis_weights), from the kernel's tables (built once per kind).
+  subroutine axis_weights_of(kern, x, gi, hoop)
+    type(kernel_t), intent(in) :: kern
+    real(rp), intent(in) :: x(:)
+    real(rp), intent(out) :: gi(:), hoop(:)
+    integer :: k
+    !$omp critical (axis_weight_tables_cache)
+    if (.not. tab_ready(kern%kind)) then
+      call axis_weight_tables(kern%kind, tab_gi(:, kern%kind), tab_hoop(:, kern%kind))
+      tab_ready(kern%kind) = .true.
+    end if
+    !$omp end critical (axis_weight_tables_cache)
+    do k = 1, size(x)
+      call axis_weights(x(k), kern%h, tab_gi(:, kern%kind), tab_hoop(:, kern%kind), gi(k), hoop(k))
+    end do
+  end subroutine axis_weights_of
+
   subroutine axi_visit(self, pl, red)
     class(axi_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
     integer :: k, a, b
-    real(rp) :: g, du, dw, qr, qz
-    associate (u => self%s%u, w => self%s%w, m => self%s%m, v => self%v, r => self%r, &
-               cont => self%cont, dudr => self%dudr, dwdr => self%dwdr, fl => self%s%fluid)
+    real(rp) :: g, du, dw, gx, gz, q, t
+    associate (u => self%s%u, w => self%s%w, mu => self%mu, v => self%v, pg => self%pg, &
+               cont => self%cont, pax => self%pax, paz => self%paz, &
+               dudr => self%dudr, dwdr => self%dwdr, fl => self%s%fluid)
       do k = 1, pl%n
         a = pl%a(k)
         b = pl%b(k)
-        ! continuity: a gets mp_b (qr + r_a qz), b mp_a (qr + r_b qz) (grad_b W_ba = -grad_a W_ab and the
-        ! difference changes sign too)
-        call continuity_pair(r(a), u(a), w(a), r(b), u(b), w(b), pl%f(k), pl%dx(k), pl%dz(k), qr, qz)
-        cont(a) = cont(a) + m(b) * (qr + r(a) * qz)
-        cont(b) = cont(b) + m(a) * (qr + r(b) * qz)
+        gx = pl%f(k) * pl%dx(k)
+        gz = pl%f(k) * pl%dz(k)
+        ! continuity: a gets mu_b v_ab . grad_a W_ab, b mu_a v_ab . grad_a W_ab
+        q = (u(a) - u(b)) * gx + (w(a) - w(b)) * gz
+        cont(a) = cont(a) + mu(b) * q
+        cont(b) = cont(b) + mu(a) * q
+        ! pressure: a gets -mu_b (P_a/g_a + P_b/g_b) grad_a W_ab, b the opposite with mu_a
+        t = pg(a) + pg(b)
+        pax(a) = pax(a) - mu(b) * t * gx
+        paz(a) = paz(a) - mu(b) * t * gz
+        pax(b) = pax(b) + mu(a) * t * gx
+        paz(b) = paz(b) + mu(a) * t * gz
         if (.not. (self%laminar .and. fl(a) .and. fl(b))) cycle
         ! dW_ab/dx_a = F dx; dW_ba/dx_b = -F dx, and u_a - u_b = -(u_b - u_a): both get + g du
         g = pl%f(k) * pl%dx(k)

@@ -31,6 +31,8 @@ module rates
     real(rp) :: h = 0.0_rp, eta2 = 0.0_rp, alpha = 0.0_rp, inv_wdp = 0.0_rp, beta = 0.0_rp
     real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
     real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
+    logical :: axi_pressure = .false.   !< the pressure pair is the axisymmetric loop's
+    real(rp), allocatable :: zero(:)                            !< P = 0 for axi_pressure
     real(rp), allocatable :: tr(:)                              !< tensile R per particle
     real(rp), allocatable :: wnx(:), wnz(:), wdb(:), wdf(:)     !< repulsive wall geometry
   contains
@@ -79,6 +81,11 @@ contains
     call gather_sorted(st, prm%h, s, prm)
     n = s%n
     body%s => s
+    body%axi_pressure = prm%geometry == GEOM_AXISYMMETRIC
+    if (body%axi_pressure) then
+      allocate(body%zero(n))
+      body%zero = 0.0_rp
+    end if
 
     if (body%tensile) then
       call kernel_eval(kern, tensile_q(kern%kind) * prm%h, wdp, fdummy)
@@ -147,9 +154,15 @@ contains
     class(rates_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
-    call rates_pair_terms(self, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, &
-                          self%s%u, self%s%w, self%s%pr, self%s%c, self%s%rho, self%tr, &
-                          pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4), red)
+    if (self%axi_pressure) then
+      call rates_pair_terms(self, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, &
+                            self%s%u, self%s%w, self%zero, self%s%c, self%s%rho, self%tr, &
+                            pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4), red)
+    else
+      call rates_pair_terms(self, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, &
+                            self%s%u, self%s%w, self%s%pr, self%s%c, self%s%rho, self%tr, &
+                            pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4), red)
+    end if
     call rates_accumulate(self, pl, pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4))
   end subroutine rates_visit
 

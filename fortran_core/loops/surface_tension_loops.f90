@@ -15,7 +15,8 @@
 !> towards them. Walls hold the fluid through the boundary scheme only.
 module surface_tension_loops
   use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC
-  use axisymmetric, only: azimuthal_curvature
+  use axisymmetric, only: azimuthal_curvature, axis_radius
+  use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, copy_to_images
@@ -66,11 +67,14 @@ module surface_tension_loops
     real(rp), allocatable :: v(:), c(:), nx(:), nz(:), nhx(:), nhz(:), flag(:), num(:), den(:)
     real(rp), allocatable :: gx(:), gz(:)  !< sum_b V_b grad_a W_ab (free-surface delta)
     real(rp), allocatable :: tden(:)       !< tangential denominator (free-surface curvature)
+    !> axisymmetric: m / (2 pi rho) and 1/g, the weights of the pressure pair
+    real(rp), allocatable :: vmu(:), gi(:)
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
   type, extends(pair_body_t) :: csf_body_t
     integer :: pass = PASS_COLOUR
+    logical :: axi = .false.
     type(csf_work_t), pointer :: wk => null()
   contains
     procedure :: visit => csf_visit
@@ -89,7 +93,7 @@ contains
     type(sorted_t), intent(inout) :: s
     type(csf_work_t), target :: wk
     real(rp) :: w0, eps, kap, ax, az, wt, kin, kaz, depth
-    real(rp), allocatable :: kappa(:)
+    real(rp), allocatable :: kappa(:), hoop(:)
     integer :: n, k, i
     logical :: colour_delta, axi
 
@@ -113,13 +117,21 @@ contains
       wk%gz(k) = 0.0_rp
     end do
     !$omp end parallel do
-    call sweep(PASS_COLOUR, kern, s, wk)
+    if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
+      allocate(wk%vmu(n), wk%gi(n), hoop(n))
+      call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
+      wk%vmu = s%m(1:n) * axis_radius(s%x(1:n), prm%h) / s%rho(1:n)
+    end if
+    call sweep(PASS_COLOUR, kern, s, wk, axi)
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
     ! beyond the image band (sorted_state.f90); nothing to do without images
     if (s%n > s%n_real) call copy_to_images(s, wk%c, .false.)
 
     ! normal (eq 18), then filter and unit normal (eqs 20-21)
-    call sweep(PASS_NORMAL, kern, s, wk)
+    call sweep(PASS_NORMAL, kern, s, wk, axi)
+    if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
+      wk%gx = wk%gx - sign(1.0_rp, s%x(1:n)) * hoop
+    end if
     if (s%n > s%n_real) then
       call copy_to_images(s, wk%nx, .true.)
       call copy_to_images(s, wk%nz, .false.)
@@ -141,9 +153,9 @@ contains
 
     ! curvature (eq 23) and acceleration (eq 24)
     if (colour_delta) then
-      call sweep(PASS_CURVATURE, kern, s, wk)
+      call sweep(PASS_CURVATURE, kern, s, wk, axi)
     else
-      call sweep(PASS_SURFACE_CURVATURE, kern, s, wk)
+      call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, axi)
       !$omp critical (csf_depth_cache)
       if (.not. depth_cached(kern%kind)) then
         call csf_depth_table(kern%kind, depth_cache(:, kern%kind))
@@ -174,7 +186,7 @@ contains
         if (colour_delta) then
           call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
         else
-          wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+          wt = merge(1.0_rp, 2.0_rp, axi) * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
           call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
         end if
         s%ax(k) = s%ax(k) + ax
@@ -218,14 +230,16 @@ contains
 
   !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal). The colour
   !> pass finds the pairs and evaluates the kernel; the later passes visit what it kept.
-  subroutine sweep(pass, kern, s, wk)
+  subroutine sweep(pass, kern, s, wk, axi)
     integer, intent(in) :: pass
+    logical, intent(in) :: axi
     type(kernel_t), intent(in) :: kern
     type(sorted_t), intent(inout) :: s
     type(csf_work_t), intent(inout), target :: wk
     type(csf_body_t) :: body
     real(rp) :: red
     body%pass = pass
+    body%axi = axi
     body%wk => wk
     red = 0.0_rp
     call pair_sweep(s, kern, PAIRS_FLUID, body, red, &
@@ -238,7 +252,7 @@ contains
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
     integer :: k, a, b
-    real(rp) :: dx, dz, wab, f, gx, gz, da1, da2, db1, db2
+    real(rp) :: dx, dz, wab, f, gx, gz, da1, da2, db1, db2, gsum
     associate (wk => self%wk, pass => self%pass)
       do k = 1, pl%n
         a = pl%a(k)
@@ -260,10 +274,18 @@ contains
           wk%nz(a) = wk%nz(a) + da2
           wk%nx(b) = wk%nx(b) + db1
           wk%nz(b) = wk%nz(b) + db2
-          wk%gx(a) = wk%gx(a) + wk%v(b) * gx
-          wk%gz(a) = wk%gz(a) + wk%v(b) * gz
-          wk%gx(b) = wk%gx(b) - wk%v(a) * gx
-          wk%gz(b) = wk%gz(b) - wk%v(a) * gz
+          if (self%axi) then
+            gsum = wk%gi(a) + wk%gi(b)
+            wk%gx(a) = wk%gx(a) + wk%vmu(b) * gsum * gx
+            wk%gz(a) = wk%gz(a) + wk%vmu(b) * gsum * gz
+            wk%gx(b) = wk%gx(b) - wk%vmu(a) * gsum * gx
+            wk%gz(b) = wk%gz(b) - wk%vmu(a) * gsum * gz
+          else
+            wk%gx(a) = wk%gx(a) + wk%v(b) * gx
+            wk%gz(a) = wk%gz(a) + wk%v(b) * gz
+            wk%gx(b) = wk%gx(b) - wk%v(a) * gx
+            wk%gz(b) = wk%gz(b) - wk%v(a) * gz
+          end if
         case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
           if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
           gx = f * dx

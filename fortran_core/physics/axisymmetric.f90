@@ -32,10 +32,13 @@ module axisymmetric
   implicit none
   private
   public :: axis_radius, planar_mass, continuity_pair, viscous_hoop, azimuthal_curvature, &
-            R_MIN_H
+            R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N
 
   !> Smallest radius used in 1/r, in units of h.
   real(rp), parameter :: R_MIN_H = 0.25_rp
+  !> Smoothed-radius tables (axis_weight_tables): points, extent [h], grid of the sums [h].
+  integer, parameter :: AXIS_TABLE_N = 201
+  real(rp), parameter :: AXIS_TABLE_X = 2.0_rp, AXIS_GRID_D = 0.001_rp
 
 contains
 
@@ -96,5 +99,71 @@ contains
       kaz = nr / h + (1.0_rp - r / h) * kin
     end if
   end function azimuthal_curvature
+
+  !> The kernel's smoothed radius g(x) = int |x'| P(x - x') dx' (P(y) = int W(y, s) ds, the
+  !> kernel's profile across a line): the meridian-plane SPH interpolant of |x| over a set
+  !> closed by its mirror image, even, smooth, g(0) > 0 and g(x) = |x| for |x| >= 2h. Tables
+  !> over x = 0 ... AXIS_TABLE_X h (h = 1, AXIS_TABLE_N points) of gi = 1/g and
+  !> hoop = g'/g; midpoint sums on a grid of AXIS_GRID_D h (g(2h) = 2 to 1e-6).
+  pure subroutine axis_weight_tables(kind, gi, hoop)
+    use sphjet_kinds, only: ip
+    use sphjet_kernels, only: kernel_t, kernel_eval, kernel_setup
+    integer(ip), intent(in) :: kind
+    real(rp), intent(out) :: gi(AXIS_TABLE_N), hoop(AXIS_TABLE_N)
+    real(rp), parameter :: D = AXIS_GRID_D
+    integer, parameter :: NP = nint(2.0_rp / AXIS_GRID_D), NQ = 400
+    type(kernel_t) :: kern
+    real(rp) :: prof(-NP:NP), w, f, r, acc, ys, dt, x, g, gp
+    integer :: i, j, k
+    kern = kernel_setup(kind, 1.0_rp)
+    dt = 2.0_rp / NQ
+    do i = -NP, NP          ! P(y) = 2 int_0^sqrt(4-y^2) W(sqrt(y^2 + s^2)) ds
+      acc = 0.0_rp
+      do k = 1, NQ
+        ys = (k - 0.5_rp) * dt
+        r = sqrt((i * D)**2 + ys * ys)
+        if (r * r < kern%support2) then
+          call kernel_eval(kern, r, w, f)
+          acc = acc + w
+        end if
+      end do
+      prof(i) = 2.0_rp * acc * dt
+    end do
+    prof = prof / (sum(prof) * D)   ! unit integral on the grid
+    do k = 1, AXIS_TABLE_N
+      x = (k - 1) * AXIS_TABLE_X / (AXIS_TABLE_N - 1)
+      g = 0.0_rp
+      gp = 0.0_rp
+      do j = -NP, NP   ! g = sum |x - y| P(y) D, g' = sum sign(x - y) P(y) D
+        g = g + abs(x - j * D) * prof(j)
+        gp = gp + sign(1.0_rp, x - j * D) * merge(0.5_rp, 1.0_rp, abs(x - j * D) < 0.5_rp * D) &
+                  * prof(j)
+      end do
+      g = g * D
+      gp = gp * D
+      gi(k) = 1.0_rp / g
+      hoop(k) = gp / g
+    end do
+  end subroutine axis_weight_tables
+
+  !> 1/g and g'/g at x [1/m] (tables of axis_weight_tables, linear between points; 1/|x| and
+  !> 1/|x| beyond them), h the smoothing length.
+  pure subroutine axis_weights(x, h, git, hoopt, gi, hoop)
+    real(rp), intent(in) :: x, h, git(AXIS_TABLE_N), hoopt(AXIS_TABLE_N)
+    real(rp), intent(out) :: gi, hoop
+    real(rp) :: xi, t
+    integer :: k
+    xi = abs(x) / h
+    if (xi >= AXIS_TABLE_X) then
+      gi = 1.0_rp / abs(x)
+      hoop = gi
+    else
+      t = xi * (AXIS_TABLE_N - 1) / AXIS_TABLE_X
+      k = min(int(t) + 1, AXIS_TABLE_N - 1)
+      t = t - (k - 1)
+      gi = ((1.0_rp - t) * git(k) + t * git(k + 1)) / h
+      hoop = ((1.0_rp - t) * hoopt(k) + t * hoopt(k + 1)) / h
+    end if
+  end subroutine axis_weights
 
 end module axisymmetric
