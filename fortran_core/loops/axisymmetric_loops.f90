@@ -1,9 +1,10 @@
 !> The axisymmetric mode's part of the rates (physics/axisymmetric.f90), on top of the planar
-!> pair sweep of rates.f90 (sorted order, real slots only):
-!>   continuity   drho_a/dt = (1/r_a) sum_b mp_b (r_a u_a - r_b u_b) dW_ab/dr_a
-!>                            + sum_b mp_b (w_a - w_b) dW_ab/dz_a
-!>                replaces the planar sum (every real particle: dynamic boundaries too); one
-!>                extra sweep over the pairs with a fluid particle, images included
+!> pair sweep of rates.f90, which leaves the pressure out in this mode (sorted order, real
+!> slots only). One sweep over the pairs with a fluid particle, images included:
+!>   continuity   drho_a/dt = (1/g_a) sum_b mu_b (v_a - v_b) . grad_a W_ab - rho_a (g'_a/g_a) u_a
+!>                replaces the planar sum (every real particle: dynamic boundaries too)
+!>   pressure     du_a/dt = -sum_b mu_b (P_a/g_a + P_b/g_b) grad_a W_ab + (p_a/rho_a)(g'_a/g_a) e_r
+!>                (fluid), the adjoint of the continuity: together they conserve energy
 !>   laminar      du_r/dt += nu ((1/r) du_r/dr - u_r / r^2),  du_z/dt += nu (1/r) du_z/dr
 !>                (fluid; the radial derivatives from the same sweep over the fluid pairs:
 !>                du/dr|_a = sum_b A_b (u_b - u_a) dW_ab/dx_a)
@@ -21,8 +22,8 @@ module axisymmetric_loops
   private
   public :: axisymmetric_rates, axis_weights_of
 
-  !> The sweep: the continuity sum (its radial and axial parts) and, with laminar viscosity, the
-  !> radial derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area.
+  !> The sweep: the continuity and pressure sums and, with laminar viscosity, the radial
+  !> derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area.
   type, extends(pair_body_t) :: axi_body_t
     type(sorted_t), pointer :: s => null()
     logical :: laminar = .false.
@@ -37,7 +38,8 @@ module axisymmetric_loops
 
 contains
 
-  !> Adds the hoop terms to s%ar (and with laminar viscosity s%ax, s%az) of the real slots.
+  !> Sets s%ar and adds the pressure (and laminar hoop) accelerations to s%ax, s%az of the real
+  !> slots.
   subroutine axisymmetric_rates(prm, kern, s, n_state)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern

@@ -7,7 +7,8 @@
 !> and the running max of (u_ab . r_ab)/(r_ab^2 + eta^2) used by the time-step control.
 !> Dynamic boundary particles interact as fluid does (their accelerations are not used);
 !> with repulsive walls, boundary particles only push fluid away (plus the wall viscosity).
-!> Boundary-boundary pairs are skipped.
+!> Boundary-boundary pairs are skipped. In the axisymmetric mode the pressure term and the
+!> continuity are those of axisymmetric_loops.f90 (the pressure is left out here).
 module rates
   use sphjet_kinds, only: rp, ip, KERNEL_CUBIC, KERNEL_GAUSSIAN, KERNEL_WENDLAND, &
                           VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC

@@ -1,37 +1,38 @@
 !> Axisymmetric (r, z) SPH: the pointwise formulas (cases/axisymmetric/README.md gives the
-!> equations and the reference). Particles live in the meridian half-plane, x = r >= 0, the
-!> symmetry axis is the line x = 0; a particle stands for a ring and carries its true 3D mass
-!> m = rho 2 pi r A (A its area in the meridian plane). The in-plane operators are the planar
-!> ones with the planar mass m / (2 pi r) = rho A, i.e. the SPH of the meridian plane with
-!> particle area A_b = m_b / (2 pi r_b rho_b), after Brookshaw (1985) and the "area" form
-!> of Garcia-Senz, Relano, Cabezon & Bravo (2012, MNRAS 422, 3449) without their eta-based
-!> conservative rewriting. The axis is closed by mirror images (loops/sorted_state.f90). The
-!> hoop terms that the meridian-plane operators lack:
-!>   momentum     the planar symmetric form with planar masses mp_b = m_b / (2 pi r_b):
-!>                du_a/dt = -sum_b mp_b (p_a/rho_a^2 + p_b/rho_b^2) grad_a W_ab (+ viscosity)
-!>                (no hoop pressure term: -(1/rho) grad p has none in (r, z))
-!>   continuity   drho_a/dt = (1/r_a) sum_b mp_b (r_a v_a - r_b v_b) . grad_a W_ab
-!>                ~ -(rho/r) div_2D(r v) = -rho (div_2D v + u_r / r): the hoop term is inside.
-!>                r is signed: an image's r is minus its source's, so that r v is smooth
-!>                across the axis (div v on the first column of a Rayleigh-Plateau field: -0.05%
-!>                of k U I0 against -8% with r = |x|, whose r v has a kink there). With r = |x|
-!>                the pair would conserve sum_a m_a (v_a^2/2 + e(rho_a)) exactly
-!>                (m_a = 2 pi r_a mp_a), but that kink put a spurious pressure wave on the axis;
-!>                the planar continuity plus -rho u_r / r let an acoustic mode of the particles
-!>                next to the axis grow from 1e-2 to 1 m/s within 20 ms.
+!> equations, the derivation and the measurements). Particles live in the meridian half-plane,
+!> x = r >= 0, the symmetry axis is the line x = 0; a particle stands for a ring and carries
+!> its true 3D mass m = rho 2 pi r A (A its area in the meridian plane). The axis is closed by
+!> mirror images (loops/sorted_state.f90): an image carries its source's mass, density and
+!> pressure at (-x, z) with the velocity (-u, w).
+!>   density      rho_a = sum_b mu_b W_ab / g_a over the rings and their images, mu = m / 2pi,
+!>                g = the kernel's smoothed radius (axis_weight_tables): the interpolant of
+!>                |x| over the mirrored half-plane, so that a uniform field gives rho exactly,
+!>                on the axis too; g(0) ~ 0.4 h > 0, g = |x| beyond 2h. The density is not
+!>                summed (SPHysics' continuity is kept); its time derivative is the continuity
+!>   continuity   drho_a/dt = (1/g_a) sum_b mu_b (v_a - v_b) . grad_a W_ab - rho_a (g'_a/g_a) u_a
+!>                (-rho (div v + u/r) far from the axis; for u = A r exact at every x)
+!>   momentum     the Euler-Lagrange force of the energy sum_a m_a e(rho_a) with that density:
+!>                du_a/dt = -sum_b mu_b (P_a/g_a + P_b/g_b) grad_a W_ab + (p_a/rho_a)(g'_a/g_a) e_r,
+!>                P = p/rho^2. The pair conserves sum_a m_a (v_a^2/2 + e(rho_a)) exactly,
+!>                mirror images included, and z-momentum; it is the form of Garcia-Senz,
+!>                Relano, Cabezon & Bravo (2012, MNRAS 422, 3449) with g in place of r.
+!>                Its one inconsistency: a uniform pressure pushes particles within 2h of the
+!>                axis with -P rho (|x|/g)~' (the smoothed slope of |x|/g), which the liquid
+!>                there balances with a pressure 13% above the rest at R/dx = 10 (README).
 !>   viscosity    du_r/dt += nu ((1/r) du_r/dr - u_r / r^2),  du_z/dt += nu (1/r) du_z/dr
 !>   CSF          kappa = div_2D nhat + nhat_r / r  (both principal curvatures)
-!> Near the axis 1/r is taken as 1/max(r, R_MIN_H h) (axis_radius): a lattice particle
-!> (r >= dx/2 = 0.38 h at h = 1.3 dx) never feels it, it only bounds the terms of a particle
-!> that reaches the axis, where u_r / r -> du_r/dr is finite anyway (u_r is odd in r). The
-!> azimuthal curvature nhat_r / r, whose numerator is a small difference near the axis, is
-!> blended within r < h towards the in-plane one: a smooth axisymmetric surface meets the
-!> axis at an umbilic, where both principal curvatures are equal (azimuthal_curvature).
+!> The viscous hoop terms and the azimuthal curvature take 1/r as 1/max(r, R_MIN_H h)
+!> (axis_radius), and the in-plane operators (viscosity, XSPH, colour, normal) the planar
+!> mass m / (2 pi max(r, R_MIN_H h)) = rho A: a lattice particle (r >= dx/2 = 0.38 h at
+!> h = 1.3 dx) never feels the bound, it only bounds the terms of a particle that reaches the
+!> axis. The azimuthal curvature nhat_r / r, whose numerator is a small difference near the
+!> axis, is blended within r < h towards the in-plane one: a smooth axisymmetric surface
+!> meets the axis at an umbilic, where both principal curvatures are equal.
 module axisymmetric
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: axis_radius, planar_mass, continuity_pair, viscous_hoop, azimuthal_curvature, &
+  public :: axis_radius, planar_mass, viscous_hoop, azimuthal_curvature, &
             R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N
 
   !> Smallest radius used in 1/r, in units of h.
@@ -55,22 +56,6 @@ contains
     real(rp) :: mp
     mp = m / (2.0_rp * pi * axis_radius(x, h))
   end function planar_mass
-
-  !> The two parts of the continuity pair term: the radial qr = (r_a u_a - r_b u_b) dW/dr_a
-  !> and the axial qz = (w_a - w_b) dW/dz_a, grad_a W_ab = f (dx, dz); r the signed radii (an
-  !> image's r is minus its source's, and its u is mirrored, so that r u is odd and smooth
-  !> across the axis). Particle a gets mp_b (qr + r_a qz) / r_a, particle b mp_a (qr + r_b qz)
-  !> / r_b (both parts change sign with grad and with the difference). The radial part is the
-  !> product form of (1/r) d(r u)/dr (the hoop term inside it); the axial part is the
-  !> difference form of dw/dz, exactly zero for a uniform w: the product form r w there left
-  !> (1/r_a) sum mp_b (r_a - r_b) w dW/dz_a, which is not zero where the kernel is cut by a
-  !> free surface (a jet's plug drifted by 50% in density at its corners in 2 ms).
-  pure elemental subroutine continuity_pair(ra, ua, wa, rb, ub, wb, f, dx, dz, qr, qz)
-    real(rp), intent(in) :: ra, ua, wa, rb, ub, wb, f, dx, dz
-    real(rp), intent(out) :: qr, qz
-    qr = f * (ra * ua - rb * ub) * dx
-    qz = f * (wa - wb) * dz
-  end subroutine continuity_pair
 
   !> The hoop terms of the viscous acceleration, nu ((1/r) du_r/dr - u_r / r^2) (radial) and
   !> nu (1/r) du_z/dr (axial); dudr, dwdr the radial derivatives of u_r and u_z [1/s].
