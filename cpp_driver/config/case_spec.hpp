@@ -129,7 +129,14 @@ struct OutputSpec {
     double rho_min_factor = 0.5;           // density band [f_min, f_max] x rho0, else stop
     double rho_max_factor = 1.5;
     double dt_min = 1e-9;                  // a step below this is a collapse [s]
+    // Axisymmetric only: each HDF5 snapshot also carries the rings revolved about the axis,
+    // copies at phi = 2 pi k / N, k = 0..N-1 (io/hdf5_output.hpp); 0 = off.
+    int revolution_sectors = 0;
 };
+
+// The most sectors [output] revolution_sectors takes: one a degree (a snapshot of n rings
+// then holds 360 n revolved points, about 17 kB per ring: see cases/CASE_FORMAT.md).
+inline constexpr int kMaxRevolutionSectors = 360;
 
 struct CaseSpec {
     SimParams params;

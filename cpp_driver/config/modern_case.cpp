@@ -203,6 +203,7 @@ constexpr KeySpec kKeys[] = {
     {"output.rho_min_factor", Kind::Float},
     {"output.rho_max_factor", Kind::Float},
     {"output.dt_min", Kind::Float},
+    {"output.revolution_sectors", Kind::Int},
 };
 
 const KeySpec* find_key(std::string_view pattern) {
@@ -1350,6 +1351,16 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         o.rho_max_factor = f->value;
     }
     if (auto f = out.num("dt_min")) non_negative(*f), o.dt_min = f->value;
+    if (auto f = out.integer("revolution_sectors")) {
+        if (f->value < 0 || f->value > kMaxRevolutionSectors)
+            fail(*f, "out of range",
+                 "an integer in [0, " + std::to_string(kMaxRevolutionSectors) + "] (0 = off)");
+        if (!axi)
+            fail(*f, "only an axisymmetric case has rings to revolve about the axis",
+                 "no output.revolution_sectors with domain.geometry = \"planar\" (the default), "
+                 "or domain.geometry = \"axisymmetric\"");
+        o.revolution_sectors = static_cast<int>(f->value);
+    }
 
     return spec;
 }
@@ -1680,6 +1691,9 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += line("rho_min_factor", num(spec.output.rho_min_factor), "stop if rho < factor rho0");
     s += line("rho_max_factor", num(spec.output.rho_max_factor), "stop if rho > factor rho0");
     s += line("dt_min", num(spec.output.dt_min), "stop if dt falls below [s]");
+    if (spec.output.revolution_sectors > 0)
+        s += line("revolution_sectors", std::to_string(spec.output.revolution_sectors),
+                  "HDF5 snapshots also hold the rings revolved into this many copies");
     return s;
 }
 

@@ -301,6 +301,7 @@ RunSummary run_simulation(const RunOptions& opts) {
     if (hdf5_out) {
         h5.emplace(dir, prm, opts.command_line,
                    opts.resume ? Hdf5Writer::Mode::Resume : Hdf5Writer::Mode::Overwrite, st.step);
+        h5->set_revolution_sectors(spec.output.revolution_sectors);
     }
     if (opts.resume) {
         truncate_rows(dir / "DT", st.n_outputs);

@@ -456,6 +456,45 @@ void write_vec3_view(hid_t loc, const std::string& name, const std::array<std::s
     if (ds < 0) fail(loc, name, "cannot create virtual dataset");
 }
 
+void write_vec3_array(hid_t loc, const std::string& name, std::span<const double> xyz,
+                      const char* units) {
+    QuietErrors quiet;
+    const hsize_t dims[2] = {xyz.size() / 3, 3};
+    if (dims[0] * 3 != xyz.size()) fail(loc, name, "not a multiple of 3 values");
+    Dataspace space(H5Screate_simple(2, dims, nullptr));
+    if (space < 0) fail(loc, name, "cannot create dataspace");
+    Dataset ds(H5Dcreate2(loc, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
+                          H5P_DEFAULT));
+    if (ds < 0) fail(loc, name, "cannot create dataset");
+    if (!xyz.empty()) {
+        check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, xyz.data()), loc,
+              name, "cannot write dataset");
+    }
+    if (units != nullptr) write_attr(ds, "units", std::string(units));
+}
+
+void write_repeat_view(hid_t loc, const std::string& name, const std::string& source, hid_t type,
+                       std::size_t n_values, std::size_t copies) {
+    QuietErrors quiet;
+    const hsize_t n = n_values, total = n_values * copies;
+    Dataspace vspace(H5Screate_simple(1, &total, nullptr));
+    PropList dcpl(H5Pcreate(H5P_DATASET_CREATE));
+    if (vspace < 0 || dcpl < 0) fail(loc, name, "cannot create dataspace");
+    if (n > 0) {
+        Dataspace src(H5Screate_simple(1, &n, nullptr));
+        for (hsize_t k = 0; k < copies; ++k) {
+            const hsize_t start = k * n;
+            check(H5Sselect_hyperslab(vspace, H5S_SELECT_SET, &start, nullptr, &n, nullptr), loc,
+                  name, "cannot select a copy");
+            check(H5Pset_virtual(dcpl, vspace, ".", source.c_str(), src), loc, name,
+                  "cannot map " + source);
+        }
+        H5Sselect_all(vspace);
+    }
+    Dataset ds(H5Dcreate2(loc, name.c_str(), type, vspace, H5P_DEFAULT, dcpl, H5P_DEFAULT));
+    if (ds < 0) fail(loc, name, "cannot create virtual dataset");
+}
+
 void write_iota(hid_t loc, const std::string& name, std::size_t n_values) {
     QuietErrors quiet;
     std::vector<std::int64_t> v(n_values);

@@ -123,6 +123,18 @@ void write_array(hid_t loc, const std::string& name, std::span<const std::int64_
 void write_vec3_view(hid_t loc, const std::string& name, const std::array<std::string, 3>& sources,
                      std::size_t n);
 
+// An n x 3 float64 dataset (contiguous) from xyz = x0 y0 z0 x1 y1 z1 ... (3n values).
+void write_vec3_array(hid_t loc, const std::string& name, std::span<const double> xyz,
+                      const char* units = nullptr);
+
+// A 1-D dataset of copies x n values that takes no space in the file: an HDF5 virtual
+// dataset whose values k n .. k n + n - 1 read the 1-D dataset source (absolute path, same
+// file, n values) for every k. type is the stored type (H5T_IEEE_F64LE, H5T_STD_I32LE, ...),
+// that of source. The revolved copies of an axisymmetric snapshot repeat the ring fields
+// this way. One mapping per copy: readers need HDF5 1.10, as for write_vec3_view.
+void write_repeat_view(hid_t loc, const std::string& name, const std::string& source, hid_t type,
+                       std::size_t n, std::size_t copies);
+
 // 0, 1, ..., n-1 as int64, compressed (a few bytes in the file): the Polyvertex connectivity.
 void write_iota(hid_t loc, const std::string& name, std::size_t n);
 

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <regex>
 #include <stdexcept>
 #include <system_error>
 
+#include "config/case_spec.hpp"
 #include "config/errors.hpp"
 #include "io/h5_util.hpp"
 #include "io/xdmf.hpp"
@@ -92,6 +95,16 @@ SnapshotInfo read_info(const fs::path& dir, std::int64_t index, const std::strin
     for (const std::string& l : h5::link_names(g)) {
         if (!is_std_field(l)) s.extra.push_back(l);
     }
+    if (h5::has_link(f, "revolved")) {
+        h5::Group r = h5::open_group(f, "revolved");
+        const std::int64_t sectors = h5::read_attr_int64(r, "sectors");
+        if (sectors < 1 || sectors > kMaxRevolutionSectors) {
+            throw InputError(h5::where(r) + " attribute 'sectors'", "out of range",
+                             fmt::format("1 to {}", kMaxRevolutionSectors),
+                             std::to_string(sectors));
+        }
+        s.revolution_sectors = static_cast<int>(sectors);
+    }
     return s;
 }
 
@@ -103,28 +116,116 @@ bool has_normal(const SnapshotInfo& s) {
     return has_extra(s, "normal_x") && has_extra(s, "normal_z");
 }
 
-xdmf::Grid grid_of(const SnapshotInfo& s) {
+xdmf::NumberType number_type(std::string_view field) {
+    return field == "id"                           ? xdmf::NumberType::Int64
+           : (field == "kind" || field == "active") ? xdmf::NumberType::Int32
+                                                    : xdmf::NumberType::Float64;
+}
+
+// The grid of one snapshot: its points, vectors and connectivity in group `views`, its
+// scalars in group `scalars` ("/xdmf" and "/particles" for the (r, z) or planar particles,
+// "/revolved" for both in the revolved copies).
+xdmf::Grid grid_of(const SnapshotInfo& s, const std::string& name, std::size_t n,
+                   const std::string& views, const std::string& scalars) {
     xdmf::Grid g;
-    g.name = fmt::format("snap_{:06d}", s.index);
+    g.name = name;
     g.h5_file = s.file;
     g.time = s.time;
-    g.n = s.n;
-    g.connectivity = "/xdmf/vertices";
-    g.points = "/xdmf/points";
-    g.fields.push_back({"velocity", "/xdmf/velocity", xdmf::NumberType::Float64, true});
+    g.n = n;
+    g.connectivity = views + "/vertices";
+    g.points = views + "/points";
+    g.fields.push_back({"velocity", views + "/velocity", xdmf::NumberType::Float64, true});
     if (has_normal(s))
-        g.fields.push_back({"normal", "/xdmf/normal", xdmf::NumberType::Float64, true});
+        g.fields.push_back({"normal", views + "/normal", xdmf::NumberType::Float64, true});
     for (const StdField& f : kStdFields) {
-        const std::string name = f.name;
-        const auto type = name == "id"                           ? xdmf::NumberType::Int64
-                          : (name == "kind" || name == "active") ? xdmf::NumberType::Int32
-                                                                 : xdmf::NumberType::Float64;
-        g.fields.push_back({name, "/particles/" + name, type, false});
+        g.fields.push_back({f.name, scalars + "/" + f.name, number_type(f.name), false});
     }
     for (const std::string& e : s.extra) {
-        g.fields.push_back({e, "/particles/" + e, xdmf::NumberType::Float64, false});
+        g.fields.push_back({e, scalars + "/" + e, xdmf::NumberType::Float64, false});
     }
     return g;
+}
+
+xdmf::Grid grid_of(const SnapshotInfo& s) {
+    return grid_of(s, fmt::format("snap_{:06d}", s.index), s.n, "/xdmf", "/particles");
+}
+
+xdmf::Grid revolved_grid_of(const SnapshotInfo& s) {
+    return grid_of(s, fmt::format("snap_{:06d}_revolved", s.index),
+                   s.n * static_cast<std::size_t>(s.revolution_sectors), "/revolved",
+                   "/revolved");
+}
+
+// The index of these snapshots: the collection "particles", and "revolved" when a snapshot
+// has revolved copies.
+void write_index(const fs::path& path, const std::vector<SnapshotInfo>& snapshots) {
+    std::vector<xdmf::Collection> c(1);
+    c[0].name = "particles";
+    c[0].grids.reserve(snapshots.size());
+    for (const SnapshotInfo& s : snapshots) c[0].grids.push_back(grid_of(s));
+    for (const SnapshotInfo& s : snapshots) {
+        if (s.revolution_sectors <= 0) continue;
+        if (c.size() == 1) c.push_back({"revolved", {}});
+        c[1].grids.push_back(revolved_grid_of(s));
+    }
+    xdmf::write(path, std::span<const xdmf::Collection>(c));
+}
+
+// Rows k n + i of an [N n x 3] array: (a_i cos phi_k, a_i sin phi_k, b_i).
+std::vector<double> revolve(std::span<const double> a, std::span<const double> b,
+                            std::span<const double> cos_phi, std::span<const double> sin_phi) {
+    const std::size_t n = a.size();
+    std::vector<double> out(3 * n * cos_phi.size());
+    double* o = out.data();
+    for (std::size_t k = 0; k < cos_phi.size(); ++k) {
+        for (std::size_t i = 0; i < n; ++i, o += 3) {
+            o[0] = a[i] * cos_phi[k];
+            o[1] = a[i] * sin_phi[k];
+            o[2] = b[i];
+        }
+    }
+    return out;
+}
+
+// The group /revolved of a snapshot (layout in hdf5_output.hpp).
+void write_revolved(hid_t file, const ParticleSet& ps, std::span<const ExtraField> extra,
+                    int sectors, bool normal) {
+    const std::size_t n = ps.size(), copies = static_cast<std::size_t>(sectors);
+    std::vector<double> cos_phi(copies), sin_phi(copies);
+    for (std::size_t k = 0; k < copies; ++k) {
+        const double phi = 2.0 * std::numbers::pi * static_cast<double>(k) / sectors;
+        cos_phi[k] = std::cos(phi);
+        sin_phi[k] = std::sin(phi);
+    }
+    h5::Group g = h5::create_group(file, "revolved");
+    h5::write_attr(g, "sectors", static_cast<std::int64_t>(sectors));
+    h5::write_attr(g, "n_points", static_cast<std::int64_t>(n * copies));
+    h5::write_vec3_array(g, "points", revolve(ps.x, ps.z, cos_phi, sin_phi), "m");
+    h5::write_vec3_array(g, "velocity", revolve(ps.u, ps.w, cos_phi, sin_phi), "m/s");
+    if (normal) {
+        std::span<const double> nx, nz;
+        for (const ExtraField& e : extra) {
+            if (e.name == "normal_x") nx = e.values;
+            if (e.name == "normal_z") nz = e.values;
+        }
+        h5::write_vec3_array(g, "normal", revolve(nx, nz, cos_phi, sin_phi), "1");
+    }
+    std::vector<double> m_copy(ps.m);
+    for (double& m : m_copy) m /= sectors;
+    h5::write_array(g, "m_copy", std::span<const double>(m_copy), "kg");
+    for (const StdField& f : kStdFields) {
+        const std::string name = f.name;
+        const xdmf::NumberType t = number_type(name);
+        const hid_t type = t == xdmf::NumberType::Int64   ? H5T_STD_I64LE
+                           : t == xdmf::NumberType::Int32 ? H5T_STD_I32LE
+                                                          : H5T_IEEE_F64LE;
+        const std::string source = name == "m" ? "/revolved/m_copy" : "/particles/" + name;
+        h5::write_repeat_view(g, name, source, type, n, copies);
+    }
+    for (const ExtraField& e : extra) {
+        h5::write_repeat_view(g, e.name, "/particles/" + e.name, H5T_IEEE_F64LE, n, copies);
+    }
+    h5::write_iota(g, "vertices", n * copies);
 }
 
 void remove_quietly(const fs::path& p) {
@@ -212,14 +313,23 @@ Hdf5Writer::Hdf5Writer(fs::path dir, const SimParams& params, std::string comman
     }
     write_run_file(dir_, params_, command_line, history);
     if (mode == Mode::Resume) {
-        std::vector<xdmf::Grid> grids;
-        for (const SnapshotInfo& s : snapshots_) grids.push_back(grid_of(s));
-        if (grids.empty()) {
+        if (snapshots_.empty()) {
             remove_quietly(xdmf_path());
         } else {
-            xdmf::write(xdmf_path(), grids);
+            write_index(xdmf_path(), snapshots_);
         }
     }
+}
+
+void Hdf5Writer::set_revolution_sectors(int sectors) {
+    if (sectors < 0 || sectors > kMaxRevolutionSectors) {
+        throw std::invalid_argument(fmt::format(
+            "Hdf5Writer: {} revolution sectors, expected 0 to {}", sectors, kMaxRevolutionSectors));
+    }
+    if (sectors > 0 && params_.geometry != Geometry::Axisymmetric) {
+        throw std::invalid_argument("Hdf5Writer: revolution sectors need the axisymmetric geometry");
+    }
+    revolution_sectors_ = sectors;
 }
 
 fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
@@ -232,11 +342,16 @@ fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
     info.step = state.step;
     info.n = ps.size();
     for (const ExtraField& e : extra) info.extra.push_back(e.name);
+    info.revolution_sectors = revolution_sectors_;
 
     const fs::path final_path = dir_ / info.file;
     {
-        // Raw data: 7 float64 + 1 int64 + 2 int32 per particle, and the extra fields.
-        const std::size_t bytes = ps.size() * (8 * (8 + extra.size()) + 8);
+        // Raw data: 7 float64 + 1 int64 + 2 int32 per particle, and the extra fields; revolved
+        // copies: 2 or 3 float64 [N n x 3] and m / N.
+        const std::size_t sectors = static_cast<std::size_t>(revolution_sectors_);
+        const std::size_t bytes = ps.size() * (8 * (8 + extra.size()) + 8) +
+                                  ps.size() * sectors * 24 * (has_normal(info) ? 3 : 2) +
+                                  (sectors > 0 ? 8 * ps.size() : 0);
         h5::File f = h5::create_file(final_path, bytes);
         h5::write_attr(f, "format", std::string("sphjet-snapshot"));
         h5::write_attr(f, "format_version", kFormatVersion);
@@ -288,14 +403,13 @@ fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
             }
             h5::write_iota(g, "vertices", n);
         }
+        if (revolution_sectors_ > 0)
+            write_revolved(f, ps, extra, revolution_sectors_, has_normal(info));
         h5::write_file(f, final_path, "the snapshot");
     }
 
     snapshots_.push_back(std::move(info));
-    std::vector<xdmf::Grid> grids;
-    grids.reserve(snapshots_.size());
-    for (const SnapshotInfo& s : snapshots_) grids.push_back(grid_of(s));
-    xdmf::write(xdmf_path(), grids);
+    write_index(xdmf_path(), snapshots_);
     return final_path;
 }
 

@@ -22,6 +22,26 @@
 //                                  normal_z) as HDF5 virtual datasets over the arrays above
 //                                  (no extra space; need HDF5 >= 1.10 to read)
 //   /xdmf/vertices                 int64 [n] 0..n-1, compressed: Polyvertex connectivity
+//
+// With Hdf5Writer::set_revolution_sectors(N), N > 0 (an axisymmetric run, [output]
+// revolution_sectors), a snapshot also holds its rings revolved about the axis: N copies of
+// each particle at phi_k = 2 pi k / N, k = 0..N-1, copy k of particle i in row k n + i:
+//   /revolved                      attrs sectors = N, n_points = N n
+//   /revolved/points               float64 [N n x 3]: (x cos phi_k, x sin phi_k, z), units m
+//   /revolved/velocity             float64 [N n x 3]: (u cos phi_k, u sin phi_k, w), m/s
+//   /revolved/normal               float64 [N n x 3]: (normal_x cos phi_k, normal_x sin phi_k,
+//                                  normal_z), with the normal fields only
+//   /revolved/m_copy               float64 [n]: m / N, kg: a ring's m is its 3D mass, so a
+//                                  copy carries m / N and the copies sum to the true mass
+//   /revolved/m                    float64 [N n]: m_copy N times over (virtual, no space)
+//   /revolved/x z u w rho p id kind active <extra>
+//                                  [N n]: the /particles array N times over (virtual, no
+//                                  space; x is the radius r, u the radial velocity)
+//   /revolved/vertices             int64 [N n] 0..N n-1, compressed
+// and the index gets a second temporal collection, "revolved", whose grid at each time shows
+// these points; the first collection, "particles", is the same with or without it. Space
+// per snapshot: 48 N n bytes (72 N n with the normal) plus 8 n, and about 130 bytes of
+// metadata per virtual mapping (one per copy and repeated field).
 #pragma once
 
 #include <cstddef>
@@ -62,6 +82,7 @@ struct SnapshotInfo {
     std::int64_t step = 0;
     std::size_t n = 0;               // particles
     std::vector<std::string> extra;  // names of the extra fields, in name order
+    int revolution_sectors = 0;      // copies in /revolved (0: none)
 };
 
 class Hdf5Writer {
@@ -87,6 +108,13 @@ public:
     std::filesystem::path write(const ParticleSet& ps, const RunState& state,
                                 std::span<const ExtraField> extra = {});
 
+    // From the next snapshot on, also write the rings revolved into sectors copies (0: off;
+    // the layout above). Throws std::invalid_argument unless 0 <= sectors <=
+    // kMaxRevolutionSectors (config/case_spec.hpp), and for sectors > 0 unless the parameters'
+    // geometry is axisymmetric.
+    void set_revolution_sectors(int sectors);
+    [[nodiscard]] int revolution_sectors() const { return revolution_sectors_; }
+
     [[nodiscard]] const std::filesystem::path& dir() const { return dir_; }
     [[nodiscard]] std::filesystem::path xdmf_path() const { return dir_ / "sphjet.xmf"; }
     [[nodiscard]] const std::vector<SnapshotInfo>& snapshots() const { return snapshots_; }
@@ -95,6 +123,7 @@ private:
     std::filesystem::path dir_;
     SimParams params_;
     std::vector<SnapshotInfo> snapshots_;
+    int revolution_sectors_ = 0;
 };
 
 // One snapshot read back.

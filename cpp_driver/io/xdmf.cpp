@@ -47,16 +47,11 @@ void data_item(std::string& out, const std::string& indent, const Grid& g,
         indent, dims, number_type(t), precision(t), escape(g.h5_file), escape(dataset));
 }
 
-}  // namespace
-
-std::string document(std::span<const Grid> grids) {
-    std::string out =
-        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-        "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
-        "  <Domain>\n"
-        "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+void collection(std::string& out, const Collection& c) {
+    out += fmt::format("    <Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
+                       escape(c.name));
     const std::string i4(8, ' '), i5(10, ' ');
-    for (const Grid& g : grids) {
+    for (const Grid& g : c.grids) {
         out += fmt::format("      <Grid Name=\"{}\" GridType=\"Uniform\">\n", escape(g.name));
         out += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", i4, g.time);
         out += fmt::format(
@@ -76,11 +71,30 @@ std::string document(std::span<const Grid> grids) {
         }
         out += "      </Grid>\n";
     }
+    out += "    </Grid>\n";
+}
+
+}  // namespace
+
+std::string document(std::span<const Collection> collections) {
+    std::string out =
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+        "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
+        "  <Domain>\n";
+    for (const Collection& c : collections) collection(out, c);
     out +=
-        "    </Grid>\n"
         "  </Domain>\n"
         "</Xdmf>\n";
     return out;
+}
+
+std::string document(std::span<const Grid> grids) {
+    const Collection c{"particles", {grids.begin(), grids.end()}};
+    return document(std::span<const Collection>(&c, 1));
+}
+
+void write(const std::filesystem::path& path, std::span<const Collection> collections) {
+    write_file_atomically(path, document(collections), "the XDMF index");
 }
 
 void write(const std::filesystem::path& path, std::span<const Grid> grids) {

@@ -1,6 +1,7 @@
-// XDMF 3 index of HDF5 particle snapshots: one temporal collection of Polyvertex grids, so
+// XDMF 3 index of HDF5 particle snapshots: a temporal collection of Polyvertex grids, so
 // that ParaView (Xdmf3ReaderS, or the older "XDMF Reader") opens the whole series with one
-// click.
+// click; an axisymmetric run with revolved copies adds a second collection beside it, which
+// ParaView shows as a second block.
 //
 // Every DataItem points at one whole dataset. ParaView 5.11's XDMF 3 reader loses the points
 // when the geometry is assembled from several HDF5 arrays (GeometryType X_Y_Z or X_Y, or a
@@ -38,11 +39,22 @@ struct Grid {
     std::vector<Field> fields;
 };
 
-// The XDMF document: times are written with 17 significant digits (exact doubles).
+// A temporal collection: one grid per time. ParaView shows each collection of a document as
+// a block of its own.
+struct Collection {
+    std::string name;
+    std::vector<Grid> grids;
+};
+
+// The XDMF document: one temporal collection per entry, in that order (each written even when
+// it has no grid); times are written with 17 significant digits (exact doubles).
+[[nodiscard]] std::string document(std::span<const Collection> collections);
+// The same with one collection named "particles".
 [[nodiscard]] std::string document(std::span<const Grid> grids);
 
-// Writes document(grids) to path atomically (path.tmp, fsync, rename: io/file_write.hpp);
+// Writes document(...) to path atomically (path.tmp, fsync, rename: io/file_write.hpp);
 // throws WriteError.
+void write(const std::filesystem::path& path, std::span<const Collection> collections);
 void write(const std::filesystem::path& path, std::span<const Grid> grids);
 
 }  // namespace sphjet::xdmf

@@ -15,13 +15,17 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "config/case_spec.hpp"
 #include "config/errors.hpp"
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
+#include "io/xdmf.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;
@@ -517,5 +521,249 @@ TEST(Hdf5Snapshot, EmptySetRoundTrips) {
     EXPECT_EQ(s.particles.size(), 0u);
     EXPECT_EQ(s.step, 10);
     EXPECT_NO_THROW((void)MiniXml(slurp(w.xdmf_path())).parse());
+    fs::remove_all(dir);
+}
+
+// ---- the revolved copies of an axisymmetric snapshot ([output] revolution_sectors) -------
+
+namespace {
+
+// Rings at radii 0 (on the axis) to 0.05 m, with every field distinct.
+ParticleSet rings(std::size_t n) {
+    ParticleSet ps;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = static_cast<double>(i);
+        ps.x.push_back(0.05 * t / static_cast<double>(n - 1));
+        ps.z.push_back(0.1 - 0.003 * t);
+        ps.u.push_back(0.25 - 0.1 * t);
+        ps.w.push_back(-1.0 + 0.01 * t);
+        ps.rho.push_back(1000.0 + t);
+        ps.p.push_back(100.0 - 3.0 * t);
+        ps.m.push_back(1e-4 * (1.0 + t) / 3.0);
+        ps.id.push_back(static_cast<std::int64_t>(n - i) + (std::int64_t{1} << 40));
+        ps.kind.push_back(i < 2 ? 1 : 2);
+        ps.active.push_back(i % 5 == 3 ? 0 : 1);
+    }
+    ps.nb = 2;
+    ps.nbf = 0;
+    return ps;
+}
+
+SimParams axisymmetric() {
+    SimParams p;
+    p.geometry = Geometry::Axisymmetric;
+    return p;
+}
+
+std::vector<double> read_vec3(hid_t f, const std::string& path, std::size_t rows) {
+    h5::Dataset d(H5Dopen2(f, path.c_str(), H5P_DEFAULT));
+    EXPECT_GE(d.get(), 0) << path;
+    h5::Dataspace sp(H5Dget_space(d));
+    hsize_t dims[2] = {0, 0};
+    EXPECT_EQ(H5Sget_simple_extent_dims(sp, dims, nullptr), 2) << path;
+    EXPECT_EQ(dims[0], rows) << path;
+    EXPECT_EQ(dims[1], 3u) << path;
+    std::vector<double> v(3 * rows);
+    EXPECT_GE(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), 0) << path;
+    return v;
+}
+
+// Every grid of every collection of the index at path: each HDF reference names the grid's
+// file and a dataset of the dimensions the index states, [n] or [n x 3] with n the grid's
+// point count. Returns the grid count per collection name.
+std::map<std::string, std::size_t> check_index(const fs::path& dir, const fs::path& path) {
+    std::map<std::string, std::size_t> count;
+    const Element root = MiniXml(slurp(path)).parse();
+    const auto domains = children(root, "Domain");
+    EXPECT_EQ(domains.size(), 1u);
+    for (const Element* c : children(*domains.at(0), "Grid")) {
+        EXPECT_EQ(c->attrs.at("CollectionType"), "Temporal");
+        for (const Element* g : children(*c, "Grid")) {
+            ++count[c->attrs.at("Name")];
+            const std::string n =
+                children(*g, "Topology").at(0)->attrs.at("NumberOfElements");
+            std::vector<const Element*> items;
+            collect_data_items(*g, items);
+            for (const Element* item : items) {
+                const std::string ref = trim(item->text);
+                const auto colon = ref.find(':');
+                h5::File f = h5::open_file(dir / ref.substr(0, colon));
+                const std::string ds_path = ref.substr(colon + 1);
+                h5::Dataset d(H5Dopen2(f, ds_path.c_str(), H5P_DEFAULT));
+                EXPECT_GE(d.get(), 0) << ref;
+                if (d.get() < 0) continue;
+                h5::Dataspace sp(H5Dget_space(d));
+                hsize_t dims[2] = {0, 0};
+                const int rank = H5Sget_simple_extent_dims(sp, dims, nullptr);
+                const std::string got =
+                    rank == 1 ? std::to_string(dims[0]) : fmt::format("{} {}", dims[0], dims[1]);
+                EXPECT_EQ(item->attrs.at("Dimensions"), got) << ref;
+                EXPECT_EQ(std::to_string(dims[0]), n) << ref;
+            }
+        }
+    }
+    return count;
+}
+
+}  // namespace
+
+// Each ring becomes N points at phi_k = 2 pi k / N on the circle of its radius at its z (to
+// 1e-15 relative: one rounding each in cos, sin and the products), its radial velocity turns
+// with it, the scalar fields are repeated bit for bit, and the copies' masses m / N sum to the
+// rings' mass (to 1e-13: a sum of 63 terms, each rounded once by the division and once by the
+// sum, is within 64 x 1.1e-16 of the exact one).
+TEST(Hdf5Revolution, CopiesLieOnTheRingsAndCarryMassOverN) {
+    const fs::path dir = fresh_dir("revolve");
+    const std::size_t n = 9;
+    const int sectors = 7;
+    const ParticleSet ps = rings(n);
+    std::vector<double> nx(n), nz(n), colour(n, 0.5);
+    for (std::size_t i = 0; i < n; ++i) {
+        nx[i] = std::cos(0.3 * static_cast<double>(i));
+        nz[i] = std::sin(0.3 * static_cast<double>(i));
+    }
+    const std::vector<ExtraField> extra = {
+        {"colour", colour, ""}, {"normal_x", nx, ""}, {"normal_z", nz, ""}};
+    Hdf5Writer w(dir, axisymmetric(), "revolve");
+    w.set_revolution_sectors(sectors);
+    const fs::path file = w.write(ps, state_at(0.125, 10), extra);
+
+    const std::size_t rows = n * sectors;
+    h5::File f = h5::open_file(file);
+    h5::Group g = h5::open_group(f, "revolved");
+    EXPECT_EQ(h5::read_attr_int64(g, "sectors"), sectors);
+    EXPECT_EQ(h5::read_attr_int64(g, "n_points"), static_cast<std::int64_t>(rows));
+    const auto pts = read_vec3(f, "/revolved/points", rows);
+    const auto vel = read_vec3(f, "/revolved/velocity", rows);
+    const auto nor = read_vec3(f, "/revolved/normal", rows);
+    const double two_pi = 2.0 * std::acos(-1.0);
+    for (int k = 0; k < sectors; ++k) {
+        const double phi = two_pi * k / sectors;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t r = k * n + i;
+            const double* p = &pts[3 * r];
+            EXPECT_NEAR(std::hypot(p[0], p[1]), ps.x[i], 1e-15 * ps.x[i]) << k << " " << i;
+            EXPECT_EQ(p[2], ps.z[i]);
+            if (ps.x[i] > 0) EXPECT_NEAR(std::remainder(std::atan2(p[1], p[0]) - phi, two_pi), 0.0, 1e-14);
+            const double* v = &vel[3 * r];
+            EXPECT_NEAR(v[0], ps.u[i] * std::cos(phi), 1e-15 * std::abs(ps.u[i]));
+            EXPECT_NEAR(v[1], ps.u[i] * std::sin(phi), 1e-15 * std::abs(ps.u[i]));
+            EXPECT_EQ(v[2], ps.w[i]);
+            const double* q = &nor[3 * r];
+            EXPECT_NEAR(q[0], nx[i] * std::cos(phi), 1e-15);
+            EXPECT_NEAR(q[1], nx[i] * std::sin(phi), 1e-15);
+            EXPECT_EQ(q[2], nz[i]);
+        }
+    }
+    const auto repeated = [&](const auto& v) {
+        std::remove_cvref_t<decltype(v)> out;
+        for (int k = 0; k < sectors; ++k) out.insert(out.end(), v.begin(), v.end());
+        return out;
+    };
+    expect_bitwise(h5::read_doubles(g, "x", rows), repeated(ps.x), "x");
+    expect_bitwise(h5::read_doubles(g, "z", rows), repeated(ps.z), "z");
+    expect_bitwise(h5::read_doubles(g, "u", rows), repeated(ps.u), "u");
+    expect_bitwise(h5::read_doubles(g, "w", rows), repeated(ps.w), "w");
+    expect_bitwise(h5::read_doubles(g, "rho", rows), repeated(ps.rho), "rho");
+    expect_bitwise(h5::read_doubles(g, "p", rows), repeated(ps.p), "p");
+    expect_bitwise(h5::read_int64(g, "id", rows), repeated(ps.id), "id");
+    expect_bitwise(h5::read_int32(g, "kind", rows), repeated(ps.kind), "kind");
+    expect_bitwise(h5::read_int32(g, "active", rows), repeated(ps.active), "active");
+    expect_bitwise(h5::read_doubles(g, "colour", rows), repeated(colour), "colour");
+    const auto m = h5::read_doubles(g, "m", rows);
+    double ring_mass = 0.0, copy_mass = 0.0;
+    for (double v : ps.m) ring_mass += v;
+    for (std::size_t r = 0; r < rows; ++r) {
+        EXPECT_EQ(m[r], ps.m[r % n] / sectors) << r;
+        copy_mass += m[r];
+    }
+    EXPECT_NEAR(copy_mass, ring_mass, 1e-13 * ring_mass);
+    const auto vertices = h5::read_int64(g, "vertices", rows);
+    for (std::size_t r = 0; r < rows; ++r) EXPECT_EQ(vertices[r], static_cast<std::int64_t>(r));
+
+    // The (r, z) snapshot is as without the copies.
+    const Snapshot s = read_snapshot(file);
+    expect_same_particles(ps, s.particles);
+    EXPECT_EQ(s.extra.size(), 3u);
+
+    // The index: "particles" as ever, then "revolved" with a grid of N n points per snapshot.
+    const auto count = check_index(dir, w.xdmf_path());
+    EXPECT_EQ(count.size(), 2u);
+    EXPECT_EQ(count.at("particles"), 1u);
+    EXPECT_EQ(count.at("revolved"), 1u);
+    const std::string xmf = slurp(w.xdmf_path());
+    EXPECT_NE(xmf.find("<Grid Name=\"snap_000000_revolved\""), std::string::npos) << xmf;
+    EXPECT_LT(xmf.find("<Grid Name=\"particles\""), xmf.find("<Grid Name=\"revolved\""));
+    fs::remove_all(dir);
+}
+
+// Without revolution the snapshot has no /revolved and the index one collection, written as
+// xdmf::document(grids) writes it (the format before revolution existed).
+TEST(Hdf5Revolution, OffLeavesSnapshotAndIndexAsBefore) {
+    const fs::path dir = fresh_dir("revolve_off");
+    Hdf5Writer w(dir, axisymmetric(), "off");
+    const fs::path file = w.write(rings(6), state_at(0.5, 5));
+    h5::File f = h5::open_file(file);
+    EXPECT_FALSE(h5::has_link(f, "revolved"));
+    EXPECT_EQ(check_index(dir, w.xdmf_path()).size(), 1u);
+    std::vector<xdmf::Grid> grids;  // what the index holds, rebuilt by hand
+    xdmf::Grid g;
+    g.name = "snap_000000";
+    g.h5_file = "snap_000000.h5";
+    g.time = 0.5;
+    g.n = 6;
+    g.connectivity = "/xdmf/vertices";
+    g.points = "/xdmf/points";
+    g.fields.push_back({"velocity", "/xdmf/velocity", xdmf::NumberType::Float64, true});
+    for (const char* s : {"x", "z", "u", "w", "rho", "p", "m"})
+        g.fields.push_back({s, std::string("/particles/") + s, xdmf::NumberType::Float64, false});
+    g.fields.push_back({"id", "/particles/id", xdmf::NumberType::Int64, false});
+    g.fields.push_back({"kind", "/particles/kind", xdmf::NumberType::Int32, false});
+    g.fields.push_back({"active", "/particles/active", xdmf::NumberType::Int32, false});
+    grids.push_back(g);
+    EXPECT_EQ(slurp(w.xdmf_path()), xdmf::document(std::span<const xdmf::Grid>(grids)));
+    fs::remove_all(dir);
+}
+
+TEST(Hdf5Revolution, RefusesBadSectorCountsAndThePlanarGeometry) {
+    const fs::path dir = fresh_dir("revolve_bad");
+    Hdf5Writer axi(dir / "a", axisymmetric(), "x");
+    EXPECT_THROW(axi.set_revolution_sectors(-1), std::invalid_argument);
+    EXPECT_THROW(axi.set_revolution_sectors(kMaxRevolutionSectors + 1), std::invalid_argument);
+    EXPECT_NO_THROW(axi.set_revolution_sectors(kMaxRevolutionSectors));
+    EXPECT_EQ(axi.revolution_sectors(), kMaxRevolutionSectors);
+    Hdf5Writer planar(dir / "p", SimParams{}, "x");
+    EXPECT_THROW(planar.set_revolution_sectors(4), std::invalid_argument);
+    EXPECT_NO_THROW(planar.set_revolution_sectors(0));
+    fs::remove_all(dir);
+}
+
+// A resumed run re-indexes the kept snapshots with their copies: once it has written the
+// snapshots after the checkpoint again, its index equals the uninterrupted run's, byte for
+// byte. A snapshot written without copies (the setting changed) is listed in "particles" only.
+TEST(Hdf5Revolution, ResumeReindexesTheCopies) {
+    const fs::path dir = fresh_dir("revolve_resume");
+    std::string uninterrupted;
+    {
+        Hdf5Writer w(dir, axisymmetric(), "first");
+        w.set_revolution_sectors(3);
+        for (int k = 0; k < 4; ++k) w.write(rings(5), state_at(0.1 * k, 100 * k));
+        uninterrupted = slurp(w.xdmf_path());
+    }
+    {
+        Hdf5Writer w(dir, axisymmetric(), "resume", Hdf5Writer::Mode::Resume, 150);
+        ASSERT_EQ(w.snapshots().size(), 2u);
+        EXPECT_EQ(w.snapshots()[1].revolution_sectors, 3);
+        EXPECT_EQ(check_index(dir, w.xdmf_path()).at("revolved"), 2u);
+        w.set_revolution_sectors(3);
+        for (int k = 2; k < 4; ++k) w.write(rings(5), state_at(0.1 * k, 100 * k));
+        EXPECT_EQ(slurp(w.xdmf_path()), uninterrupted);
+    }
+    Hdf5Writer w(dir, axisymmetric(), "again", Hdf5Writer::Mode::Resume, 250);
+    w.write(rings(5), state_at(0.3, 300));  // revolution off from here
+    const auto count = check_index(dir, w.xdmf_path());
+    EXPECT_EQ(count.at("particles"), 4u);
+    EXPECT_EQ(count.at("revolved"), 3u);
+    EXPECT_EQ(slurp(w.xdmf_path()).find("snap_000003_revolved"), std::string::npos);
     fs::remove_all(dir);
 }

@@ -254,6 +254,7 @@ void expect_same(const CaseSpec& a, const CaseSpec& b) {
     EXPECT_EQ(a.output.rho_min_factor, b.output.rho_min_factor);
     EXPECT_EQ(a.output.rho_max_factor, b.output.rho_max_factor);
     EXPECT_EQ(a.output.dt_min, b.output.dt_min);
+    EXPECT_EQ(a.output.revolution_sectors, b.output.revolution_sectors);
 }
 
 std::string read_text(const std::filesystem::path& p) {
@@ -555,6 +556,17 @@ const BadCase kBad[] = {
     {"RhoBand", "", "[output]\nrho_max_factor = 0.9\n", {"output.rho_max_factor", "> 1"}},
     {"NegativeCheckpoint", "", "[output]\ncheckpoint_every_steps = -1\n",
      {"output.checkpoint_every_steps", ">= 0"}},
+    // revolution_sectors: the range first, then the geometry (kMinimal is planar)
+    {"RevolutionNegative", "", "[output]\nrevolution_sectors = -4\n",
+     {"output.revolution_sectors", "out of range", "an integer in [0, 360]", "found -4", "line 21"}},
+    {"RevolutionAbsurd", "", "[output]\nrevolution_sectors = 100000\n",
+     {"output.revolution_sectors", "out of range", "[0, 360]", "found 100000"}},
+    {"RevolutionNotInteger", "", "[output]\nrevolution_sectors = 12.0\n",
+     {"output.revolution_sectors", "wrong type", "an integer", "the float 12.0"}},
+    {"RevolutionPlanar", "", "[output]\nrevolution_sectors = 16\n",
+     {"output.revolution_sectors", "axisymmetric", "domain.geometry = \"planar\"", "found 16"}},
+    {"RevolutionPlanarZero", "", "[output]\nrevolution_sectors = 0\n",
+     {"output.revolution_sectors", "axisymmetric", "found 0"}},
     {"WallNeedsDynamic", "", "[[wall]]\nx = 0.2\nheight = 0.1\n[numerics]\nboundary = \"repulsive\"\n",
      {"wall[0].x", "dynamic"}},
     {"WallTooHigh", "", "[[wall]]\nx = 0.2\nheight = 0.6\n", {"wall[0].height", "domain.lz"}},
@@ -863,6 +875,33 @@ TEST(ModernCase, AxisymmetricAndPeriodicZ) {
     const CaseSpec p = parse_modern_case(kMinimal, "case.toml", {"domain.periodic_z=true", "domain.wall_bottom=false"});
     EXPECT_TRUE(p.params.periodic_z);
     EXPECT_TRUE(p.params.domain_box);
+}
+
+// output.revolution_sectors (cases/CASE_FORMAT.md [output]): read in axisymmetric cases, off by
+// default, written back only when on (so that the case.toml of a run without it is unchanged);
+// out-of-range values are refused in either geometry, naming file, key, expected and found.
+TEST(ModernCase, RevolutionSectors) {
+    const std::vector<std::string> axi = {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                          "numerics.lattice=\"sc\""};
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", axi).output.revolution_sectors, 0);
+    EXPECT_EQ(write_modern_case(parse_modern_case(kMinimal, "case.toml", axi)).find("revolution_sectors"),
+              std::string::npos);
+    for (const int n : {1, 24, 360}) {
+        std::vector<std::string> on = axi;
+        on.push_back("output.revolution_sectors=" + std::to_string(n));
+        const CaseSpec s = parse_modern_case(kMinimal, "case.toml", on);
+        EXPECT_EQ(s.output.revolution_sectors, n);
+        expect_round_trip(s);
+    }
+    std::vector<std::string> bad = axi;
+    bad.push_back("output.revolution_sectors=361");
+    std::string e = error_of(kMinimal, bad);
+    for (const char* part : {"case.toml: output.revolution_sectors", "set by override", "out of range",
+                             "expected an integer in [0, 360]", "found 361"})
+        EXPECT_NE(e.find(part), std::string::npos) << part << " not in: " << e;
+    bad.back() = "output.revolution_sectors=-1";
+    e = error_of(kMinimal, bad);
+    EXPECT_NE(e.find("found -1"), std::string::npos) << e;
 }
 
 }  // namespace
