@@ -9,7 +9,8 @@ module sphjet_kernels
   use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq
   implicit none
   private
-  public :: kernel_t, kernel_setup, kernel_eval, kernel_eval_list, kernel_w0, kernel_valid
+  public :: kernel_t, kernel_setup, kernel_eval, kernel_eval_list, kernel_w0, kernel_valid, &
+            kernel_profile
 
   type :: kernel_t
     integer(ip) :: kind = KERNEL_WENDLAND
@@ -94,5 +95,26 @@ contains
     case default;            w0 = k%aw * gaussian_f(0.0_rp)
     end select
   end function kernel_w0
+
+  !> The kernel's profile across a line at distance y from the centre, P(y) = int W(s, y) ds
+  !> over s in (-2h, 2h): midpoint sums of nq cells over s in (0, 2h), doubled [1/m].
+  pure function kernel_profile(k, y, nq) result(p)
+    type(kernel_t), intent(in) :: k
+    real(rp), intent(in) :: y
+    integer, intent(in) :: nq
+    real(rp) :: p, cell, s, r, w, f, acc
+    integer :: i
+    cell = 2.0_rp * k%h / nq
+    acc = 0.0_rp
+    do i = 1, nq
+      s = (i - 0.5_rp) * cell
+      r = sqrt(s * s + y * y)
+      if (r * r < k%support2) then
+        call kernel_eval(k, r, w, f)
+        acc = acc + w
+      end if
+    end do
+    p = 2.0_rp * acc * cell
+  end function kernel_profile
 
 end module sphjet_kernels

@@ -92,27 +92,17 @@ contains
   !> hoop = g'/g; midpoint sums on a grid of AXIS_GRID_D h (g(2h) = 2 to 1e-6).
   pure subroutine axis_weight_tables(kind, gi, hoop)
     use sphjet_kinds, only: ip
-    use sphjet_kernels, only: kernel_t, kernel_eval, kernel_setup
+    use sphjet_kernels, only: kernel_t, kernel_setup, kernel_profile
     integer(ip), intent(in) :: kind
     real(rp), intent(out) :: gi(AXIS_TABLE_N), hoop(AXIS_TABLE_N)
     real(rp), parameter :: D = AXIS_GRID_D
     integer, parameter :: NP = nint(2.0_rp / AXIS_GRID_D), NQ = 400
     type(kernel_t) :: kern
-    real(rp) :: prof(-NP:NP), w, f, r, acc, ys, dt, x, g, gp
+    real(rp) :: prof(-NP:NP), x, g, gp
     integer :: i, j, k
     kern = kernel_setup(kind, 1.0_rp)
-    dt = 2.0_rp / NQ
-    do i = -NP, NP          ! P(y) = 2 int_0^sqrt(4-y^2) W(sqrt(y^2 + s^2)) ds
-      acc = 0.0_rp
-      do k = 1, NQ
-        ys = (k - 0.5_rp) * dt
-        r = sqrt((i * D)**2 + ys * ys)
-        if (r * r < kern%support2) then
-          call kernel_eval(kern, r, w, f)
-          acc = acc + w
-        end if
-      end do
-      prof(i) = 2.0_rp * acc * dt
+    do i = -NP, NP
+      prof(i) = kernel_profile(kern, i * D, NQ)
     end do
     prof = prof / (sum(prof) * D)   ! unit integral on the grid
     do k = 1, AXIS_TABLE_N

@@ -123,27 +123,18 @@ contains
   !> quarter support (relative error about 1e-4).
   pure subroutine csf_depth_table(kind, tab)
     use sphjet_kinds, only: ip
-    use sphjet_kernels, only: kernel_t, kernel_eval, kernel_setup
+    use sphjet_kernels, only: kernel_t, kernel_setup, kernel_profile
     integer(ip), intent(in) :: kind
     real(rp), intent(out) :: tab(DEPTH_TABLE_N)
     integer, parameter :: NQ = 100
     type(kernel_t) :: kern
-    real(rp) :: prof(NQ), ymid, xmid, cell, w, f, r, acc, delta, ycut
-    integer :: i, j, k
+    real(rp) :: prof(NQ), ymid, cell, acc, delta, ycut
+    integer :: j, k
     kern = kernel_setup(kind, 1.0_rp)
     cell = 2.0_rp * kern%h / NQ
-    do j = 1, NQ          ! P at the midpoints of the y cells, both signs of x
+    do j = 1, NQ          ! P at the midpoints of the y cells
       ymid = (j - 0.5_rp) * cell
-      acc = 0.0_rp
-      do i = 1, NQ
-        xmid = (i - 0.5_rp) * cell
-        r = sqrt(xmid * xmid + ymid * ymid)
-        if (r * r < kern%support2) then
-          call kernel_eval(kern, r, w, f)
-          acc = acc + w
-        end if
-      end do
-      prof(j) = 2.0_rp * acc * cell
+      prof(j) = kernel_profile(kern, ymid, NQ)
     end do
     do k = 1, DEPTH_TABLE_N
       delta = 2.0_rp * kern%h * (k - 1) / (DEPTH_TABLE_N - 1)
