@@ -14,7 +14,8 @@ module rates
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
   use sorted_state, only: sorted_t, gather_sorted
-  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
+                       SWEEP_FRESH
   use viscosity, only: artificial_pi, laminar_factor
   use tensile_correction, only: tensile_r, tensile_term
   use repulsive_wall, only: repulsive_force
@@ -41,8 +42,6 @@ module rates
     real(rp) :: h = 0.0_rp, eta2 = 0.0_rp, alpha = 0.0_rp, inv_wdp = 0.0_rp, beta = 0.0_rp
     real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
     real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
-    real(rp), allocatable :: tr(:)                              !< tensile R per particle
-    real(rp), allocatable :: wnx(:), wnz(:), wdb(:), wdf(:)     !< repulsive wall geometry
   contains
     procedure :: visit => rates_visit
   end type rates_body_t
@@ -70,6 +69,7 @@ contains
     type(rates_body_t) :: body
     integer :: n, k, i
     real(rp) :: wdp, fdummy
+    logical :: st_on
 
     body%h = prm%h
     body%eta2 = 0.01_rp * prm%h * prm%h
@@ -90,35 +90,33 @@ contains
     n = s%n
     body%s => s
 
+    ! tensile R and the wall geometry in sorted order (an axis image's normal is mirrored)
+    body%inv_wdp = 0.0_rp
     if (body%tensile) then
       call kernel_eval(kern, tensile_q(kern%kind) * prm%h, wdp, fdummy)
       body%inv_wdp = 1.0_rp / wdp
-      allocate(body%tr(n))
-      body%tr = tensile_r(s%p(1:n), s%pr(1:n))
-    else
-      body%inv_wdp = 0.0_rp
-      allocate(body%tr(n))
-      body%tr = 0.0_rp
+      s%tr(1:n) = tensile_r(s%p(1:n), s%pr(1:n))
     end if
     if (body%repulsive) then
-      allocate(body%wnx(n), body%wnz(n), body%wdb(n), body%wdf(n))
       do k = 1, n
         i = s%src(k)
-        if (i <= st%nb) then   ! an axis image's normal is mirrored (usign = -1)
-          body%wnx(k) = s%usign(k) * st%wall_nx(i); body%wnz(k) = st%wall_nz(i)
-          body%wdb(k) = st%wall_dback(i); body%wdf(k) = st%wall_dfwd(i)
+        if (i <= st%nb) then
+          s%wnx(k) = s%usign(k) * st%wall_nx(i); s%wnz(k) = st%wall_nz(i)
+          s%wdb(k) = st%wall_dback(i); s%wdf(k) = st%wall_dfwd(i)
         else
-          body%wnx(k) = 0.0_rp; body%wnz(k) = 0.0_rp; body%wdb(k) = 0.0_rp; body%wdf(k) = 0.0_rp
+          s%wnx(k) = 0.0_rp; s%wnz(k) = 0.0_rp; s%wdb(k) = 0.0_rp; s%wdf(k) = 0.0_rp
         end if
       end do
     end if
 
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax)
+    ! with surface tension, the pairs are kept for its passes (surface_tension_loops.f90)
+    st_on = prm%sigma > 0.0_rp
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, merge(SWEEP_KEEP, SWEEP_FRESH, st_on))
 
     ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
     if (prm%geometry == GEOM_AXISYMMETRIC) call axisymmetric_rates(prm, kern, s, st%n)
 
-    if (prm%sigma > 0.0_rp) call surface_tension_rates(prm, kern, st, s)
+    if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
 
     ! Scatter back to particle order; inactive particles get zero rates. The sorted slots are
     ! exactly the active particles, so the two loops write disjoint entries and need no
@@ -183,7 +181,7 @@ contains
     associate (s => b_%s)
       call pair_velocity_pressure(np, pa, pb, dx, dz, r2, s%u, s%w, s%pr, s%rho, s%m, b_%eta2, &
                                   t, red)
-      if (b_%tensile) call pair_tensile(np, pa, pb, w, b_%tr, b_%inv_wdp, t)
+      if (b_%tensile) call pair_tensile(np, pa, pb, w, s%tr, b_%inv_wdp, t)
       if (b_%artificial) call pair_artificial(np, pa, pb, r2, s%c, b_%alpha_art, b_%h, &
                                               b_%eta2, t)
       call pair_sum_terms(np, dx, dz, w, f, t)
@@ -373,7 +371,7 @@ contains
       fl = b; wl = a; sgn = -1.0_rp
     end if
     call repulsive_force(sgn * dx, sgn * dz, sgn * dux, sgn * duz, &
-                         b_%wnx(wl), b_%wnz(wl), b_%wdb(wl), b_%wdf(wl), s%c(fl), b_%c0, &
+                         s%wnx(wl), s%wnz(wl), s%wdb(wl), s%wdf(wl), s%c(fl), b_%c0, &
                          s%z(fl), s%z(wl), s%u(wl), s%w(wl), b_%h, b_%h_swl, b_%gz, &
                          b_%beta, fx, fz)
     vw = s%m(fl) / s%rho(fl) * b_%wall_viscosity * (f * r2) / (r2 + b_%eta2)
