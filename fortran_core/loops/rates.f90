@@ -15,7 +15,8 @@ module rates
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
   use sorted_state, only: sorted_t, gather_sorted
-  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
+                       SWEEP_FRESH
   use viscosity, only: artificial_pi, laminar_factor
   use tensile_correction, only: tensile_r, tensile_term
   use repulsive_wall, only: repulsive_force
@@ -25,6 +26,16 @@ module rates
   private
   public :: compute_rates, tensile_q
 
+  !> Pairs per chunk of the two-pass body (rates_visit).
+  integer, parameter :: CHUNK = 128
+  !> Columns of a chunk: the pair terms T_*, what pair (a, b) adds to a's and b's sums
+  !> (pressure, laminar viscosity, continuity, XSPH), and the pair quantities C_* they are
+  !> made of.
+  integer, parameter :: T_AX = 1, T_AZ = 2, T_BX = 3, T_BZ = 4, T_LAX = 5, T_LAZ = 6, &
+                        T_LBX = 7, T_LBZ = 8, T_AR = 9, T_BR = 10, T_AU = 11, T_AW = 12, &
+                        T_BU = 13, T_BW = 14, C_DUX = 15, C_DUZ = 16, C_DOT = 17, C_P = 18, &
+                        C_RHO = 19, C_MA = 20, C_MB = 21, N_COLUMNS = 21
+
   !> The rates pair loop body: the case's choices (set once per call) and the sorted state.
   type, extends(pair_body_t) :: rates_body_t
     type(sorted_t), pointer :: s => null()
@@ -33,9 +44,7 @@ module rates
     real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
     real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
     logical :: axi_pressure = .false.   !< the pressure pair is the axisymmetric loop's
-    real(rp), allocatable :: zero(:)                            !< P = 0 for axi_pressure
-    real(rp), allocatable :: tr(:)                              !< tensile R per particle
-    real(rp), allocatable :: wnx(:), wnz(:), wdb(:), wdf(:)     !< repulsive wall geometry
+    real(rp), allocatable :: zero(:)    !< P = 0 for axi_pressure
   contains
     procedure :: visit => rates_visit
   end type rates_body_t
@@ -63,6 +72,7 @@ contains
     type(rates_body_t) :: body
     integer :: n, k, i
     real(rp) :: wdp, fdummy
+    logical :: st_on
 
     body%h = prm%h
     body%eta2 = 0.01_rp * prm%h * prm%h
@@ -88,35 +98,33 @@ contains
       body%zero = 0.0_rp
     end if
 
+    ! tensile R and the wall geometry in sorted order (an axis image's normal is mirrored)
+    body%inv_wdp = 0.0_rp
     if (body%tensile) then
       call kernel_eval(kern, tensile_q(kern%kind) * prm%h, wdp, fdummy)
       body%inv_wdp = 1.0_rp / wdp
-      allocate(body%tr(n))
-      body%tr = tensile_r(s%p(1:n), s%pr(1:n))
-    else
-      body%inv_wdp = 0.0_rp
-      allocate(body%tr(n))
-      body%tr = 0.0_rp
+      s%tr(1:n) = tensile_r(s%p(1:n), s%pr(1:n))
     end if
     if (body%repulsive) then
-      allocate(body%wnx(n), body%wnz(n), body%wdb(n), body%wdf(n))
       do k = 1, n
         i = s%src(k)
-        if (i <= st%nb) then   ! an axis image's normal is mirrored (usign = -1)
-          body%wnx(k) = s%usign(k) * st%wall_nx(i); body%wnz(k) = st%wall_nz(i)
-          body%wdb(k) = st%wall_dback(i); body%wdf(k) = st%wall_dfwd(i)
+        if (i <= st%nb) then
+          s%wnx(k) = s%usign(k) * st%wall_nx(i); s%wnz(k) = st%wall_nz(i)
+          s%wdb(k) = st%wall_dback(i); s%wdf(k) = st%wall_dfwd(i)
         else
-          body%wnx(k) = 0.0_rp; body%wnz(k) = 0.0_rp; body%wdb(k) = 0.0_rp; body%wdf(k) = 0.0_rp
+          s%wnx(k) = 0.0_rp; s%wnz(k) = 0.0_rp; s%wdb(k) = 0.0_rp; s%wdf(k) = 0.0_rp
         end if
       end do
     end if
 
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax)
+    ! with surface tension, the pairs are kept for its passes (surface_tension_loops.f90)
+    st_on = prm%sigma > 0.0_rp
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, merge(SWEEP_KEEP, SWEEP_FRESH, st_on))
 
     ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
     if (prm%geometry == GEOM_AXISYMMETRIC) call axisymmetric_rates(prm, kern, s, st%n)
 
-    if (prm%sigma > 0.0_rp) call surface_tension_rates(prm, kern, st, s)
+    if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
 
     ! Scatter back to particle order; inactive particles get zero rates. The sorted slots are
     ! exactly the active particles, so the two loops write disjoint entries and need no
@@ -147,128 +155,236 @@ contains
     !$omp end parallel
   end subroutine compute_rates
 
-  !> The pairs of one row task in two passes: the pair terms of every pair (no scatter, the
-  !> variant flags invariant in the loop, so it vectorises), then their accumulation in
-  !> traversal order. Repulsive-wall pairs (one fluid, one wall particle) take the wall
-  !> force instead.
+  !> The pairs of one row task in two passes over chunks of CHUNK pairs (the chunk's columns
+  !> stay in the first-level cache): every term each pair adds to its two particles (no
+  !> scatter, so it vectorises), then their accumulation in traversal order. Repulsive-wall
+  !> pairs (one fluid, one wall particle) take the wall force instead.
   subroutine rates_visit(self, pl, red)
     class(rates_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
-    if (self%axi_pressure) then
-      call rates_pair_terms(self, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, &
-                            self%s%u, self%s%w, self%zero, self%s%c, self%s%rho, self%tr, &
-                            pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4), red)
-    else
-      call rates_pair_terms(self, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%r2, pl%w, pl%f, &
-                            self%s%u, self%s%w, self%s%pr, self%s%c, self%s%rho, self%tr, &
-                            pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4), red)
-    end if
-    call rates_accumulate(self, pl, pl%t(:, 1), pl%t(:, 2), pl%t(:, 3), pl%t(:, 4))
+    real(rp) :: t(CHUNK, N_COLUMNS)
+    integer :: k0, k1
+    do k0 = 1, pl%n, CHUNK
+      k1 = min(pl%n, k0 + CHUNK - 1)
+      call rates_pair_terms(self, k1 - k0 + 1, pl%a(k0:k1), pl%b(k0:k1), pl%dx(k0:k1), &
+                            pl%dz(k0:k1), pl%r2(k0:k1), pl%w(k0:k1), pl%f(k0:k1), t, red)
+      call rates_accumulate(self, pl, k0, k1, t)
+    end do
   end subroutine rates_visit
 
-  !> Per pair: pv (pressure + tensile + artificial viscosity), u_ab and the laminar factor;
-  !> red = max of (u_ab . r_ab)/(r^2 + eta^2).
-  subroutine rates_pair_terms(b_, np, pa, pb, dx, dz, r2, w, f, u, vw, pr, c, rho, tr, &
-                              pv, dux, duz, lam, red)
+  !> Per pair k: the terms it adds to the sums of its particles a and b (columns T_*, each
+  !> the very product the sum adds, so that the accumulation only adds), and red = max of
+  !> (u_ab . r_ab)/(r^2 + eta^2). One loop per variant, each chosen outside its loop: a
+  !> variant that is off (tensile, artificial or laminar viscosity) costs nothing, not even
+  !> the loads of its particle fields. (Adding its exact zero to p, as one loop over all
+  !> variants did, changes no sum: p enters only products that the sums add, and a sum that
+  !> starts at +0 never holds -0, so adding a zero of either sign leaves it as it is.)
+  subroutine rates_pair_terms(b_, np, pa, pb, dx, dz, r2, w, f, t, red)
     type(rates_body_t), intent(in) :: b_
-    integer, intent(in) :: np, pa(:), pb(:)
-    real(rp), intent(in) :: dx(:), dz(:), r2(:), w(:), f(:), u(:), vw(:), pr(:), c(:), &
-                            rho(:), tr(:)
-    real(rp), intent(out) :: pv(:), dux(:), duz(:), lam(:)
+    integer, intent(in) :: np, pa(np), pb(np)
+    real(rp), intent(in) :: dx(np), dz(np), r2(np), w(np), f(np)
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
     real(rp), intent(inout) :: red
+    associate (s => b_%s)
+      if (b_%axi_pressure) then   ! the pressure is axisymmetric_loops.f90's
+        call pair_velocity_pressure(np, pa, pb, dx, dz, r2, s%u, s%w, b_%zero, s%rho, s%m, &
+                                    b_%eta2, t, red)
+      else
+        call pair_velocity_pressure(np, pa, pb, dx, dz, r2, s%u, s%w, s%pr, s%rho, s%m, &
+                                    b_%eta2, t, red)
+      end if
+      if (b_%tensile) call pair_tensile(np, pa, pb, w, s%tr, b_%inv_wdp, t)
+      if (b_%artificial) call pair_artificial(np, pa, pb, r2, s%c, b_%alpha_art, b_%h, &
+                                              b_%eta2, t)
+      call pair_sum_terms(np, dx, dz, w, f, t)
+      if (b_%laminar) call pair_laminar(np, pa, pb, r2, f, s%rho, b_%nu_lam, b_%eta2, t)
+    end associate
+  end subroutine rates_pair_terms
+
+  !> u_ab, u_ab . r_ab, p_a/rho_a^2 + p_b/rho_b^2, rho_a + rho_b, m_a, m_b; red.
+  pure subroutine pair_velocity_pressure(np, pa, pb, dx, dz, r2, u, vw, pr, rho, m, eta2, t, red)
+    integer, intent(in) :: np, pa(np), pb(np)
+    real(rp), intent(in) :: dx(np), dz(np), r2(np), u(*), vw(*), pr(*), rho(*), m(*), eta2
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS), red
     integer :: k, a, b
-    real(rp) :: dot, p
-    !$omp simd private(a, b, dot, p) reduction(max:red)
+    real(rp) :: dux, duz, dot
+    !$omp simd private(a, b, dux, duz, dot) reduction(max:red)
     do k = 1, np
       a = pa(k)
       b = pb(k)
-      dux(k) = u(a) - u(b)
-      duz(k) = vw(a) - vw(b)
-      dot = dx(k) * dux(k) + dz(k) * duz(k)
-      red = max(red, dot / (r2(k) + b_%eta2))
-      ! Variants off contribute an exact zero (tr = 0, alpha = 0 or nu = 0): no branch here.
-      p = pr(a) + pr(b)
-      p = p + tensile_term(tr(a), tr(b), w(k), b_%inv_wdp)
-      p = p + artificial_pi(b_%alpha_art, b_%h, 0.5_rp * (c(a) + c(b)), &
-                            0.5_rp * (rho(a) + rho(b)), dot, r2(k), b_%eta2)
-      pv(k) = p
-      lam(k) = laminar_factor(b_%nu_lam, rho(a), rho(b), f(k), r2(k), b_%eta2)
+      dux = u(a) - u(b)
+      duz = vw(a) - vw(b)
+      dot = dx(k) * dux + dz(k) * duz
+      red = max(red, dot / (r2(k) + eta2))
+      t(k, C_DUX) = dux
+      t(k, C_DUZ) = duz
+      t(k, C_DOT) = dot
+      t(k, C_P) = pr(a) + pr(b)
+      t(k, C_RHO) = rho(a) + rho(b)
+      t(k, C_MA) = m(a)
+      t(k, C_MB) = m(b)
     end do
-  end subroutine rates_pair_terms
+  end subroutine pair_velocity_pressure
 
-  !> Accumulates the pair terms into the sorted rates, pair by pair in traversal order.
-  subroutine rates_accumulate(b_, pl, pv, dux, duz, lam)
+  !> p += the tensile correction.
+  pure subroutine pair_tensile(np, pa, pb, w, tr, inv_wdp, t)
+    integer, intent(in) :: np, pa(np), pb(np)
+    real(rp), intent(in) :: w(np), tr(*), inv_wdp
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
+    integer :: k
+    do k = 1, np
+      t(k, C_P) = t(k, C_P) + tensile_term(tr(pa(k)), tr(pb(k)), w(k), inv_wdp)
+    end do
+  end subroutine pair_tensile
+
+  !> p += Pi_ab, the artificial viscosity.
+  pure subroutine pair_artificial(np, pa, pb, r2, c, alpha, h, eta2, t)
+    integer, intent(in) :: np, pa(np), pb(np)
+    real(rp), intent(in) :: r2(np), c(*), alpha, h, eta2
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
+    integer :: k
+    do k = 1, np
+      t(k, C_P) = t(k, C_P) + artificial_pi(alpha, h, 0.5_rp * (c(pa(k)) + c(pb(k))), &
+                                            0.5_rp * t(k, C_RHO), t(k, C_DOT), r2(k), eta2)
+    end do
+  end subroutine pair_artificial
+
+  !> The pressure, continuity and XSPH terms.
+  pure subroutine pair_sum_terms(np, dx, dz, w, f, t)
+    integer, intent(in) :: np
+    real(rp), intent(in) :: dx(np), dz(np), w(np), f(np)
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
+    integer :: k
+    real(rp) :: gx, gz, dv, xs
+    do k = 1, np
+      associate (ma => t(k, C_MA), mb => t(k, C_MB), p => t(k, C_P), dux => t(k, C_DUX), &
+                 duz => t(k, C_DUZ))
+        gx = f(k) * dx(k)
+        gz = f(k) * dz(k)
+        t(k, T_AX) = mb * p * gx
+        t(k, T_AZ) = mb * p * gz
+        t(k, T_BX) = ma * p * gx
+        t(k, T_BZ) = ma * p * gz
+        dv = dux * gx + duz * gz
+        t(k, T_AR) = mb * dv
+        t(k, T_BR) = ma * dv
+        xs = 2.0_rp * w(k) / t(k, C_RHO)
+        t(k, T_AU) = mb * dux * xs
+        t(k, T_AW) = mb * duz * xs
+        t(k, T_BU) = ma * dux * xs
+        t(k, T_BW) = ma * duz * xs
+      end associate
+    end do
+  end subroutine pair_sum_terms
+
+  !> The laminar viscosity terms.
+  pure subroutine pair_laminar(np, pa, pb, r2, f, rho, nu, eta2, t)
+    integer, intent(in) :: np, pa(np), pb(np)
+    real(rp), intent(in) :: r2(np), f(np), rho(*), nu, eta2
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
+    integer :: k
+    real(rp) :: lam
+    do k = 1, np
+      lam = laminar_factor(nu, rho(pa(k)), rho(pb(k)), f(k), r2(k), eta2)
+      t(k, T_LAX) = t(k, C_MB) * lam * t(k, C_DUX)
+      t(k, T_LAZ) = t(k, C_MB) * lam * t(k, C_DUZ)
+      t(k, T_LBX) = t(k, C_MA) * lam * t(k, C_DUX)
+      t(k, T_LBZ) = t(k, C_MA) * lam * t(k, C_DUZ)
+    end do
+  end subroutine pair_laminar
+
+  !> Accumulates the terms of pairs k0..k1 into the sorted rates, pair by pair in traversal
+  !> order.
+  subroutine rates_accumulate(b_, pl, k0, k1, t)
     type(rates_body_t), intent(in) :: b_
     type(pair_list_t), intent(in) :: pl
-    real(rp), intent(in) :: pv(:), dux(:), duz(:), lam(:)
+    integer, intent(in) :: k0, k1
+    real(rp), intent(in) :: t(CHUNK, N_COLUMNS)
     type(sorted_t), pointer :: s
-    integer :: k, k0
+    integer :: k, j0
     s => b_%s
     ! runs of fluid pairs (all pairs but the repulsive-wall ones) go to the plain sum
-    k0 = 1
-    do k = 1, pl%n
-      if (.not. (b_%repulsive .and. pl%mixed(k))) cycle
-      call accumulate_fluid(k0, k - 1, b_%laminar, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%f, &
-                            pv, dux, duz, lam, s%m, s%rho, s%ax, s%az, s%ar, s%xu, s%xw)
-      call accumulate_wall(b_, s, pl%a(k), pl%b(k), pl%dx(k), pl%dz(k), pl%r2(k), pl%f(k), &
-                           dux(k), duz(k))
-      k0 = k + 1
-    end do
-    call accumulate_fluid(k0, pl%n, b_%laminar, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%f, &
-                          pv, dux, duz, lam, s%m, s%rho, s%ax, s%az, s%ar, s%xu, s%xw)
+    j0 = k0
+    if (b_%repulsive) then
+      do k = k0, k1
+        if (.not. pl%mixed(k)) cycle
+        call accumulate_fluid(j0, k - 1, k0 - 1, b_%laminar, pl%a, pl%b, t, &
+                              s%ax, s%az, s%ar, s%xu, s%xw)
+        call accumulate_wall(b_, s, pl%a(k), pl%b(k), pl%dx(k), pl%dz(k), pl%r2(k), pl%f(k))
+        j0 = k + 1
+      end do
+    end if
+    call accumulate_fluid(j0, k1, k0 - 1, b_%laminar, pl%a, pl%b, t, &
+                          s%ax, s%az, s%ar, s%xu, s%xw)
   end subroutine rates_accumulate
 
-  !> Pressure (+ viscosity), continuity and XSPH sums of pairs k0..k1.
-  pure subroutine accumulate_fluid(k0, k1, laminar, pa, pb, dx, dz, w, f, pv, dux, duz, lam, &
-                                   m, rho, ax, az, ar, xu, xw)
-    integer, intent(in) :: k0, k1, pa(:), pb(:)
+  !> Pressure (+ viscosity), continuity and XSPH sums of pairs j0..j1 (term row k - off).
+  !> The pairs of one particle a follow each other (list order: cell, partner cell, a, b),
+  !> and no pair of such a run has a as its b: a's sums are carried in registers along the
+  !> run, with the same additions in the same order as one pair at a time.
+  pure subroutine accumulate_fluid(j0, j1, off, laminar, pa, pb, t, ax, az, ar, xu, xw)
+    integer, intent(in) :: j0, j1, off, pa(:), pb(:)
     logical, intent(in) :: laminar
-    real(rp), intent(in) :: dx(:), dz(:), w(:), f(:), pv(:), dux(:), duz(:), lam(:), m(:), rho(:)
+    real(rp), intent(in) :: t(CHUNK, N_COLUMNS)
     real(rp), intent(inout) :: ax(:), az(:), ar(:), xu(:), xw(:)
-    integer :: k, a, b
-    real(rp) :: gx, gz, dv, t
-    do k = k0, k1
+    integer :: k, a, b, i
+    real(rp) :: sx, sz, sr, su, sw
+    k = j0
+    do while (k <= j1)
       a = pa(k)
-      b = pb(k)
-      gx = f(k) * dx(k)
-      gz = f(k) * dz(k)
-      ax(a) = ax(a) - m(b) * pv(k) * gx
-      az(a) = az(a) - m(b) * pv(k) * gz
-      ax(b) = ax(b) + m(a) * pv(k) * gx
-      az(b) = az(b) + m(a) * pv(k) * gz
-      if (laminar) then
-        ax(a) = ax(a) + m(b) * lam(k) * dux(k)
-        az(a) = az(a) + m(b) * lam(k) * duz(k)
-        ax(b) = ax(b) - m(a) * lam(k) * dux(k)
-        az(b) = az(b) - m(a) * lam(k) * duz(k)
-      end if
-      dv = dux(k) * gx + duz(k) * gz
-      ar(a) = ar(a) + m(b) * dv
-      ar(b) = ar(b) + m(a) * dv
-      t = 2.0_rp * w(k) / (rho(a) + rho(b))
-      xu(a) = xu(a) - m(b) * dux(k) * t
-      xw(a) = xw(a) - m(b) * duz(k) * t
-      xu(b) = xu(b) + m(a) * dux(k) * t
-      xw(b) = xw(b) + m(a) * duz(k) * t
+      sx = ax(a)
+      sz = az(a)
+      sr = ar(a)
+      su = xu(a)
+      sw = xw(a)
+      do while (k <= j1)
+        if (pa(k) /= a) exit
+        b = pb(k)
+        i = k - off
+        sx = sx - t(i, T_AX)
+        sz = sz - t(i, T_AZ)
+        ax(b) = ax(b) + t(i, T_BX)
+        az(b) = az(b) + t(i, T_BZ)
+        if (laminar) then
+          sx = sx + t(i, T_LAX)
+          sz = sz + t(i, T_LAZ)
+          ax(b) = ax(b) - t(i, T_LBX)
+          az(b) = az(b) - t(i, T_LBZ)
+        end if
+        sr = sr + t(i, T_AR)
+        ar(b) = ar(b) + t(i, T_BR)
+        su = su - t(i, T_AU)
+        sw = sw - t(i, T_AW)
+        xu(b) = xu(b) + t(i, T_BU)
+        xw(b) = xw(b) + t(i, T_BW)
+        k = k + 1
+      end do
+      ax(a) = sx
+      az(a) = sz
+      ar(a) = sr
+      xu(a) = su
+      xw(a) = sw
     end do
   end subroutine accumulate_fluid
 
   !> A repulsive-wall pair: the fluid particle of (a, b) pushed by the wall particle.
-  subroutine accumulate_wall(b_, s, a, b, dx, dz, r2, f, dux, duz)
+  subroutine accumulate_wall(b_, s, a, b, dx, dz, r2, f)
     type(rates_body_t), intent(in) :: b_
     type(sorted_t), intent(inout) :: s
     integer, intent(in) :: a, b
-    real(rp), intent(in) :: dx, dz, r2, f, dux, duz
+    real(rp), intent(in) :: dx, dz, r2, f
     integer :: fl, wl
-    real(rp) :: sgn, fx, fz, vw
+    real(rp) :: sgn, fx, fz, vw, dux, duz
+    dux = s%u(a) - s%u(b)
+    duz = s%w(a) - s%w(b)
     if (s%fluid(a)) then
       fl = a; wl = b; sgn = 1.0_rp
     else
       fl = b; wl = a; sgn = -1.0_rp
     end if
     call repulsive_force(sgn * dx, sgn * dz, sgn * dux, sgn * duz, &
-                         b_%wnx(wl), b_%wnz(wl), b_%wdb(wl), b_%wdf(wl), s%c(fl), b_%c0, &
+                         s%wnx(wl), s%wnz(wl), s%wdb(wl), s%wdf(wl), s%c(fl), b_%c0, &
                          s%z(fl), s%z(wl), s%u(wl), s%w(wl), b_%h, b_%h_swl, b_%gz, &
                          b_%beta, fx, fz)
     vw = s%m(fl) / s%rho(fl) * b_%wall_viscosity * (f * r2) / (r2 + b_%eta2)

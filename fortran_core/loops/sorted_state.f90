@@ -54,6 +54,9 @@ module sorted_state
     real(rp), allocatable :: usign(:)    !< -1 for a mirror image across the axis, else 1
     ! accumulated rates (sorted order)
     real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
+    ! per-particle inputs of the rates loop (loops/rates.f90): tensile R and repulsive-wall
+    ! geometry, kept here so that an evaluation allocates (and page-faults) nothing
+    real(rp), allocatable :: tr(:), wnx(:), wnz(:), wdb(:), wdf(:)
     ! one pair list per thread, and the kept pairs of each row (traversal.f90)
     type(pair_list_t), allocatable :: lists(:), cache(:)
     ! the neighbour list: pairs of each row task (rows(0:grid%ncz-1)), build positions
@@ -338,11 +341,12 @@ contains
     if (allocated(s%x)) then
       if (size(s%x) >= n) return
       deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, &
-                 s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%src_slot)
+                 s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%src_slot, &
+                 s%tr, s%wnx, s%wnz, s%wdb, s%wdf)
     end if
     allocate(s%x(n), s%z(n), s%u(n), s%w(n), s%rho(n), s%p(n), s%c(n), s%m(n), s%pr(n), &
              s%fluid(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n), s%src(n), s%usign(n), &
-             s%src_slot(n))
+             s%src_slot(n), s%tr(n), s%wnx(n), s%wnz(n), s%wdb(n), s%wdf(n))
   end subroutine ensure
 
 end module sorted_state

@@ -20,7 +20,7 @@ module surface_tension_loops
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, copy_to_images
-  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID, SWEEP_KEEP, &
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
@@ -86,17 +86,23 @@ contains
   !> curvature in particle order in st%colour, st%st_nx, st%st_nz, st%kappa when those
   !> arrays are present (0 for boundary and inactive particles). s must hold the gathered
   !> state (gather_sorted). Nothing is done when sigma = 0 and no field array is present.
-  subroutine surface_tension_rates(prm, kern, st, s)
+  !> kept (default .false.): the pairs of the rates sweep at these positions are kept in s
+  !> (pair_sweep with SWEEP_KEEP, PAIRS_ANY_FLUID); the colour pass visits them instead of
+  !> finding the pairs and evaluating the kernel again.
+  subroutine surface_tension_rates(prm, kern, st, s, kept)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout) :: s
+    logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
     real(rp) :: w0, eps, kap, ax, az, wt, kin, kaz, depth
     real(rp), allocatable :: kappa(:), hoop(:)
     integer :: n, k, i
-    logical :: colour_delta, axi
+    logical :: colour_delta, axi, reuse
 
+    reuse = .false.
+    if (present(kept)) reuse = kept
     n = s%n
     if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
     allocate(wk%v(n), wk%c(n), wk%nx(n), wk%nz(n), wk%nhx(n), wk%nhz(n), wk%flag(n), &
@@ -122,13 +128,13 @@ contains
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
       wk%vmu = s%m(1:n) * axis_radius(s%x(1:n), prm%h) / s%rho(1:n)
     end if
-    call sweep(PASS_COLOUR, kern, s, wk, axi)
+    call sweep(PASS_COLOUR, kern, s, wk, reuse, axi)
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
     ! beyond the image band (sorted_state.f90); nothing to do without images
     if (s%n > s%n_real) call copy_to_images(s, wk%c, .false.)
 
     ! normal (eq 18), then filter and unit normal (eqs 20-21)
-    call sweep(PASS_NORMAL, kern, s, wk, axi)
+    call sweep(PASS_NORMAL, kern, s, wk, .true., axi)
     if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
       wk%gx = wk%gx - sign(1.0_rp, s%x(1:n)) * hoop
     end if
@@ -153,9 +159,9 @@ contains
 
     ! curvature (eq 23) and acceleration (eq 24)
     if (colour_delta) then
-      call sweep(PASS_CURVATURE, kern, s, wk, axi)
+      call sweep(PASS_CURVATURE, kern, s, wk, .true., axi)
     else
-      call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, axi)
+      call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, .true., axi)
       !$omp critical (csf_depth_cache)
       if (.not. depth_cached(kern%kind)) then
         call csf_depth_table(kern%kind, depth_cache(:, kern%kind))
@@ -186,6 +192,7 @@ contains
         if (colour_delta) then
           call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
         else
+          ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
           wt = merge(1.0_rp, 2.0_rp, axi) * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
           call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
         end if
@@ -228,22 +235,24 @@ contains
     ks = k / max(DEPTH_FACTOR_MIN, 1.0_rp - k * delta)
   end function depth_moved
 
-  !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal). The colour
-  !> pass finds the pairs and evaluates the kernel; the later passes visit what it kept.
-  subroutine sweep(pass, kern, s, wk, axi)
+  !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal): over the
+  !> kept pairs of the last SWEEP_KEEP with PAIRS_ANY_FLUID when kept (the rates sweep's, or
+  !> the colour pass's), else finding them and keeping them for the later passes. The
+  !> bodies skip the pairs with a boundary particle (pl%mixed; the lists hold no
+  !> boundary-boundary pair), so that they see the fluid pairs in the same order either way.
+  subroutine sweep(pass, kern, s, wk, kept, axi)
     integer, intent(in) :: pass
-    logical, intent(in) :: axi
     type(kernel_t), intent(in) :: kern
     type(sorted_t), intent(inout) :: s
     type(csf_work_t), intent(inout), target :: wk
+    logical, intent(in) :: kept, axi
     type(csf_body_t) :: body
     real(rp) :: red
     body%pass = pass
     body%axi = axi
     body%wk => wk
     red = 0.0_rp
-    call pair_sweep(s, kern, PAIRS_FLUID, body, red, &
-                    merge(SWEEP_KEEP, SWEEP_REUSE, pass == PASS_COLOUR))
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, red, merge(SWEEP_REUSE, SWEEP_KEEP, kept))
   end subroutine sweep
 
   !> The pairs of one row task for one CSF pass.
@@ -251,64 +260,120 @@ contains
     class(csf_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
-    integer :: k, a, b
-    real(rp) :: dx, dz, wab, f, gx, gz, da1, da2, db1, db2, gsum
-    associate (wk => self%wk, pass => self%pass)
-      do k = 1, pl%n
-        a = pl%a(k)
-        b = pl%b(k)
-        dx = pl%dx(k)
-        dz = pl%dz(k)
-        wab = pl%w(k)
-        f = pl%f(k)
-        select case (pass)
-        case (PASS_COLOUR)
-          wk%c(a) = wk%c(a) + wk%v(b) * wab
-          wk%c(b) = wk%c(b) + wk%v(a) * wab
-        case (PASS_NORMAL)
-          gx = f * dx
-          gz = f * dz
-          call csf_normal_pair(wk%v(a), wk%v(b), wk%c(a), wk%c(b), gx, gz, &
-                               da1, da2, db1, db2)
-          wk%nx(a) = wk%nx(a) + da1
-          wk%nz(a) = wk%nz(a) + da2
-          wk%nx(b) = wk%nx(b) + db1
-          wk%nz(b) = wk%nz(b) + db2
-          if (self%axi) then
-            gsum = wk%gi(a) + wk%gi(b)
-            wk%gx(a) = wk%gx(a) + wk%vmu(b) * gsum * gx
-            wk%gz(a) = wk%gz(a) + wk%vmu(b) * gsum * gz
-            wk%gx(b) = wk%gx(b) - wk%vmu(a) * gsum * gx
-            wk%gz(b) = wk%gz(b) - wk%vmu(a) * gsum * gz
-          else
-            wk%gx(a) = wk%gx(a) + wk%v(b) * gx
-            wk%gz(a) = wk%gz(a) + wk%v(b) * gz
-            wk%gx(b) = wk%gx(b) - wk%v(a) * gx
-            wk%gz(b) = wk%gz(b) - wk%v(a) * gz
-          end if
-        case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
-          if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
-          gx = f * dx
-          gz = f * dz
-          call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                  wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                  gx, gz, wab, da1, da2, db1, db2)
-          wk%num(a) = wk%num(a) + da1
-          wk%num(b) = wk%num(b) + db1
-          if (pass == PASS_CURVATURE) then   ! Shepard denominator of eq 23
-            wk%den(a) = wk%den(a) + da2
-            wk%den(b) = wk%den(b) + db2
-          else                               ! tangential denominator
-            call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                     wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                     dx, dz, f, da1, db1)
-            wk%tden(a) = wk%tden(a) + da1
-            wk%tden(b) = wk%tden(b) + db1
-          end if
-        end select
-      end do
+    associate (wk => self%wk)
+      select case (self%pass)
+      case (PASS_COLOUR)
+        call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
+      case (PASS_NORMAL)
+        call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
+                          wk%nx, wk%nz, wk%gx, wk%gz, .not. self%axi)
+        if (self%axi) call axis_delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, &
+                                            wk%vmu, wk%gi, wk%gx, wk%gz)
+      case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
+        call curvature_pairs(self%pass == PASS_CURVATURE, pl, wk)
+      end select
     end associate
     red = max(red, 0.0_rp)
   end subroutine csf_visit
+
+  !> Colour sums (eq 14) of the fluid pairs of a list.
+  pure subroutine colour_pairs(np, pa, pb, w, mixed, v, c)
+    integer, intent(in) :: np, pa(:), pb(:)
+    real(rp), intent(in) :: w(:), v(:)
+    logical, intent(in) :: mixed(:)
+    real(rp), intent(inout) :: c(:)
+    integer :: k, a, b
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      c(a) = c(a) + v(b) * w(k)
+      c(b) = c(b) + v(a) * w(k)
+    end do
+  end subroutine colour_pairs
+
+  !> Normal (eq 18) and, when delta, sum_b V_b grad_a W_ab of the fluid pairs of a list.
+  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, nx, nz, gxs, gzs, delta)
+    integer, intent(in) :: np, pa(:), pb(:)
+    real(rp), intent(in) :: dx(:), dz(:), f(:), v(:), c(:)
+    logical, intent(in) :: mixed(:), delta
+    real(rp), intent(inout) :: nx(:), nz(:), gxs(:), gzs(:)
+    integer :: k, a, b
+    real(rp) :: gx, gz, da1, da2, db1, db2
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      gx = f(k) * dx(k)
+      gz = f(k) * dz(k)
+      call csf_normal_pair(v(a), v(b), c(a), c(b), gx, gz, da1, da2, db1, db2)
+      nx(a) = nx(a) + da1
+      nz(a) = nz(a) + da2
+      nx(b) = nx(b) + db1
+      nz(b) = nz(b) + db2
+      if (.not. delta) cycle
+      gxs(a) = gxs(a) + v(b) * gx
+      gzs(a) = gzs(a) + v(b) * gz
+      gxs(b) = gxs(b) - v(a) * gx
+      gzs(b) = gzs(b) - v(a) * gz
+    end do
+  end subroutine normal_pairs
+
+  !> The axisymmetric free-surface delta's pair sums, sum_b (m_b/(2 pi rho_b)) (1/g_a + 1/g_b)
+  !> grad_a W_ab, of the fluid pairs of a list (vmu = m/(2 pi rho), gi = 1/g).
+  pure subroutine axis_delta_pairs(np, pa, pb, dx, dz, f, mixed, vmu, gi, gxs, gzs)
+    integer, intent(in) :: np, pa(:), pb(:)
+    real(rp), intent(in) :: dx(:), dz(:), f(:), vmu(:), gi(:)
+    logical, intent(in) :: mixed(:)
+    real(rp), intent(inout) :: gxs(:), gzs(:)
+    integer :: k, a, b
+    real(rp) :: gx, gz, gsum
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      gsum = (gi(a) + gi(b)) * f(k)
+      gx = gsum * dx(k)
+      gz = gsum * dz(k)
+      gxs(a) = gxs(a) + vmu(b) * gx
+      gzs(a) = gzs(a) + vmu(b) * gz
+      gxs(b) = gxs(b) - vmu(a) * gx
+      gzs(b) = gzs(b) - vmu(a) * gz
+    end do
+  end subroutine axis_delta_pairs
+
+  !> Curvature sums (eq 23: numerator and Shepard denominator when shepard, else numerator
+  !> and tangential denominator) of the fluid pairs of a list whose particles both pass the
+  !> filter.
+  subroutine curvature_pairs(shepard, pl, wk)
+    logical, intent(in) :: shepard
+    type(pair_list_t), intent(in) :: pl
+    type(csf_work_t), intent(inout) :: wk
+    integer :: k, a, b
+    real(rp) :: gx, gz, da1, da2, db1, db2
+    do k = 1, pl%n
+      if (pl%mixed(k)) cycle
+      a = pl%a(k)
+      b = pl%b(k)
+      if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
+      gx = pl%f(k) * pl%dx(k)
+      gz = pl%f(k) * pl%dz(k)
+      call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                              wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                              gx, gz, pl%w(k), da1, da2, db1, db2)
+      wk%num(a) = wk%num(a) + da1
+      wk%num(b) = wk%num(b) + db1
+      if (shepard) then   ! Shepard denominator of eq 23
+        wk%den(a) = wk%den(a) + da2
+        wk%den(b) = wk%den(b) + db2
+      else                ! tangential denominator
+        call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
+                                 wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
+                                 pl%dx(k), pl%dz(k), pl%f(k), da1, db1)
+        wk%tden(a) = wk%tden(a) + da1
+        wk%tden(b) = wk%tden(b) + db1
+      end if
+    end do
+  end subroutine curvature_pairs
 
 end module surface_tension_loops

@@ -14,8 +14,11 @@ contains
   pure function artificial_pi(alpha, h, cbar, rhobar, dot, r2, eta2) result(pv)
     real(rp), intent(in) :: alpha, h, cbar, rhobar, dot, r2, eta2
     real(rp) :: pv
-    ! a select, not a branch: the pair loops vectorise over it
-    pv = merge(-alpha * cbar * (h * dot / (r2 + eta2)) / rhobar, 0.0_rp, dot <= 0.0_rp)
+    ! a select of a value computed for every pair, not a branch: with the formula inside the
+    ! merge, gfortran loads cbar's and rhobar's operands only where dot <= 0, a masked
+    ! gather the vectoriser rejects, and the pair loops stayed scalar
+    pv = -alpha * cbar * (h * dot / (r2 + eta2)) / rhobar
+    pv = merge(pv, 0.0_rp, dot <= 0.0_rp)
   end function artificial_pi
 
   !> Factor L such that du_a/dt += m_b L u_ab (and du_b/dt -= m_a L u_ab); f = (dW/dr)/r.
