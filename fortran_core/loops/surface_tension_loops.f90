@@ -67,7 +67,8 @@ module surface_tension_loops
     real(rp), allocatable :: v(:), c(:), nx(:), nz(:), nhx(:), nhz(:), flag(:), num(:), den(:)
     real(rp), allocatable :: gx(:), gz(:)  !< sum_b V_b grad_a W_ab (free-surface delta)
     real(rp), allocatable :: tden(:)       !< tangential denominator (free-surface curvature)
-    !> axisymmetric: m / (2 pi rho) and 1/g, the weights of the pressure pair
+    !> the weights of the free-surface delta's pair sums (delta_pairs): 1/2 (planar), or
+    !> 1/g with m / (2 pi rho) for V (axisymmetric: the weights of its pressure pair)
     real(rp), allocatable :: vmu(:), gi(:)
   end type csf_work_t
 
@@ -127,6 +128,9 @@ contains
       allocate(wk%vmu(n), wk%gi(n), hoop(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
       wk%vmu = s%m(1:n) * axis_radius(s%x(1:n), prm%h) / s%rho(1:n)
+    else
+      allocate(wk%gi(n))
+      wk%gi = 0.5_rp
     end if
     call sweep(PASS_COLOUR, kern, s, wk, reuse, axi)
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
@@ -266,9 +270,14 @@ contains
         call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
       case (PASS_NORMAL)
         call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
-                          wk%nx, wk%nz, wk%gx, wk%gz, .not. self%axi)
-        if (self%axi) call axis_delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, &
-                                            wk%vmu, wk%gi, wk%gx, wk%gz)
+                          wk%nx, wk%nz)
+        if (self%axi) then
+          call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%gi, &
+                           wk%gx, wk%gz)
+        else
+          call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%gi, &
+                           wk%gx, wk%gz)
+        end if
       case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
         call curvature_pairs(self%pass == PASS_CURVATURE, pl, wk)
       end select
@@ -292,12 +301,12 @@ contains
     end do
   end subroutine colour_pairs
 
-  !> Normal (eq 18) and, when delta, sum_b V_b grad_a W_ab of the fluid pairs of a list.
-  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, nx, nz, gxs, gzs, delta)
+  !> Normal (eq 18) of the fluid pairs of a list.
+  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, nx, nz)
     integer, intent(in) :: np, pa(:), pb(:)
     real(rp), intent(in) :: dx(:), dz(:), f(:), v(:), c(:)
-    logical, intent(in) :: mixed(:), delta
-    real(rp), intent(inout) :: nx(:), nz(:), gxs(:), gzs(:)
+    logical, intent(in) :: mixed(:)
+    real(rp), intent(inout) :: nx(:), nz(:)
     integer :: k, a, b
     real(rp) :: gx, gz, da1, da2, db1, db2
     do k = 1, np
@@ -311,17 +320,13 @@ contains
       nz(a) = nz(a) + da2
       nx(b) = nx(b) + db1
       nz(b) = nz(b) + db2
-      if (.not. delta) cycle
-      gxs(a) = gxs(a) + v(b) * gx
-      gzs(a) = gzs(a) + v(b) * gz
-      gxs(b) = gxs(b) - v(a) * gx
-      gzs(b) = gzs(b) - v(a) * gz
     end do
   end subroutine normal_pairs
 
-  !> The axisymmetric free-surface delta's pair sums, sum_b (m_b/(2 pi rho_b)) (1/g_a + 1/g_b)
-  !> grad_a W_ab, of the fluid pairs of a list (vmu = m/(2 pi rho), gi = 1/g).
-  pure subroutine axis_delta_pairs(np, pa, pb, dx, dz, f, mixed, vmu, gi, gxs, gzs)
+  !> The free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab of the fluid pairs
+  !> of a list: planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller);
+  !> axisymmetric V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair).
+  pure subroutine delta_pairs(np, pa, pb, dx, dz, f, mixed, vmu, gi, gxs, gzs)
     integer, intent(in) :: np, pa(:), pb(:)
     real(rp), intent(in) :: dx(:), dz(:), f(:), vmu(:), gi(:)
     logical, intent(in) :: mixed(:)
@@ -340,7 +345,7 @@ contains
       gxs(b) = gxs(b) - vmu(a) * gx
       gzs(b) = gzs(b) - vmu(a) * gz
     end do
-  end subroutine axis_delta_pairs
+  end subroutine delta_pairs
 
   !> Curvature sums (eq 23: numerator and Shepard denominator when shepard, else numerator
   !> and tangential denominator) of the fluid pairs of a list whose particles both pass the
