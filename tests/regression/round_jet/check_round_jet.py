@@ -21,7 +21,11 @@ Checks, each with its reason:
   4. No particle crosses the axis (x >= 0 for every fluid particle in the last snapshot):
      the mirror images hold the axis.
   5. The jet is intact (nothing can break a jet without surface tension and gravity).
-Usage: check_round_jet.py SPHJET SOURCE_DIR WORK_DIR
+With --sigma the same start runs with the case's surface tension (sigma = 0.072 N/m): it must
+reach 12 ms (the density check stopped every such start within 2-7 ms before the axisymmetric
+pair was made energy-conserving, cases/axisymmetric/README.md) with checks 1, 2 and 4; the
+neck and the intact jet are not checked (the head pinches off by capillarity).
+Usage: check_round_jet.py SPHJET SOURCE_DIR WORK_DIR [--sigma]
 """
 import csv
 import math
@@ -44,11 +48,14 @@ def main():
     import h5py
     import numpy as np
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    with_sigma = "--sigma" in sys.argv[4:]
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     out = work / "run"
-    sets = ["nozzle.disturbance=0", "surface_tension.sigma=0", "nozzle.length_over_d0=14", "nozzle.z0=0.02", "domain.lz=0.0375",
+    sets = ["nozzle.disturbance=0", "nozzle.length_over_d0=14", "nozzle.z0=0.02", "domain.lz=0.0375",
             f"time.tmax={T_END}", "time.out=0.004", "breakup.check_every=0.0005"]
+    if not with_sigma:
+        sets.append("surface_tension.sigma=0")
     cmd = [str(sphjet), "run", str(src / "cases" / "round_jet" / "round_jet.toml"), "--out", str(out), "-j", "2", "-q"]
     for s in sets:
         cmd += ["--set", s]
@@ -71,10 +78,15 @@ def main():
           f"pi d0^2/4 u0 t = {vol:.4e} ({100 * (last['volume_out'] / vol - 1):+.2f}%, bound 2%)")
     if abs(last["volume_out"] / vol - 1) > 0.02:
         fails.append("volume out")
+    if last["time"] < T_END - 0.0005:
+        fails.append(f"stopped at {last['time']:.4f} s")
     neck = last["neck_r_over_d0"]
-    print(f"3. neck radius {neck:.3f} d0 at s = {last['neck_s_over_d0']:.2f} d0, tip "
-          f"{last['jet_tip_over_d0']:.2f} d0 (bounds 0.35-0.55 d0)")
-    if not (0.35 <= neck <= 0.55):
+    if with_sigma:
+        print(f"reached t = {last['time']:.4f} s (must reach {T_END} s); neck and intactness not checked")
+    else:
+        print(f"3. neck radius {neck:.3f} d0 at s = {last['neck_s_over_d0']:.2f} d0, tip "
+              f"{last['jet_tip_over_d0']:.2f} d0 (bounds 0.35-0.55 d0)")
+    if not with_sigma and not (0.35 <= neck <= 0.55):
         fails.append("neck radius")
     snaps = sorted(out.glob("snap_*.h5"))
     with h5py.File(snaps[-1], "r") as f:
@@ -84,9 +96,10 @@ def main():
     print(f"4. smallest x of the fluid in {snaps[-1].name}: {xmin:.3e} m (must be >= 0)")
     if xmin < 0:
         fails.append("axis crossed")
-    print(f"5. broken at the end: {int(last['broken'])} (must be 0)")
-    if last["broken"] != 0:
-        fails.append("broke early")
+    if not with_sigma:
+        print(f"5. broken at the end: {int(last['broken'])} (must be 0)")
+        if last["broken"] != 0:
+            fails.append("broke early")
     if fails:
         sys.exit("FAIL: " + ", ".join(fails))
     print("PASS")
