@@ -71,7 +71,7 @@ contains
     !$omp parallel do schedule(static) private(hx, hz)
     do k = 1, n
       if (s%grid%order(k) > n_state) cycle
-      s%ar(k) = (body%cont(k) - s%rho(k) * hoop(k) / gi(k) * s%u(k)) * gi(k)
+      s%ar(k) = body%cont(k) * gi(k) - s%rho(k) * hoop(k) * s%u(k)
       if (s%fluid(k)) then
         s%ax(k) = s%ax(k) + body%pax(k) + s%p(k) / s%rho(k) * hoop(k)
         s%az(k) = s%az(k) + body%paz(k)
@@ -86,8 +86,8 @@ contains
     !$omp end parallel do
   end subroutine axisymmetric_rates
 
-  !> The axis weights 1/g, the radial weight and the hoop factor of every x
-  !> (physics/axisymmetric.f90: axis_weights), from the kernel's tables (built once per kind).
+  !> The axis weights 1/g and g'/g of every x (physics/axisymmetric.f90: axis_weights), from
+  !> the kernel's tables (built once per kind).
   subroutine axis_weights_of(kern, x, gi, hoop)
     type(kernel_t), intent(in) :: kern
     real(rp), intent(in) :: x(:)
