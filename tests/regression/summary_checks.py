@@ -1,13 +1,32 @@
-"""What the SUMMARY-line regression scripts share (surface_tension/check_drop.py,
-axisymmetric/check_axi.py): run a case, read the line `SUMMARY key=value ...` that an analysis
-prints, and check its numbers against [LO, HI] ranges.
+"""What the regression scripts share: run a case, read the line `SUMMARY key=value ...` that
+an analysis prints, and check its numbers against [LO, HI] ranges (surface_tension/check_drop.py,
+axisymmetric/check_axi.py); and, for the scripts that read HDF5 themselves, getting an
+interpreter with numpy and h5py (with_h5py).
 
 Every function prints what it does; a failure prints `0 passed, N failed` and returns None or
 exit status 1, so that the caller's last line is always `N passed, M failed`."""
 import math
 import os
 import subprocess
+import sys
 import time
+
+
+def with_h5py(required=True):
+    """Makes sure numpy and h5py can be imported: they come with Debian's /usr/bin/python3
+    (tools/install_deps.sh), while ctest may start another interpreter, so the script is
+    started again under /usr/bin/python3 when they are missing. When that interpreter lacks
+    them too: exits with a FAIL line if required, else returns False (True when present)."""
+    try:
+        import h5py  # noqa: F401
+        import numpy  # noqa: F401
+        return True
+    except ImportError:
+        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
+        if required:
+            sys.exit("FAIL: numpy and h5py are needed (Debian python3-numpy, python3-h5py)")
+        return False
 
 
 def summary(text):

@@ -39,19 +39,16 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from summary_checks import with_h5py  # noqa: E402  (tests/regression/)
+
 N = 12
 SETS = ["--set", "resolution.dx=0.002", "--set", "time.out=0.0002"]
 STEPS = 30
 
 
 def main():
-    try:
-        import h5py  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
-        sys.exit("FAIL: numpy and h5py are needed (Debian python3-numpy, python3-h5py)")
+    with_h5py()
     import h5py
     import numpy as np
 

@@ -35,16 +35,14 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from summary_checks import with_h5py  # noqa: E402  (tests/regression/)
+
 D0, U0, T_END = 0.001194, 0.7814, 0.012
 
 
 def main():
-    try:
-        import h5py  # noqa: F401
-    except ImportError:
-        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
-        sys.exit("FAIL: h5py is needed (Debian python3-h5py)")
+    with_h5py()
     import h5py
     import numpy as np
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
