@@ -16,7 +16,7 @@ module axisymmetric_loops
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID
-  use axisymmetric, only: axis_radius, viscous_hoop, axis_weight_tables, axis_weights, &
+  use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
                           AXIS_TABLE_N
   implicit none
   private
@@ -57,7 +57,7 @@ contains
              body%dudr(n), body%dwdr(n), gi(n), hoop(n))
     call axis_weights_of(kern, s%x(1:n), gi, hoop)
     body%v = s%m(1:n) / s%rho(1:n)
-    body%mu = s%m(1:n) * axis_radius(s%x(1:n), prm%h)   ! m / (2 pi): s%m is m / (2 pi r)
+    body%mu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h)
     body%pg = s%pr(1:n) * gi
     body%cont = 0.0_rp
     body%pax = 0.0_rp

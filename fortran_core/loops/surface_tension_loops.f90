@@ -15,7 +15,7 @@
 !> towards them. Walls hold the fluid through the boundary scheme only.
 module surface_tension_loops
   use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC
-  use axisymmetric, only: azimuthal_curvature, axis_radius
+  use axisymmetric, only: azimuthal_curvature, mass_per_radian
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
@@ -127,7 +127,7 @@ contains
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
-      wk%vmu = s%m(1:n) * axis_radius(s%x(1:n), prm%h) / s%rho(1:n)
+      wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
     else
       allocate(wk%gi(n))
       wk%gi = 0.5_rp

@@ -32,7 +32,7 @@ module axisymmetric
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: axis_radius, planar_mass, viscous_hoop, azimuthal_curvature, &
+  public :: axis_radius, planar_mass, mass_per_radian, viscous_hoop, azimuthal_curvature, &
             R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N
 
   !> Smallest radius used in 1/r, in units of h.
@@ -56,6 +56,14 @@ contains
     real(rp) :: mp
     mp = m / (2.0_rp * pi * axis_radius(x, h))
   end function planar_mass
+
+  !> The ring mass per radian m / (2 pi) of a particle at x from its planar mass mp (the
+  !> inverse of planar_mass) [kg].
+  pure elemental function mass_per_radian(mp, x, h) result(mu)
+    real(rp), intent(in) :: mp, x, h
+    real(rp) :: mu
+    mu = mp * axis_radius(x, h)
+  end function mass_per_radian
 
   !> The hoop terms of the viscous acceleration, nu ((1/r) du_r/dr - u_r / r^2) (radial) and
   !> nu (1/r) du_z/dr (axial); dudr, dwdr the radial derivatives of u_r and u_z [1/s].
