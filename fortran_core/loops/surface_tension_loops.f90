@@ -13,9 +13,21 @@
 !> (no adhesion term). Counting boundary particles as liquid instead would make the outer
 !> faces of a thin nozzle wall look like a liquid surface and pull fluid inside the nozzle
 !> towards them. Walls hold the fluid through the boundary scheme only.
+!>
+!> Axisymmetric mode: where the free surface is (the filter of eq 20 and the surface weight)
+!> is decided by the gradient of a second colour, (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab, the
+!> Shepard sum of the mode's density (axisymmetric.f90), with its radial part damped within 2h
+!> of the axis (axis_detection_factor). The planar colour sum_b (m_b / rho_b) W_ab weighs each
+!> ring by its planar area m / (2 pi r rho), which changes by dr / r when a ring near the axis
+!> moves by dr: in a Rayleigh-Plateau cylinder at nu = 1e-5 that colour drifted to 0.89-1.43
+!> on the two rows next to the axis, flagged interior rings as surface with a curvature
+!> n_r / r ~ 1/h, and stopped the run there (cases/axisymmetric/README.md). The normal's
+!> direction, the curvature and the depth still come from the planar colour: with the second
+!> colour in those too, a sphere at rest held 0.63-0.94 of its Laplace pressure, since that
+!> colour is 6% high on the lattice row next to the axis, where a sphere's poles are.
 module surface_tension_loops
   use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC
-  use axisymmetric, only: azimuthal_curvature, mass_per_radian
+  use axisymmetric, only: azimuthal_curvature, mass_per_radian, axis_detection_factor
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
@@ -70,6 +82,9 @@ module surface_tension_loops
     !> the weights of the free-surface delta's pair sums (delta_pairs): 1/2 (planar), or
     !> 1/g with m / (2 pi rho) for V (axisymmetric: the weights of its pressure pair)
     real(rp), allocatable :: vmu(:), gi(:)
+    !> axisymmetric only: the colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab of the mode's
+    !> density and its gradient, which decide where the free surface is (see below)
+    real(rp), allocatable :: c2(:), n2x(:), n2z(:)
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -113,6 +128,15 @@ contains
     colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
     axi = prm%geometry == GEOM_AXISYMMETRIC
 
+    if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
+      allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
+      call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
+      wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
+    else
+      allocate(wk%gi(n))
+      wk%gi = 0.5_rp
+    end if
+
     ! colour (eq 14), self term included
     !$omp parallel do schedule(static)
     do k = 1, n
@@ -122,35 +146,47 @@ contains
       wk%nz(k) = 0.0_rp
       wk%gx(k) = 0.0_rp
       wk%gz(k) = 0.0_rp
+      if (axi) then
+        wk%c2(k) = merge(wk%vmu(k) * w0, 0.0_rp, s%fluid(k))
+        wk%n2x(k) = 0.0_rp
+        wk%n2z(k) = 0.0_rp
+      end if
     end do
     !$omp end parallel do
-    if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
-      allocate(wk%vmu(n), wk%gi(n), hoop(n))
-      call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
-      wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
-    else
-      allocate(wk%gi(n))
-      wk%gi = 0.5_rp
-    end if
     call sweep(PASS_COLOUR, kern, s, wk, reuse, axi)
+    if (axi) wk%c2 = wk%c2 * wk%gi
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
     ! beyond the image band (sorted_state.f90); nothing to do without images
-    if (s%n > s%n_real) call copy_to_images(s, wk%c, .false.)
+    if (s%n > s%n_real) then
+      call copy_to_images(s, wk%c, .false.)
+      if (axi) call copy_to_images(s, wk%c2, .false.)
+    end if
 
     ! normal (eq 18), then filter and unit normal (eqs 20-21)
     call sweep(PASS_NORMAL, kern, s, wk, .true., axi)
     if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
       wk%gx = wk%gx - sign(1.0_rp, s%x(1:n)) * hoop
+      wk%n2x = wk%n2x * wk%gi
+      wk%n2z = wk%n2z * wk%gi
     end if
     if (s%n > s%n_real) then
       call copy_to_images(s, wk%nx, .true.)
       call copy_to_images(s, wk%nz, .false.)
       call copy_to_images(s, wk%gx, .true.)
       call copy_to_images(s, wk%gz, .false.)
+      if (axi) then
+        call copy_to_images(s, wk%n2x, .true.)
+        call copy_to_images(s, wk%n2z, .false.)
+      end if
     end if
-    !$omp parallel do schedule(static)
+    !$omp parallel do schedule(static) private(wt)
     do k = 1, n
-      if (s%fluid(k)) then
+      if (s%fluid(k) .and. axi) then   ! filtered by n2, directed by n
+        call csf_unit_normal(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), wk%n2z(k), eps, &
+                             wk%nhx(k), wk%nhz(k), wk%flag(k))
+        if (wk%flag(k) > 0.0_rp) &
+          call csf_unit_normal(wk%nx(k), wk%nz(k), 0.0_rp, wk%nhx(k), wk%nhz(k), wt)
+      else if (s%fluid(k)) then
         call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
       else
         wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
@@ -197,7 +233,12 @@ contains
           call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
         else
           ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
-          wt = merge(1.0_rp, 2.0_rp, axi) * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+          if (axi) then
+            wt = csf_surface_weight(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), &
+                                    wk%n2z(k), prm%h)
+          else
+            wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+          end if
           call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
         end if
         s%ax(k) = s%ax(k) + ax
@@ -268,10 +309,13 @@ contains
       select case (self%pass)
       case (PASS_COLOUR)
         call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
+        if (self%axi) call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%vmu, wk%c2)
       case (PASS_NORMAL)
         call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
                           wk%nx, wk%nz)
         if (self%axi) then
+          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%c2, &
+                            wk%n2x, wk%n2z)
           call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%gi, &
                            wk%gx, wk%gz)
         else

@@ -33,7 +33,7 @@ module axisymmetric
   implicit none
   private
   public :: axis_radius, planar_mass, mass_per_radian, viscous_hoop, azimuthal_curvature, &
-            R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N
+            R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N, axis_detection_factor
 
   !> Smallest radius used in 1/r, in units of h.
   real(rp), parameter :: R_MIN_H = 0.25_rp
@@ -92,6 +92,20 @@ contains
       kaz = nr / h + (1.0_rp - r / h) * kin
     end if
   end function azimuthal_curvature
+
+  !> The factor min(1, |x| / (2h)) on the radial component of the colour gradient with which
+  !> the CSF decides where the free surface is (its filter and surface weight; the gradient is
+  !> that of the mode's own colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab, see
+  !> surface_tension_loops.f90). On the lattice that colour is 6% high on the row next to the
+  !> axis (the lattice sum of |x| W is not the integral g there), which gives interior rings a
+  !> radial gradient |n| h = 0.065, above the surface weight's ramp (0.025-0.075; the outer
+  !> rows have 0.12). The radial normal is odd in r and vanishes on the axis, so a surface that
+  !> meets the axis (a pole) has its normal along z and keeps its weight.
+  pure elemental function axis_detection_factor(x, h) result(f)
+    real(rp), intent(in) :: x, h
+    real(rp) :: f
+    f = min(1.0_rp, abs(x) / (2.0_rp * h))
+  end function axis_detection_factor
 
   !> The kernel's smoothed radius g(x) = int |x'| P(x - x') dx' (P(y) = int W(y, s) ds, the
   !> kernel's profile across a line): the meridian-plane SPH interpolant of |x| over a set
