@@ -138,6 +138,9 @@ contains
     end if
 
     n = s%n
+    if (.not. images) then
+      call gather_fields(n, s%grid%order, st, s)
+    else
     !$omp parallel do schedule(static) private(i, j)
     do k = 1, n
       i = s%grid%order(k)
@@ -170,6 +173,7 @@ contains
       s%xw(k) = 0.0_rp
     end do
     !$omp end parallel do
+    end if
     s%n_real = count(st%active(1:st%n) /= 0)
     if (images) then
       ! the slot of each image's source: multi-pass loops (CSF) copy the source's fields to
@@ -189,6 +193,51 @@ contains
     end if
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
+
+  !> The fields of the particles order(1:n) into slots 1..n of s (no image slots), one field
+  !> at a time: each loop's scattered reads then fall in one source array, small enough to
+  !> stay in the second-level cache, instead of ten at once. Same values as slot by slot.
+  subroutine gather_fields(n, order, st, s)
+    integer, intent(in) :: n, order(:)
+    type(state_t), intent(in) :: st
+    type(sorted_t), intent(inout) :: s
+    integer :: k
+    !$omp parallel
+    call permute(st%x, s%x)
+    call permute(st%z, s%z)
+    call permute(st%u, s%u)
+    call permute(st%w, s%w)
+    call permute(st%rho, s%rho)
+    call permute(st%p, s%p)
+    call permute(st%c, s%c)
+    call permute(st%m, s%m)
+    ! the same static schedule as the loops above: slot k is this thread's in all of them
+    !$omp do schedule(static)
+    do k = 1, n
+      s%pr(k) = s%p(k) / (s%rho(k) * s%rho(k))
+      s%fluid(k) = st%kind(order(k)) == KIND_FLUID
+      s%src(k) = order(k)
+      s%usign(k) = 1.0_rp
+      s%ax(k) = 0.0_rp
+      s%az(k) = 0.0_rp
+      s%ar(k) = 0.0_rp
+      s%xu(k) = 0.0_rp
+      s%xw(k) = 0.0_rp
+    end do
+    !$omp end do
+    !$omp end parallel
+  contains
+    subroutine permute(src, dst)
+      real(rp), intent(in) :: src(*)
+      real(rp), intent(inout) :: dst(*)
+      integer :: j
+      !$omp do schedule(static)
+      do j = 1, n
+        dst(j) = src(order(j))
+      end do
+      !$omp end do nowait
+    end subroutine permute
+  end subroutine gather_fields
 
   !> Whether the caller's build positions are usable: finite for every active particle.
   logical function listed_positions(st)
