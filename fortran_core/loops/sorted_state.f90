@@ -37,7 +37,7 @@ module sorted_state
   !$ use omp_lib, only: omp_get_max_threads
   implicit none
   private
-  public :: sorted_t, gather_sorted, copy_to_images, thread_lists, SKIN_PER_H
+  public :: sorted_t, gather_sorted, scatter_sorted, copy_to_images, thread_lists, SKIN_PER_H
 
   !> Skin of the neighbour list in units of h (cutoff 2h + skin). Case1 rebuilds every ~50
   !> steps with 0.3 h; 0.15 h ran at the same speed there (README, Performance).
@@ -238,6 +238,33 @@ contains
       !$omp end do nowait
     end subroutine permute
   end subroutine gather_fields
+
+  !> dst(i) = src(k) (times factor) for the real slots k of particle i = grid%order(k) <=
+  !> n_state; called by every thread of a parallel region, which it does not wait for
+  !> (nowait). One field per call, as gather_fields.
+  subroutine scatter_sorted(s, n_state, src, dst, factor)
+    type(sorted_t), intent(in) :: s
+    integer, intent(in) :: n_state
+    real(rp), intent(in) :: src(:)
+    real(rp), intent(inout) :: dst(:)
+    real(rp), intent(in), optional :: factor
+    integer :: k, i
+    if (present(factor)) then
+      !$omp do schedule(static)
+      do k = 1, s%n
+        i = s%grid%order(k)
+        if (i <= n_state) dst(i) = factor * src(k)
+      end do
+      !$omp end do nowait
+    else
+      !$omp do schedule(static)
+      do k = 1, s%n
+        i = s%grid%order(k)
+        if (i <= n_state) dst(i) = src(k)
+      end do
+      !$omp end do nowait
+    end if
+  end subroutine scatter_sorted
 
   !> Whether the caller's build positions are usable: finite for every active particle.
   logical function listed_positions(st)
