@@ -80,7 +80,7 @@ contains
     real(rp), intent(in) :: h
     type(sorted_t), intent(inout) :: s
     type(sph_params_t), intent(in), optional :: prm
-    integer :: k, i, n, j, nact
+    integer :: k, i, n, nact
     real(rp) :: skin, d2max
     logical :: valid, images, axi
     real(rp), allocatable :: xe(:), ze(:), sg(:)
@@ -138,42 +138,31 @@ contains
     end if
 
     n = s%n
-    if (.not. images) then
-      call gather_fields(n, s%grid%order, st, s)
-    else
-    !$omp parallel do schedule(static) private(i, j)
-    do k = 1, n
-      i = s%grid%order(k)
-      if (i <= st%n) then
-        s%x(k) = st%x(i)
-        s%z(k) = st%z(i)
-        s%u(k) = st%u(i)
-        s%src(k) = i
-        s%usign(k) = 1.0_rp
-      else  ! an image slot
-        j = isrc(i - st%n)
+    if (images) then
+      ! each slot's source particle, velocity sign and position (an image's is its own)
+      !$omp parallel do schedule(static) private(i)
+      do k = 1, n
+        i = s%grid%order(k)
         s%x(k) = xe(i)
         s%z(k) = ze(i)
-        s%u(k) = sg(i - st%n) * st%u(j)
-        s%src(k) = j
-        s%usign(k) = sg(i - st%n)
-        i = j
-      end if
-      s%w(k) = st%w(i)
-      s%rho(k) = st%rho(i)
-      s%p(k) = st%p(i)
-      s%c(k) = st%c(i)
-      s%m(k) = st%m(i)
-      s%pr(k) = st%p(i) / (st%rho(i) * st%rho(i))
-      s%fluid(k) = st%kind(i) == KIND_FLUID
-      s%ax(k) = 0.0_rp
-      s%az(k) = 0.0_rp
-      s%ar(k) = 0.0_rp
-      s%xu(k) = 0.0_rp
-      s%xw(k) = 0.0_rp
-    end do
-    !$omp end parallel do
+        if (i <= st%n) then
+          s%src(k) = i
+          s%usign(k) = 1.0_rp
+        else
+          s%src(k) = isrc(i - st%n)
+          s%usign(k) = sg(i - st%n)
+        end if
+      end do
+      !$omp end parallel do
+    else
+      !$omp parallel do schedule(static)
+      do k = 1, n
+        s%src(k) = s%grid%order(k)
+        s%usign(k) = 1.0_rp
+      end do
+      !$omp end parallel do
     end if
+    call gather_fields(n, st, s, images)
     s%n_real = count(st%active(1:st%n) /= 0)
     if (images) then
       ! the slot of each image's source: multi-pass loops (CSF) copy the source's fields to
@@ -194,17 +183,21 @@ contains
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
 
-  !> The fields of the particles order(1:n) into slots 1..n of s (no image slots), one field
-  !> at a time: each loop's scattered reads then fall in one source array, small enough to
-  !> stay in the second-level cache, instead of ten at once. Same values as slot by slot.
-  subroutine gather_fields(n, order, st, s)
-    integer, intent(in) :: n, order(:)
+  !> The fields of the source particles s%src(1:n) into slots 1..n of s (but x, z with
+  !> images: the caller's), an image's u times its sign, and zero sums. One field at a time:
+  !> each loop's scattered reads then fall in one source array, small enough to stay in the
+  !> second-level cache, instead of ten at once. Same values as slot by slot.
+  subroutine gather_fields(n, st, s, images)
+    integer, intent(in) :: n
     type(state_t), intent(in) :: st
     type(sorted_t), intent(inout) :: s
+    logical, intent(in) :: images
     integer :: k
     !$omp parallel
-    call permute(st%x, s%x)
-    call permute(st%z, s%z)
+    if (.not. images) then
+      call permute(st%x, s%x)
+      call permute(st%z, s%z)
+    end if
     call permute(st%u, s%u)
     call permute(st%w, s%w)
     call permute(st%rho, s%rho)
@@ -214,15 +207,10 @@ contains
     ! the same static schedule as the loops above: slot k is this thread's in all of them
     !$omp do schedule(static)
     do k = 1, n
+      if (images) s%u(k) = s%usign(k) * s%u(k)
       s%pr(k) = s%p(k) / (s%rho(k) * s%rho(k))
-      s%fluid(k) = st%kind(order(k)) == KIND_FLUID
-      s%src(k) = order(k)
-      s%usign(k) = 1.0_rp
-      s%ax(k) = 0.0_rp
-      s%az(k) = 0.0_rp
-      s%ar(k) = 0.0_rp
-      s%xu(k) = 0.0_rp
-      s%xw(k) = 0.0_rp
+      s%fluid(k) = st%kind(s%src(k)) == KIND_FLUID
+      call clear_sums(s, k)
     end do
     !$omp end do
     !$omp end parallel
@@ -233,11 +221,22 @@ contains
       integer :: j
       !$omp do schedule(static)
       do j = 1, n
-        dst(j) = src(order(j))
+        dst(j) = src(s%src(j))
       end do
       !$omp end do nowait
     end subroutine permute
   end subroutine gather_fields
+
+  !> Zero rate sums of slot k.
+  pure subroutine clear_sums(s, k)
+    type(sorted_t), intent(inout) :: s
+    integer, intent(in) :: k
+    s%ax(k) = 0.0_rp
+    s%az(k) = 0.0_rp
+    s%ar(k) = 0.0_rp
+    s%xu(k) = 0.0_rp
+    s%xw(k) = 0.0_rp
+  end subroutine clear_sums
 
   !> dst(i) = src(k) (times factor) for the real slots k of particle i = grid%order(k) <=
   !> n_state; called by every thread of a parallel region, which it does not wait for
