@@ -278,8 +278,12 @@ contains
           call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%gi, &
                            wk%gx, wk%gz)
         end if
-      case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
-        call curvature_pairs(self%pass == PASS_CURVATURE, pl, wk)
+      case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
+        call curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, wk%flag, &
+                             wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
+      case default            ! PASS_SURFACE_CURVATURE: numerator, tangential denominator
+        call surface_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
+                                     wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
       end select
     end associate
     red = max(red, 0.0_rp)
@@ -347,38 +351,53 @@ contains
     end do
   end subroutine delta_pairs
 
-  !> Curvature sums (eq 23: numerator and Shepard denominator when shepard, else numerator
-  !> and tangential denominator) of the fluid pairs of a list whose particles both pass the
-  !> filter.
-  subroutine curvature_pairs(shepard, pl, wk)
-    logical, intent(in) :: shepard
-    type(pair_list_t), intent(in) :: pl
-    type(csf_work_t), intent(inout) :: wk
+  !> Curvature sums of eq 23 (numerator, Shepard denominator) of the fluid pairs of a list
+  !> whose particles both pass the filter.
+  pure subroutine curvature_pairs(np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, num, den)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), w(*), flag(*), v(*), nhx(*), nhz(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: num(*), den(*)
     integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2
-    do k = 1, pl%n
-      if (pl%mixed(k)) cycle
-      a = pl%a(k)
-      b = pl%b(k)
-      if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
-      gx = pl%f(k) * pl%dx(k)
-      gz = pl%f(k) * pl%dz(k)
-      call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                              wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                              gx, gz, pl%w(k), da1, da2, db1, db2)
-      wk%num(a) = wk%num(a) + da1
-      wk%num(b) = wk%num(b) + db1
-      if (shepard) then   ! Shepard denominator of eq 23
-        wk%den(a) = wk%den(a) + da2
-        wk%den(b) = wk%den(b) + db2
-      else                ! tangential denominator
-        call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                 wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                 pl%dx(k), pl%dz(k), pl%f(k), da1, db1)
-        wk%tden(a) = wk%tden(a) + da1
-        wk%tden(b) = wk%tden(b) + db1
-      end if
+    real(rp) :: da1, da2, db1, db2
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      if (flag(a) == 0.0_rp .or. flag(b) == 0.0_rp) cycle
+      call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
+                              f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
+      num(a) = num(a) + da1
+      num(b) = num(b) + db1
+      den(a) = den(a) + da2
+      den(b) = den(b) + db2
     end do
   end subroutine curvature_pairs
+
+  !> The free-surface curvature's sums: eq 23's numerator and the tangential denominator
+  !> (csf_tangential_pair) of the fluid pairs of a list whose particles both pass the filter.
+  pure subroutine surface_curvature_pairs(np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, &
+                                          num, tden)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), w(*), flag(*), v(*), nhx(*), nhz(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: num(*), tden(*)
+    integer :: k, a, b
+    real(rp) :: da1, da2, db1, db2
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      if (flag(a) == 0.0_rp .or. flag(b) == 0.0_rp) cycle
+      call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
+                              f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
+      num(a) = num(a) + da1
+      num(b) = num(b) + db1
+      call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
+                               dx(k), dz(k), f(k), da1, db1)
+      tden(a) = tden(a) + da1
+      tden(b) = tden(b) + db1
+    end do
+  end subroutine surface_curvature_pairs
 
 end module surface_tension_loops
