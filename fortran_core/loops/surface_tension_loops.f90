@@ -269,14 +269,12 @@ contains
       case (PASS_COLOUR)
         call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
       case (PASS_NORMAL)
-        call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
-                          wk%nx, wk%nz)
         if (self%axi) then
-          call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%gi, &
-                           wk%gx, wk%gz)
+          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
+                            wk%vmu, wk%gi, wk%nx, wk%nz, wk%gx, wk%gz)
         else
-          call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%gi, &
-                           wk%gx, wk%gz)
+          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
+                            wk%v, wk%gi, wk%nx, wk%nz, wk%gx, wk%gz)
         end if
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, wk%flag, &
@@ -305,14 +303,17 @@ contains
     end do
   end subroutine colour_pairs
 
-  !> Normal (eq 18) of the fluid pairs of a list.
-  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, nx, nz)
-    integer, intent(in) :: np, pa(:), pb(:)
-    real(rp), intent(in) :: dx(:), dz(:), f(:), v(:), c(:)
-    logical, intent(in) :: mixed(:)
-    real(rp), intent(inout) :: nx(:), nz(:)
+  !> Normal (eq 18) and the free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab
+  !> of the fluid pairs of a list, in one loop (two independent sets of sums): for the
+  !> delta, planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller);
+  !> axisymmetric V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair).
+  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, nx, nz, gxs, gzs)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), v(*), c(*), vmu(*), gi(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: nx(*), nz(*), gxs(*), gzs(*)
     integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2
+    real(rp) :: gx, gz, da1, da2, db1, db2, gsum
     do k = 1, np
       if (mixed(k)) cycle
       a = pa(k)
@@ -324,23 +325,6 @@ contains
       nz(a) = nz(a) + da2
       nx(b) = nx(b) + db1
       nz(b) = nz(b) + db2
-    end do
-  end subroutine normal_pairs
-
-  !> The free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab of the fluid pairs
-  !> of a list: planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller);
-  !> axisymmetric V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair).
-  pure subroutine delta_pairs(np, pa, pb, dx, dz, f, mixed, vmu, gi, gxs, gzs)
-    integer, intent(in) :: np, pa(:), pb(:)
-    real(rp), intent(in) :: dx(:), dz(:), f(:), vmu(:), gi(:)
-    logical, intent(in) :: mixed(:)
-    real(rp), intent(inout) :: gxs(:), gzs(:)
-    integer :: k, a, b
-    real(rp) :: gx, gz, gsum
-    do k = 1, np
-      if (mixed(k)) cycle
-      a = pa(k)
-      b = pb(k)
       gsum = (gi(a) + gi(b)) * f(k)
       gx = gsum * dx(k)
       gz = gsum * dz(k)
@@ -349,7 +333,7 @@ contains
       gxs(b) = gxs(b) - vmu(a) * gx
       gzs(b) = gzs(b) - vmu(a) * gz
     end do
-  end subroutine delta_pairs
+  end subroutine normal_pairs
 
   !> Curvature sums of eq 23 (numerator, Shepard denominator) of the fluid pairs of a list
   !> whose particles both pass the filter.
