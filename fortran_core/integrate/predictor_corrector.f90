@@ -14,7 +14,7 @@ module predictor_corrector
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t
+  use sorted_state, only: sorted_t, one_thread
   use rates, only: compute_rates
   use time_step, only: cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
@@ -86,21 +86,7 @@ contains
     ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
     ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
     ! barrier costs a thread wake-up, a large share of a small case's step.
-    !$omp parallel do schedule(static)
-    do i = 1, n
-      st%xo(i) = st%x(i)
-      st%zo(i) = st%z(i)
-      st%uo(i) = st%u(i)
-      st%wo(i) = st%w(i)
-      st%rhoo(i) = st%rho(i)
-      if (i > nb) then
-        if (moving_fluid(st, i)) then
-          call half_step(prm, st, i, dt2)
-          call eos_one(prm, st, i)
-        end if
-      end if
-    end do
-    !$omp end parallel do
+    call in_team(1)
     dbc_now = .false.
     if (dbc) then
       info%dbc_counter = info%dbc_counter + 1
@@ -125,19 +111,7 @@ contains
     ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
     ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
     ! final density: the half step's p and c would be overwritten unread).
-    !$omp parallel do schedule(static)
-    do i = nb + 1, n
-      if (moving_fluid(st, i)) then
-        call half_step(prm, st, i, dt2)
-        st%rho(i) = 2.0_rp * st%rho(i) - st%rhoo(i)
-        st%x(i) = 2.0_rp * st%x(i) - st%xo(i)
-        st%z(i) = 2.0_rp * st%z(i) - st%zo(i)
-        st%u(i) = 2.0_rp * st%u(i) - st%uo(i)
-        st%w(i) = 2.0_rp * st%w(i) - st%wo(i)
-      end if
-      call eos_one(prm, st, i)
-    end do
-    !$omp end parallel do
+    call in_team(2)
     if (dbc_now) then
       do i = 1, nb
         st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
@@ -161,6 +135,57 @@ contains
     end if
     info%bad_cause = status
     if (status /= SPH_OK) return
+
+  contains
+
+    !> The predictor's (1) or corrector's (2) particle loop, in a parallel region unless one
+    !> thread is in use (sorted_state.f90: one_thread).
+    subroutine in_team(which)
+      integer, intent(in) :: which
+      if (one_thread()) then
+        call particle_loop(which)
+      else
+        !$omp parallel
+        call particle_loop(which)
+        !$omp end parallel
+      end if
+    end subroutine in_team
+
+    subroutine particle_loop(which)
+      integer, intent(in) :: which
+      integer :: j
+      if (which == 1) then
+        !$omp do schedule(static)
+        do j = 1, n
+          st%xo(j) = st%x(j)
+          st%zo(j) = st%z(j)
+          st%uo(j) = st%u(j)
+          st%wo(j) = st%w(j)
+          st%rhoo(j) = st%rho(j)
+          if (j > nb) then
+            if (moving_fluid(st, j)) then
+              call half_step(prm, st, j, dt2)
+              call eos_one(prm, st, j)
+            end if
+          end if
+        end do
+        !$omp end do
+      else
+        !$omp do schedule(static)
+        do j = nb + 1, n
+          if (moving_fluid(st, j)) then
+            call half_step(prm, st, j, dt2)
+            st%rho(j) = 2.0_rp * st%rho(j) - st%rhoo(j)
+            st%x(j) = 2.0_rp * st%x(j) - st%xo(j)
+            st%z(j) = 2.0_rp * st%z(j) - st%zo(j)
+            st%u(j) = 2.0_rp * st%u(j) - st%uo(j)
+            st%w(j) = 2.0_rp * st%w(j) - st%wo(j)
+          end if
+          call eos_one(prm, st, j)
+        end do
+        !$omp end do
+      end if
+    end subroutine particle_loop
   end subroutine pc_step
 
   !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'

@@ -37,7 +37,8 @@ module sorted_state
   !$ use omp_lib, only: omp_get_max_threads
   implicit none
   private
-  public :: sorted_t, gather_sorted, scatter_sorted, copy_to_images, thread_lists, SKIN_PER_H
+  public :: sorted_t, gather_sorted, scatter_rates, copy_to_images, thread_lists, one_thread, &
+            SKIN_PER_H
 
   !> Skin of the neighbour list in units of h (cutoff 2h + skin). Case1 rebuilds every ~50
   !> steps with 0.3 h; 0.15 h ran at the same speed there (README, Performance).
@@ -119,13 +120,13 @@ contains
       if (valid) then
         nact = 0
         d2max = 0.0_rp
-        !$omp parallel do schedule(static) reduction(+:nact) reduction(max:d2max)
-        do i = 1, st%n
-          if (st%active(i) == 0) cycle
-          nact = nact + 1
-          d2max = max(d2max, (st%x(i) - s%xb(i))**2 + (st%z(i) - s%zb(i))**2)
-        end do
-        !$omp end parallel do
+        if (one_thread()) then
+          call count_moves(nact, d2max)
+        else
+          !$omp parallel
+          call count_moves(nact, d2max)
+          !$omp end parallel
+        end if
         valid = nact == s%n_active .and. d2max <= (0.5_rp * skin)**2
       end if
       if (.not. valid) then
@@ -154,13 +155,6 @@ contains
         end if
       end do
       !$omp end parallel do
-    else
-      !$omp parallel do schedule(static)
-      do k = 1, n
-        s%src(k) = s%grid%order(k)
-        s%usign(k) = 1.0_rp
-      end do
-      !$omp end parallel do
     end if
     call gather_fields(n, st, s, images)
     s%n_real = count(st%active(1:st%n) /= 0)
@@ -181,6 +175,22 @@ contains
       end do
     end if
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
+
+  contains
+
+    !> Active particles and their largest squared move since the build (a worksharing loop).
+    subroutine count_moves(na, d2)
+      integer, intent(inout) :: na
+      real(rp), intent(inout) :: d2
+      integer :: j
+      !$omp do schedule(static) reduction(+:na) reduction(max:d2)
+      do j = 1, st%n
+        if (st%active(j) == 0) cycle
+        na = na + 1
+        d2 = max(d2, (st%x(j) - s%xb(j))**2 + (st%z(j) - s%zb(j))**2)
+      end do
+      !$omp end do
+    end subroutine count_moves
   end subroutine gather_sorted
 
   !> The fields of the source particles s%src(1:n) into slots 1..n of s (but x, z with
@@ -192,9 +202,23 @@ contains
     type(state_t), intent(in) :: st
     type(sorted_t), intent(inout) :: s
     logical, intent(in) :: images
+    if (one_thread()) then
+      call gather_all()
+    else
+      !$omp parallel
+      call gather_all()
+      !$omp end parallel
+    end if
+  contains
+    subroutine gather_all()
     integer :: k
-    !$omp parallel
-    if (.not. images) then
+    if (.not. images) then   ! the slot's particle (same static schedule as the loops below)
+      !$omp do schedule(static)
+      do k = 1, n
+        s%src(k) = s%grid%order(k)
+        s%usign(k) = 1.0_rp
+      end do
+      !$omp end do nowait
       call permute(st%x, s%x)
       call permute(st%z, s%z)
     end if
@@ -213,8 +237,8 @@ contains
       call clear_sums(s, k)
     end do
     !$omp end do
-    !$omp end parallel
-  contains
+    end subroutine gather_all
+
     subroutine permute(src, dst)
       real(rp), intent(in) :: src(*)
       real(rp), intent(inout) :: dst(*)
@@ -237,6 +261,43 @@ contains
     s%xu(k) = 0.0_rp
     s%xw(k) = 0.0_rp
   end subroutine clear_sums
+
+  !> The accumulated rates of the sorted slots back to particle order: st%ax, az, ar and
+  !> xsph_eps times the XSPH sums; inactive particles get zero rates. One field per loop (as
+  !> gather_fields). The sorted slots are exactly the active particles, so the loops write
+  !> disjoint entries and need no barrier between them (nowait). Image slots are not
+  !> scattered: their sums are discarded.
+  subroutine scatter_rates(s, st, xsph_eps)
+    type(sorted_t), intent(in) :: s
+    type(state_t), intent(inout) :: st
+    real(rp), intent(in) :: xsph_eps
+    if (one_thread()) then
+      call scatter_all()
+    else
+      !$omp parallel
+      call scatter_all()
+      !$omp end parallel
+    end if
+  contains
+    subroutine scatter_all()
+      integer :: i
+      call scatter_sorted(s, st%n, s%ax, st%ax)
+      call scatter_sorted(s, st%n, s%az, st%az)
+      call scatter_sorted(s, st%n, s%ar, st%ar)
+      call scatter_sorted(s, st%n, s%xu, st%xsph_u, xsph_eps)
+      call scatter_sorted(s, st%n, s%xw, st%xsph_w, xsph_eps)
+      !$omp do schedule(static)
+      do i = 1, st%n
+        if (st%active(i) /= 0) cycle
+        st%ax(i) = 0.0_rp
+        st%az(i) = 0.0_rp
+        st%ar(i) = 0.0_rp
+        st%xsph_u(i) = 0.0_rp
+        st%xsph_w(i) = 0.0_rp
+      end do
+      !$omp end do
+    end subroutine scatter_all
+  end subroutine scatter_rates
 
   !> dst(i) = src(k) (times factor) for the real slots k of particle i = grid%order(k) <=
   !> n_state; called by every thread of a parallel region, which it does not wait for
@@ -316,6 +377,15 @@ contains
     call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), cut * cut, s%all_pairs, &
                            s%lists, s%rows)
   end subroutine build
+
+  !> Whether the next parallel regions would have one thread. Then the loops run without a
+  !> region (their orphaned worksharing constructs serially): with libgomp every barrier, and
+  !> so every region, costs a futex system call even for a team of one, and a small case's
+  !> step has dozens of them.
+  logical function one_thread()
+    one_thread = .true.
+    !$ one_thread = omp_get_max_threads() == 1
+  end function one_thread
 
   !> One pair list per thread (at least omp_get_max_threads()), kept in the work space from
   !> sweep to sweep.

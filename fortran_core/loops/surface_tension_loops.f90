@@ -19,7 +19,7 @@ module surface_tension_loops
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, copy_to_images
+  use sorted_state, only: sorted_t, copy_to_images, one_thread
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
@@ -97,7 +97,7 @@ contains
     type(sorted_t), intent(inout) :: s
     logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
-    real(rp) :: w0, eps, kap, ax, az, wt, kin, kaz, depth
+    real(rp) :: w0, eps
     real(rp), allocatable :: kappa(:), hoop(:)
     integer :: n, k, i
     logical :: colour_delta, axi, reuse
@@ -114,16 +114,7 @@ contains
     axi = prm%geometry == GEOM_AXISYMMETRIC
 
     ! colour (eq 14), self term included
-    !$omp parallel do schedule(static)
-    do k = 1, n
-      wk%v(k) = s%m(k) / s%rho(k)
-      wk%c(k) = merge(wk%v(k) * w0, 0.0_rp, s%fluid(k))
-      wk%nx(k) = 0.0_rp
-      wk%nz(k) = 0.0_rp
-      wk%gx(k) = 0.0_rp
-      wk%gz(k) = 0.0_rp
-    end do
-    !$omp end parallel do
+    call in_team(1)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
@@ -148,18 +139,7 @@ contains
       call copy_to_images(s, wk%gx, .true.)
       call copy_to_images(s, wk%gz, .false.)
     end if
-    !$omp parallel do schedule(static)
-    do k = 1, n
-      if (s%fluid(k)) then
-        call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
-      else
-        wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
-      end if
-      wk%num(k) = 0.0_rp
-      wk%den(k) = wk%flag(k) * wk%v(k) * w0   ! self term of the denominator of eq 23
-      wk%tden(k) = 0.0_rp                       ! no self term: (r_a - r_a) = 0
-    end do
-    !$omp end parallel do
+    call in_team(2)
 
     ! curvature (eq 23) and acceleration (eq 24)
     if (colour_delta) then
@@ -173,38 +153,7 @@ contains
       end if
       !$omp end critical (csf_depth_cache)
     end if
-    !$omp parallel do schedule(static) private(kap, ax, az, wt, kin, kaz, depth)
-    do k = 1, n
-      if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
-        if (colour_delta) then
-          kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
-          kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
-        else   ! each moved from the particle's row to the surface by k / (1 - k delta)
-          kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
-          kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
-          depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h)
-          kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
-        end if
-      else if (colour_delta) then   ! eq 23 as printed
-        kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
-      else                     ! free-surface curvature (physics/surface_tension.f90)
-        kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
-                                    csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
-      end if
-      kappa(k) = kap
-      if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
-        if (colour_delta) then
-          call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
-        else
-          ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
-          wt = merge(1.0_rp, 2.0_rp, axi) * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
-          call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
-        end if
-        s%ax(k) = s%ax(k) + ax
-        s%az(k) = s%az(k) + az
-      end if
-    end do
-    !$omp end parallel do
+    call in_team(3)
 
     ! fields in particle order
     if (associated(st%colour) .and. associated(st%st_nx) .and. associated(st%st_nz) &
@@ -228,6 +177,87 @@ contains
       end do
       !$omp end parallel do
     end if
+
+  contains
+
+    !> Per-particle loop `which` (1: colour self terms and zero sums, 2: filter and unit
+    !> normal, 3: curvature and acceleration), in a parallel region unless one thread is in
+    !> use (sorted_state.f90: one_thread).
+    subroutine in_team(which)
+      integer, intent(in) :: which
+      if (one_thread()) then
+        call particle_loop(which)
+      else
+        !$omp parallel
+        call particle_loop(which)
+        !$omp end parallel
+      end if
+    end subroutine in_team
+
+    subroutine particle_loop(which)
+      integer, intent(in) :: which
+      integer :: k
+      real(rp) :: kap, ax, az, wt, kin, kaz, depth
+      select case (which)
+      case (1)
+        !$omp do schedule(static)
+        do k = 1, n
+          wk%v(k) = s%m(k) / s%rho(k)
+          wk%c(k) = merge(wk%v(k) * w0, 0.0_rp, s%fluid(k))
+          wk%nx(k) = 0.0_rp
+          wk%nz(k) = 0.0_rp
+          wk%gx(k) = 0.0_rp
+          wk%gz(k) = 0.0_rp
+        end do
+        !$omp end do
+      case (2)
+        !$omp do schedule(static)
+        do k = 1, n
+          if (s%fluid(k)) then
+            call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
+          else
+            wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
+          end if
+          wk%num(k) = 0.0_rp
+          wk%den(k) = wk%flag(k) * wk%v(k) * w0   ! self term of the denominator of eq 23
+          wk%tden(k) = 0.0_rp                       ! no self term: (r_a - r_a) = 0
+        end do
+        !$omp end do
+      case default
+        !$omp do schedule(static)
+        do k = 1, n
+          if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
+            if (colour_delta) then
+              kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+              kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+            else   ! each moved from the particle's row to the surface by k / (1 - k delta)
+              kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
+              kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+              depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h)
+              kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
+            end if
+          else if (colour_delta) then   ! eq 23 as printed
+            kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+          else                     ! free-surface curvature (physics/surface_tension.f90)
+            kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
+                                        csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
+          end if
+          kappa(k) = kap
+          if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
+            if (colour_delta) then
+              call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
+            else
+              ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
+              wt = merge(1.0_rp, 2.0_rp, axi) * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+              call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
+            end if
+            s%ax(k) = s%ax(k) + ax
+            s%az(k) = s%az(k) + az
+          end if
+        end do
+        !$omp end do
+      end select
+    end subroutine particle_loop
   end subroutine surface_tension_rates
 
   !> A principal curvature k of a particle's row moved to the surface at depth delta:
