@@ -14,7 +14,7 @@ module predictor_corrector
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t, one_thread
+  use sorted_state, only: sorted_t, team_work_t, in_team
   use rates, only: compute_rates
   use time_step, only: cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
@@ -23,6 +23,16 @@ module predictor_corrector
   implicit none
   private
   public :: pc_step, update_eos
+
+  !> The particle loops of a step (in_team): which = PREDICT or CORRECT.
+  integer, parameter :: PREDICT = 1, CORRECT = 2
+  type, extends(team_work_t) :: step_work_t
+    type(sph_params_t) :: prm
+    type(state_t), pointer :: st => null()
+    real(rp) :: dt2 = 0.0_rp
+  contains
+    procedure :: run => step_loops
+  end type step_work_t
 
 contains
 
@@ -58,18 +68,22 @@ contains
   subroutine pc_step(prm, kern, st, s, info, status)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
-    type(state_t), intent(inout) :: st
+    type(state_t), intent(inout), target :: st
     type(sorted_t), intent(inout) :: s
     type(sph_step_info_t), intent(inout) :: info
     integer(ip), intent(out) :: status
     real(rp) :: dt, dt2, vmax, dt_p, dt_c, dtf, dtcv, vgate
     logical :: dbc, dbc_now
+    type(step_work_t) :: work
     integer :: i, nb, n
 
     n = st%n
     nb = st%nb
     dt = info%dt
     dt2 = 0.5_rp * dt
+    work%prm = prm
+    work%st => st
+    work%dt2 = dt2
     dbc = prm%boundary == BC_DYNAMIC
     vmax = 0.0_rp
     dt_p = dt
@@ -86,7 +100,7 @@ contains
     ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
     ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
     ! barrier costs a thread wake-up, a large share of a small case's step.
-    call in_team(1)
+    call in_team(work, PREDICT)
     dbc_now = .false.
     if (dbc) then
       info%dbc_counter = info%dbc_counter + 1
@@ -111,7 +125,7 @@ contains
     ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
     ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
     ! final density: the half step's p and c would be overwritten unread).
-    call in_team(2)
+    call in_team(work, CORRECT)
     if (dbc_now) then
       do i = 1, nb
         st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
@@ -136,33 +150,25 @@ contains
     info%bad_cause = status
     if (status /= SPH_OK) return
 
-  contains
+  end subroutine pc_step
 
-    !> The predictor's (1) or corrector's (2) particle loop, in a parallel region unless one
-    !> thread is in use (sorted_state.f90: one_thread).
-    subroutine in_team(which)
-      integer, intent(in) :: which
-      if (one_thread()) then
-        call particle_loop(which)
-      else
-        !$omp parallel
-        call particle_loop(which)
-        !$omp end parallel
-      end if
-    end subroutine in_team
-
-    subroutine particle_loop(which)
-      integer, intent(in) :: which
-      integer :: j
-      if (which == 1) then
+  !> The predictor's loop (start-of-step values kept, the fluid's half step and EoS) or the
+  !> corrector's (half step, extrapolation, EoS of every non-boundary particle): orphaned
+  !> worksharing loops.
+  subroutine step_loops(self, which)
+    class(step_work_t), intent(inout) :: self
+    integer, intent(in) :: which
+    integer :: j
+    associate (prm => self%prm, st => self%st, dt2 => self%dt2)
+      if (which == PREDICT) then
         !$omp do schedule(static)
-        do j = 1, n
+        do j = 1, st%n
           st%xo(j) = st%x(j)
           st%zo(j) = st%z(j)
           st%uo(j) = st%u(j)
           st%wo(j) = st%w(j)
           st%rhoo(j) = st%rho(j)
-          if (j > nb) then
+          if (j > st%nb) then
             if (moving_fluid(st, j)) then
               call half_step(prm, st, j, dt2)
               call eos_one(prm, st, j)
@@ -172,7 +178,7 @@ contains
         !$omp end do
       else
         !$omp do schedule(static)
-        do j = nb + 1, n
+        do j = st%nb + 1, st%n
           if (moving_fluid(st, j)) then
             call half_step(prm, st, j, dt2)
             st%rho(j) = 2.0_rp * st%rho(j) - st%rhoo(j)
@@ -185,8 +191,8 @@ contains
         end do
         !$omp end do
       end if
-    end subroutine particle_loop
-  end subroutine pc_step
+    end associate
+  end subroutine step_loops
 
   !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'
   !> movingGate does: from t >= gate_t_start (t = this step's start, sphjet's clock) by

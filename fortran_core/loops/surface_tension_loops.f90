@@ -19,7 +19,7 @@ module surface_tension_loops
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, copy_to_images, one_thread
+  use sorted_state, only: sorted_t, copy_to_images, team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
@@ -81,6 +81,22 @@ module surface_tension_loops
     procedure :: visit => csf_visit
   end type csf_body_t
 
+  !> The per-particle loops between the passes (in_team): which = SELF_TERMS (colour self
+  !> terms, zero sums), UNIT_NORMAL (filter and unit normal) or FORCE (curvature and
+  !> acceleration).
+  integer, parameter :: SELF_TERMS = 1, UNIT_NORMAL = 2, FORCE = 3
+  type, extends(team_work_t) :: csf_loops_t
+    type(sph_params_t) :: prm
+    type(kernel_t) :: kern
+    type(sorted_t), pointer :: s => null()
+    type(csf_work_t), pointer :: wk => null()
+    real(rp), pointer :: kappa(:) => null()
+    real(rp) :: w0 = 0.0_rp, eps = 0.0_rp
+    logical :: colour_delta = .false., axi = .false.
+  contains
+    procedure :: run => csf_particle_loops
+  end type csf_loops_t
+
 contains
 
   !> Adds a_s (sorted order) to s%ax, s%az and stores colour, normal n (unnormalised) and
@@ -94,11 +110,13 @@ contains
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
-    type(sorted_t), intent(inout) :: s
+    type(sorted_t), intent(inout), target :: s
     logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
     real(rp) :: w0, eps
-    real(rp), allocatable :: kappa(:), hoop(:)
+    real(rp), allocatable, target :: kappa(:)
+    real(rp), allocatable :: hoop(:)
+    type(csf_loops_t) :: loops
     integer :: n, k, i
     logical :: colour_delta, axi, reuse
 
@@ -112,9 +130,11 @@ contains
     eps = csf_threshold(prm%h)
     colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
     axi = prm%geometry == GEOM_AXISYMMETRIC
+    loops = csf_loops_t(prm=prm, kern=kern, s=s, wk=wk, kappa=kappa, w0=w0, eps=eps, &
+                        colour_delta=colour_delta, axi=axi)
 
     ! colour (eq 14), self term included
-    call in_team(1)
+    call in_team(loops, SELF_TERMS)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
@@ -139,7 +159,7 @@ contains
       call copy_to_images(s, wk%gx, .true.)
       call copy_to_images(s, wk%gz, .false.)
     end if
-    call in_team(2)
+    call in_team(loops, UNIT_NORMAL)
 
     ! curvature (eq 23) and acceleration (eq 24)
     if (colour_delta) then
@@ -153,7 +173,7 @@ contains
       end if
       !$omp end critical (csf_depth_cache)
     end if
-    call in_team(3)
+    call in_team(loops, FORCE)
 
     ! fields in particle order
     if (associated(st%colour) .and. associated(st%st_nx) .and. associated(st%st_nz) &
@@ -178,28 +198,19 @@ contains
       !$omp end parallel do
     end if
 
-  contains
+  end subroutine surface_tension_rates
 
-    !> Per-particle loop `which` (1: colour self terms and zero sums, 2: filter and unit
-    !> normal, 3: curvature and acceleration), in a parallel region unless one thread is in
-    !> use (sorted_state.f90: one_thread).
-    subroutine in_team(which)
-      integer, intent(in) :: which
-      if (one_thread()) then
-        call particle_loop(which)
-      else
-        !$omp parallel
-        call particle_loop(which)
-        !$omp end parallel
-      end if
-    end subroutine in_team
-
-    subroutine particle_loop(which)
-      integer, intent(in) :: which
-      integer :: k
-      real(rp) :: kap, ax, az, wt, kin, kaz, depth
+  subroutine csf_particle_loops(self, which)
+    class(csf_loops_t), intent(inout) :: self
+    integer, intent(in) :: which
+    integer :: k, n
+    real(rp) :: kap, ax, az, wt, kin, kaz, depth
+    n = self%s%n
+    associate (prm => self%prm, kern => self%kern, s => self%s, wk => self%wk, &
+               kappa => self%kappa, w0 => self%w0, eps => self%eps, axi => self%axi, &
+               colour_delta => self%colour_delta)
       select case (which)
-      case (1)
+      case (SELF_TERMS)
         !$omp do schedule(static)
         do k = 1, n
           wk%v(k) = s%m(k) / s%rho(k)
@@ -210,7 +221,7 @@ contains
           wk%gz(k) = 0.0_rp
         end do
         !$omp end do
-      case (2)
+      case (UNIT_NORMAL)
         !$omp do schedule(static)
         do k = 1, n
           if (s%fluid(k)) then
@@ -223,7 +234,7 @@ contains
           wk%tden(k) = 0.0_rp                       ! no self term: (r_a - r_a) = 0
         end do
         !$omp end do
-      case default
+      case default   ! FORCE
         !$omp do schedule(static)
         do k = 1, n
           if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
@@ -257,8 +268,8 @@ contains
         end do
         !$omp end do
       end select
-    end subroutine particle_loop
-  end subroutine surface_tension_rates
+    end associate
+  end subroutine csf_particle_loops
 
   !> A principal curvature k of a particle's row moved to the surface at depth delta:
   !> k / (1 - k delta), the factor kept >= DEPTH_FACTOR_MIN as in csf_surface_curvature (whose tangential
