@@ -318,11 +318,11 @@ contains
                             wk%v, wk%gi, wk%nx, wk%nz, wk%gx, wk%gz)
         end if
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
-        call curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, wk%flag, &
-                             wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
+        call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
+                             wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
       case default            ! PASS_SURFACE_CURVATURE: numerator, tangential denominator
-        call surface_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
-                                     wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
+        call curvature_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
+                             wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
       end select
     end associate
     red = max(red, 0.0_rp)
@@ -376,9 +376,13 @@ contains
     end do
   end subroutine normal_pairs
 
-  !> Curvature sums of eq 23 (numerator, Shepard denominator) of the fluid pairs of a list
-  !> whose particles both pass the filter.
-  pure subroutine curvature_pairs(np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, num, den)
+  !> Curvature sums of the fluid pairs of a list whose particles both pass the filter: eq
+  !> 23's numerator (num) and, into den, its Shepard denominator when shepard, else the
+  !> tangential denominator of the free-surface curvature (csf_tangential_pair). Plain arrays,
+  !> so that the loop keeps their addresses in registers.
+  pure subroutine curvature_pairs(shepard, np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, &
+                                  num, den)
+    logical, intent(in) :: shepard
     integer, intent(in) :: np, pa(*), pb(*)
     real(rp), intent(in) :: dx(*), dz(*), f(*), w(*), flag(*), v(*), nhx(*), nhz(*)
     logical, intent(in) :: mixed(*)
@@ -394,35 +398,12 @@ contains
                               f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
       num(a) = num(a) + da1
       num(b) = num(b) + db1
+      if (.not. shepard) call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), &
+                                                  nhz(a), nhx(b), nhz(b), dx(k), dz(k), f(k), &
+                                                  da2, db2)
       den(a) = den(a) + da2
       den(b) = den(b) + db2
     end do
   end subroutine curvature_pairs
-
-  !> The free-surface curvature's sums: eq 23's numerator and the tangential denominator
-  !> (csf_tangential_pair) of the fluid pairs of a list whose particles both pass the filter.
-  pure subroutine surface_curvature_pairs(np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, &
-                                          num, tden)
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), f(*), w(*), flag(*), v(*), nhx(*), nhz(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: num(*), tden(*)
-    integer :: k, a, b
-    real(rp) :: da1, da2, db1, db2
-    do k = 1, np
-      if (mixed(k)) cycle
-      a = pa(k)
-      b = pb(k)
-      if (flag(a) == 0.0_rp .or. flag(b) == 0.0_rp) cycle
-      call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
-                              f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
-      num(a) = num(a) + da1
-      num(b) = num(b) + db1
-      call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
-                               dx(k), dz(k), f(k), da1, db1)
-      tden(a) = tden(a) + da1
-      tden(b) = tden(b) + db1
-    end do
-  end subroutine surface_curvature_pairs
 
 end module surface_tension_loops
