@@ -14,7 +14,7 @@ module predictor_corrector
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t
+  use sorted_state, only: sorted_t, team_work_t, in_team
   use rates, only: compute_rates
   use time_step, only: cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
@@ -23,6 +23,16 @@ module predictor_corrector
   implicit none
   private
   public :: pc_step, update_eos
+
+  !> The particle loops of a step (in_team): which = PREDICT or CORRECT.
+  integer, parameter :: PREDICT = 1, CORRECT = 2
+  type, extends(team_work_t) :: step_work_t
+    type(sph_params_t) :: prm
+    type(state_t), pointer :: st => null()
+    real(rp) :: dt2 = 0.0_rp
+  contains
+    procedure :: run => step_loops
+  end type step_work_t
 
 contains
 
@@ -58,18 +68,22 @@ contains
   subroutine pc_step(prm, kern, st, s, info, status)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
-    type(state_t), intent(inout) :: st
+    type(state_t), intent(inout), target :: st
     type(sorted_t), intent(inout) :: s
     type(sph_step_info_t), intent(inout) :: info
     integer(ip), intent(out) :: status
     real(rp) :: dt, dt2, vmax, dt_p, dt_c, dtf, dtcv, vgate
     logical :: dbc, dbc_now
+    type(step_work_t) :: work
     integer :: i, nb, n
 
     n = st%n
     nb = st%nb
     dt = info%dt
     dt2 = 0.5_rp * dt
+    work%prm = prm
+    work%st => st
+    work%dt2 = dt2
     dbc = prm%boundary == BC_DYNAMIC
     vmax = 0.0_rp
     dt_p = dt
@@ -86,21 +100,7 @@ contains
     ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
     ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
     ! barrier costs a thread wake-up, a large share of a small case's step.
-    !$omp parallel do schedule(static)
-    do i = 1, n
-      st%xo(i) = st%x(i)
-      st%zo(i) = st%z(i)
-      st%uo(i) = st%u(i)
-      st%wo(i) = st%w(i)
-      st%rhoo(i) = st%rho(i)
-      if (i > nb) then
-        if (moving_fluid(st, i)) then
-          call half_step(prm, st, i, dt2)
-          call eos_one(prm, st, i)
-        end if
-      end if
-    end do
-    !$omp end parallel do
+    call in_team(work, PREDICT)
     dbc_now = .false.
     if (dbc) then
       info%dbc_counter = info%dbc_counter + 1
@@ -125,19 +125,7 @@ contains
     ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
     ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
     ! final density: the half step's p and c would be overwritten unread).
-    !$omp parallel do schedule(static)
-    do i = nb + 1, n
-      if (moving_fluid(st, i)) then
-        call half_step(prm, st, i, dt2)
-        st%rho(i) = 2.0_rp * st%rho(i) - st%rhoo(i)
-        st%x(i) = 2.0_rp * st%x(i) - st%xo(i)
-        st%z(i) = 2.0_rp * st%z(i) - st%zo(i)
-        st%u(i) = 2.0_rp * st%u(i) - st%uo(i)
-        st%w(i) = 2.0_rp * st%w(i) - st%wo(i)
-      end if
-      call eos_one(prm, st, i)
-    end do
-    !$omp end parallel do
+    call in_team(work, CORRECT)
     if (dbc_now) then
       do i = 1, nb
         st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
@@ -161,7 +149,50 @@ contains
     end if
     info%bad_cause = status
     if (status /= SPH_OK) return
+
   end subroutine pc_step
+
+  !> The predictor's loop (start-of-step values kept, the fluid's half step and EoS) or the
+  !> corrector's (half step, extrapolation, EoS of every non-boundary particle): orphaned
+  !> worksharing loops.
+  subroutine step_loops(self, which)
+    class(step_work_t), intent(inout) :: self
+    integer, intent(in) :: which
+    integer :: j
+    associate (prm => self%prm, st => self%st, dt2 => self%dt2)
+      if (which == PREDICT) then
+        !$omp do schedule(static)
+        do j = 1, st%n
+          st%xo(j) = st%x(j)
+          st%zo(j) = st%z(j)
+          st%uo(j) = st%u(j)
+          st%wo(j) = st%w(j)
+          st%rhoo(j) = st%rho(j)
+          if (j > st%nb) then
+            if (moving_fluid(st, j)) then
+              call half_step(prm, st, j, dt2)
+              call eos_one(prm, st, j)
+            end if
+          end if
+        end do
+        !$omp end do
+      else
+        !$omp do schedule(static)
+        do j = st%nb + 1, st%n
+          if (moving_fluid(st, j)) then
+            call half_step(prm, st, j, dt2)
+            st%rho(j) = 2.0_rp * st%rho(j) - st%rhoo(j)
+            st%x(j) = 2.0_rp * st%x(j) - st%xo(j)
+            st%z(j) = 2.0_rp * st%z(j) - st%zo(j)
+            st%u(j) = 2.0_rp * st%u(j) - st%uo(j)
+            st%w(j) = 2.0_rp * st%w(j) - st%wo(j)
+          end if
+          call eos_one(prm, st, j)
+        end do
+        !$omp end do
+      end if
+    end associate
+  end subroutine step_loops
 
   !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'
   !> movingGate does: from t >= gate_t_start (t = this step's start, sphjet's clock) by

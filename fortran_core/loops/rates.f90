@@ -14,7 +14,7 @@ module rates
                           VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
-  use sorted_state, only: sorted_t, gather_sorted
+  use sorted_state, only: sorted_t, gather_sorted, scatter_rates
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_FRESH
   use viscosity, only: artificial_pi, laminar_factor
@@ -126,33 +126,8 @@ contains
 
     if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
 
-    ! Scatter back to particle order; inactive particles get zero rates. The sorted slots are
-    ! exactly the active particles, so the two loops write disjoint entries and need no
-    ! barrier between them (nowait): one barrier per scatter, not two. Image slots
-    ! (order > st%n) are not scattered: their sums are discarded.
-    !$omp parallel private(i)
-    !$omp do schedule(static)
-    do k = 1, n
-      i = s%grid%order(k)
-      if (i > st%n) cycle
-      st%ax(i) = s%ax(k)
-      st%az(i) = s%az(k)
-      st%ar(i) = s%ar(k)
-      st%xsph_u(i) = prm%xsph_eps * s%xu(k)
-      st%xsph_w(i) = prm%xsph_eps * s%xw(k)
-    end do
-    !$omp end do nowait
-    !$omp do schedule(static)
-    do i = 1, st%n
-      if (st%active(i) /= 0) cycle
-      st%ax(i) = 0.0_rp
-      st%az(i) = 0.0_rp
-      st%ar(i) = 0.0_rp
-      st%xsph_u(i) = 0.0_rp
-      st%xsph_w(i) = 0.0_rp
-    end do
-    !$omp end do
-    !$omp end parallel
+    ! back to particle order (inactive particles get zero rates)
+    call scatter_rates(s, st, prm%xsph_eps)
   end subroutine compute_rates
 
   !> The pairs of one row task in two passes over chunks of CHUNK pairs (the chunk's columns

@@ -37,7 +37,8 @@ module sorted_state
   !$ use omp_lib, only: omp_get_max_threads
   implicit none
   private
-  public :: sorted_t, gather_sorted, copy_to_images, thread_lists, SKIN_PER_H
+  public :: sorted_t, gather_sorted, scatter_rates, copy_to_images, thread_lists, one_thread, &
+            team_work_t, in_team, SKIN_PER_H
 
   !> Skin of the neighbour list in units of h (cutoff 2h + skin). Case1 rebuilds every ~50
   !> steps with 0.3 h; 0.15 h ran at the same speed there (README, Performance).
@@ -70,23 +71,51 @@ module sorted_state
     logical :: all_pairs = .false.         !< list boundary-boundary pairs too
   end type sorted_t
 
+  !> Particle loops for in_team: run(which) holds orphaned worksharing loops (!$omp do) and
+  !> is called by every thread of a parallel region, or by this thread alone.
+  type, abstract :: team_work_t
+  contains
+    procedure(team_run_i), deferred :: run
+  end type team_work_t
+
+  abstract interface
+    subroutine team_run_i(self, which)
+      import :: team_work_t
+      class(team_work_t), intent(inout) :: self
+      integer, intent(in) :: which
+    end subroutine team_run_i
+  end interface
+
+  !> The particle loops of this module: which = GATHER, SCATTER or MOVES.
+  integer, parameter :: GATHER = 1, SCATTER = 2, MOVES = 3
+  type, extends(team_work_t) :: sorted_work_t
+    type(sorted_t), pointer :: s => null()
+    type(state_t), pointer :: st => null()
+    logical :: images = .false.
+    real(rp) :: xsph_eps = 0.0_rp, d2max = 0.0_rp
+    integer :: nact = 0
+  contains
+    procedure :: run => sorted_run
+  end type sorted_work_t
+
 contains
 
   !> Gathers the fields of the active particles in sorted order, building the sorted order
   !> and the neighbour list first when they are missing or no longer cover the state; with
   !> prm (axisymmetric or periodic in z) also their image particles and the planar masses.
   subroutine gather_sorted(st, h, s, prm)
-    type(state_t), intent(inout) :: st
+    type(state_t), intent(inout), target :: st
     real(rp), intent(in) :: h
-    type(sorted_t), intent(inout) :: s
+    type(sorted_t), intent(inout), target :: s
     type(sph_params_t), intent(in), optional :: prm
-    integer :: k, i, n, j, nact
+    integer :: k, i, n, nact
     real(rp) :: skin, d2max
     logical :: valid, images, axi
     real(rp), allocatable :: xe(:), ze(:), sg(:)
     integer(ip), allocatable :: ae(:)
     integer, allocatable :: isrc(:), isrc_slot(:)
     logical, allocatable :: fe(:)
+    type(sorted_work_t) :: work
 
     images = .false.
     axi = .false.
@@ -117,15 +146,11 @@ contains
         end if
       end if
       if (valid) then
-        nact = 0
-        d2max = 0.0_rp
-        !$omp parallel do schedule(static) reduction(+:nact) reduction(max:d2max)
-        do i = 1, st%n
-          if (st%active(i) == 0) cycle
-          nact = nact + 1
-          d2max = max(d2max, (st%x(i) - s%xb(i))**2 + (st%z(i) - s%zb(i))**2)
-        end do
-        !$omp end parallel do
+        work%st => st
+        work%s => s
+        call in_team(work, MOVES)
+        nact = work%nact
+        d2max = work%d2max
         valid = nact == s%n_active .and. d2max <= (0.5_rp * skin)**2
       end if
       if (.not. valid) then
@@ -138,38 +163,27 @@ contains
     end if
 
     n = s%n
-    !$omp parallel do schedule(static) private(i, j)
-    do k = 1, n
-      i = s%grid%order(k)
-      if (i <= st%n) then
-        s%x(k) = st%x(i)
-        s%z(k) = st%z(i)
-        s%u(k) = st%u(i)
-        s%src(k) = i
-        s%usign(k) = 1.0_rp
-      else  ! an image slot
-        j = isrc(i - st%n)
+    if (images) then
+      ! each slot's source particle, velocity sign and position (an image's is its own)
+      !$omp parallel do schedule(static) private(i)
+      do k = 1, n
+        i = s%grid%order(k)
         s%x(k) = xe(i)
         s%z(k) = ze(i)
-        s%u(k) = sg(i - st%n) * st%u(j)
-        s%src(k) = j
-        s%usign(k) = sg(i - st%n)
-        i = j
-      end if
-      s%w(k) = st%w(i)
-      s%rho(k) = st%rho(i)
-      s%p(k) = st%p(i)
-      s%c(k) = st%c(i)
-      s%m(k) = st%m(i)
-      s%pr(k) = st%p(i) / (st%rho(i) * st%rho(i))
-      s%fluid(k) = st%kind(i) == KIND_FLUID
-      s%ax(k) = 0.0_rp
-      s%az(k) = 0.0_rp
-      s%ar(k) = 0.0_rp
-      s%xu(k) = 0.0_rp
-      s%xw(k) = 0.0_rp
-    end do
-    !$omp end parallel do
+        if (i <= st%n) then
+          s%src(k) = i
+          s%usign(k) = 1.0_rp
+        else
+          s%src(k) = isrc(i - st%n)
+          s%usign(k) = sg(i - st%n)
+        end if
+      end do
+      !$omp end parallel do
+    end if
+    work%st => st
+    work%s => s
+    work%images = images
+    call in_team(work, GATHER)
     s%n_real = count(st%active(1:st%n) /= 0)
     if (images) then
       ! the slot of each image's source: multi-pass loops (CSF) copy the source's fields to
@@ -189,6 +203,174 @@ contains
     end if
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
+
+  !> Runs work%run(which) in a parallel region, or directly when one thread is in use
+  !> (one_thread: no region, no barrier).
+  subroutine in_team(work, which)
+    class(team_work_t), intent(inout) :: work
+    integer, intent(in) :: which
+    if (one_thread()) then
+      call work%run(which)
+    else
+      !$omp parallel
+      call work%run(which)
+      !$omp end parallel
+    end if
+  end subroutine in_team
+
+  subroutine sorted_run(self, which)
+    class(sorted_work_t), intent(inout) :: self
+    integer, intent(in) :: which
+    select case (which)
+    case (GATHER)
+      call gather_all(self%st, self%s, self%images)
+    case (SCATTER)
+      call scatter_all(self%s, self%st, self%xsph_eps)
+    case default
+      call count_moves(self%st, self%s, self%nact, self%d2max)
+    end select
+  end subroutine sorted_run
+
+  !> Active particles (na) and their largest squared move since the build (d2): zero in,
+  !> reduced over the threads.
+  subroutine count_moves(st, s, na, d2)
+    type(state_t), intent(in) :: st
+    type(sorted_t), intent(in) :: s
+    integer, intent(inout) :: na
+    real(rp), intent(inout) :: d2
+    integer :: j
+    !$omp do schedule(static) reduction(+:na) reduction(max:d2)
+    do j = 1, st%n
+      if (st%active(j) == 0) cycle
+      na = na + 1
+      d2 = max(d2, (st%x(j) - s%xb(j))**2 + (st%z(j) - s%zb(j))**2)
+    end do
+    !$omp end do
+  end subroutine count_moves
+
+  !> The fields of the source particles s%src(1:s%n) into the slots of s (but x, z with
+  !> images: the caller's), an image's u times its sign, and zero sums. One field at a time:
+  !> each loop's scattered reads then fall in one source array, small enough to stay in the
+  !> second-level cache, instead of ten at once. Same values as slot by slot.
+  subroutine gather_all(st, s, images)
+    type(state_t), intent(in) :: st
+    type(sorted_t), intent(inout) :: s
+    logical, intent(in) :: images
+    integer :: k, n
+    n = s%n
+    if (.not. images) then   ! the slot's particle (same static schedule as the loops below)
+      !$omp do schedule(static)
+      do k = 1, n
+        s%src(k) = s%grid%order(k)
+        s%usign(k) = 1.0_rp
+      end do
+      !$omp end do nowait
+      call permute(st%x, s%x)
+      call permute(st%z, s%z)
+    end if
+    call permute(st%u, s%u)
+    call permute(st%w, s%w)
+    call permute(st%rho, s%rho)
+    call permute(st%p, s%p)
+    call permute(st%c, s%c)
+    call permute(st%m, s%m)
+    ! the same static schedule as the loops above: slot k is this thread's in all of them
+    !$omp do schedule(static)
+    do k = 1, n
+      if (images) s%u(k) = s%usign(k) * s%u(k)
+      s%pr(k) = s%p(k) / (s%rho(k) * s%rho(k))
+      s%fluid(k) = st%kind(s%src(k)) == KIND_FLUID
+      call clear_sums(s, k)
+    end do
+    !$omp end do
+  contains
+    subroutine permute(src, dst)
+      real(rp), intent(in) :: src(*)
+      real(rp), intent(inout) :: dst(*)
+      integer :: j
+      !$omp do schedule(static)
+      do j = 1, n
+        dst(j) = src(s%src(j))
+      end do
+      !$omp end do nowait
+    end subroutine permute
+  end subroutine gather_all
+
+  !> Zero rate sums of slot k.
+  pure subroutine clear_sums(s, k)
+    type(sorted_t), intent(inout) :: s
+    integer, intent(in) :: k
+    s%ax(k) = 0.0_rp
+    s%az(k) = 0.0_rp
+    s%ar(k) = 0.0_rp
+    s%xu(k) = 0.0_rp
+    s%xw(k) = 0.0_rp
+  end subroutine clear_sums
+
+  !> The accumulated rates of the sorted slots back to particle order: st%ax, az, ar and
+  !> xsph_eps times the XSPH sums; inactive particles get zero rates. One field per loop (as
+  !> gather_all). The sorted slots are exactly the active particles, so the loops write
+  !> disjoint entries and need no barrier between them (nowait). Image slots are not
+  !> scattered: their sums are discarded.
+  subroutine scatter_rates(s, st, xsph_eps)
+    type(sorted_t), intent(in), target :: s
+    type(state_t), intent(inout), target :: st
+    real(rp), intent(in) :: xsph_eps
+    type(sorted_work_t) :: work
+    work%s => s
+    work%st => st
+    work%xsph_eps = xsph_eps
+    call in_team(work, SCATTER)
+  end subroutine scatter_rates
+
+  subroutine scatter_all(s, st, xsph_eps)
+    type(sorted_t), intent(in) :: s
+    type(state_t), intent(inout) :: st
+    real(rp), intent(in) :: xsph_eps
+    integer :: i
+    call scatter_sorted(s, st%n, s%ax, st%ax)
+    call scatter_sorted(s, st%n, s%az, st%az)
+    call scatter_sorted(s, st%n, s%ar, st%ar)
+    call scatter_sorted(s, st%n, s%xu, st%xsph_u, xsph_eps)
+    call scatter_sorted(s, st%n, s%xw, st%xsph_w, xsph_eps)
+    !$omp do schedule(static)
+    do i = 1, st%n
+      if (st%active(i) /= 0) cycle
+      st%ax(i) = 0.0_rp
+      st%az(i) = 0.0_rp
+      st%ar(i) = 0.0_rp
+      st%xsph_u(i) = 0.0_rp
+      st%xsph_w(i) = 0.0_rp
+    end do
+    !$omp end do
+  end subroutine scatter_all
+
+  !> dst(i) = src(k) (times factor) for the real slots k of particle i = grid%order(k) <=
+  !> n_state; called by every thread of a parallel region, which it does not wait for
+  !> (nowait). One field per call, as gather_all.
+  subroutine scatter_sorted(s, n_state, src, dst, factor)
+    type(sorted_t), intent(in) :: s
+    integer, intent(in) :: n_state
+    real(rp), intent(in) :: src(:)
+    real(rp), intent(inout) :: dst(:)
+    real(rp), intent(in), optional :: factor
+    integer :: k, i
+    if (present(factor)) then
+      !$omp do schedule(static)
+      do k = 1, s%n
+        i = s%grid%order(k)
+        if (i <= n_state) dst(i) = factor * src(k)
+      end do
+      !$omp end do nowait
+    else
+      !$omp do schedule(static)
+      do k = 1, s%n
+        i = s%grid%order(k)
+        if (i <= n_state) dst(i) = src(k)
+      end do
+      !$omp end do nowait
+    end if
+  end subroutine scatter_sorted
 
   !> Whether the caller's build positions are usable: finite for every active particle.
   logical function listed_positions(st)
@@ -241,6 +423,15 @@ contains
     call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), cut * cut, s%all_pairs, &
                            s%lists, s%rows)
   end subroutine build
+
+  !> Whether the next parallel regions would have one thread. Then the loops run without a
+  !> region (their orphaned worksharing constructs serially): with libgomp every barrier, and
+  !> so every region, costs a futex system call even for a team of one, and a small case's
+  !> step has dozens of them.
+  logical function one_thread()
+    one_thread = .true.
+    !$ one_thread = omp_get_max_threads() == 1
+  end function one_thread
 
   !> One pair list per thread (at least omp_get_max_threads()), kept in the work space from
   !> sweep to sweep.

@@ -31,7 +31,7 @@ module surface_tension_loops
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, copy_to_images
+  use sorted_state, only: sorted_t, copy_to_images, team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
@@ -85,6 +85,7 @@ module surface_tension_loops
     !> axisymmetric only: the colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab of the mode's
     !> density and its gradient, which decide where the free surface is (see below)
     real(rp), allocatable :: c2(:), n2x(:), n2z(:)
+    real(rp), allocatable :: sx(:), sz(:)   !< scratch: the planar normal pass's delta sums
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -95,6 +96,22 @@ module surface_tension_loops
   contains
     procedure :: visit => csf_visit
   end type csf_body_t
+
+  !> The per-particle loops between the passes (in_team): which = SELF_TERMS (colour self
+  !> terms, zero sums), UNIT_NORMAL (filter and unit normal) or FORCE (curvature and
+  !> acceleration).
+  integer, parameter :: SELF_TERMS = 1, UNIT_NORMAL = 2, FORCE = 3
+  type, extends(team_work_t) :: csf_loops_t
+    type(sph_params_t) :: prm
+    type(kernel_t) :: kern
+    type(sorted_t), pointer :: s => null()
+    type(csf_work_t), pointer :: wk => null()
+    real(rp), pointer :: kappa(:) => null()
+    real(rp) :: w0 = 0.0_rp, eps = 0.0_rp
+    logical :: colour_delta = .false., axi = .false.
+  contains
+    procedure :: run => csf_particle_loops
+  end type csf_loops_t
 
 contains
 
@@ -109,11 +126,13 @@ contains
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout) :: st
-    type(sorted_t), intent(inout) :: s
+    type(sorted_t), intent(inout), target :: s
     logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
-    real(rp) :: w0, eps, kap, ax, az, wt, kin, kaz, depth
-    real(rp), allocatable :: kappa(:), hoop(:)
+    real(rp) :: w0, eps
+    real(rp), allocatable, target :: kappa(:)
+    real(rp), allocatable :: hoop(:)
+    type(csf_loops_t) :: loops
     integer :: n, k, i
     logical :: colour_delta, axi, reuse
 
@@ -127,9 +146,11 @@ contains
     eps = csf_threshold(prm%h)
     colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
     axi = prm%geometry == GEOM_AXISYMMETRIC
+    loops = csf_loops_t(prm=prm, kern=kern, s=s, wk=wk, kappa=kappa, w0=w0, eps=eps, &
+                        colour_delta=colour_delta, axi=axi)
 
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
-      allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
+      allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n), wk%sx(n), wk%sz(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
       wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
     else
@@ -138,21 +159,7 @@ contains
     end if
 
     ! colour (eq 14), self term included
-    !$omp parallel do schedule(static)
-    do k = 1, n
-      wk%v(k) = s%m(k) / s%rho(k)
-      wk%c(k) = merge(wk%v(k) * w0, 0.0_rp, s%fluid(k))
-      wk%nx(k) = 0.0_rp
-      wk%nz(k) = 0.0_rp
-      wk%gx(k) = 0.0_rp
-      wk%gz(k) = 0.0_rp
-      if (axi) then
-        wk%c2(k) = merge(wk%vmu(k) * w0, 0.0_rp, s%fluid(k))
-        wk%n2x(k) = 0.0_rp
-        wk%n2z(k) = 0.0_rp
-      end if
-    end do
-    !$omp end parallel do
+    call in_team(loops, SELF_TERMS)
     call sweep(PASS_COLOUR, kern, s, wk, reuse, axi)
     if (axi) wk%c2 = wk%c2 * wk%gi
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
@@ -179,23 +186,7 @@ contains
         call copy_to_images(s, wk%n2z, .false.)
       end if
     end if
-    !$omp parallel do schedule(static) private(wt)
-    do k = 1, n
-      if (s%fluid(k) .and. axi) then   ! filtered by n2, directed by n
-        call csf_unit_normal(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), wk%n2z(k), eps, &
-                             wk%nhx(k), wk%nhz(k), wk%flag(k))
-        if (wk%flag(k) > 0.0_rp) &
-          call csf_unit_normal(wk%nx(k), wk%nz(k), 0.0_rp, wk%nhx(k), wk%nhz(k), wt)
-      else if (s%fluid(k)) then
-        call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
-      else
-        wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
-      end if
-      wk%num(k) = 0.0_rp
-      wk%den(k) = wk%flag(k) * wk%v(k) * w0   ! self term of the denominator of eq 23
-      wk%tden(k) = 0.0_rp                       ! no self term: (r_a - r_a) = 0
-    end do
-    !$omp end parallel do
+    call in_team(loops, UNIT_NORMAL)
 
     ! curvature (eq 23) and acceleration (eq 24)
     if (colour_delta) then
@@ -209,43 +200,7 @@ contains
       end if
       !$omp end critical (csf_depth_cache)
     end if
-    !$omp parallel do schedule(static) private(kap, ax, az, wt, kin, kaz, depth)
-    do k = 1, n
-      if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
-        if (colour_delta) then
-          kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
-          kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
-        else   ! each moved from the particle's row to the surface by k / (1 - k delta)
-          kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
-          kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
-          depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h)
-          kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
-        end if
-      else if (colour_delta) then   ! eq 23 as printed
-        kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
-      else                     ! free-surface curvature (physics/surface_tension.f90)
-        kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
-                                    csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
-      end if
-      kappa(k) = kap
-      if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
-        if (colour_delta) then
-          call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
-        else
-          ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
-          if (axi) then
-            wt = csf_surface_weight(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), &
-                                    wk%n2z(k), prm%h)
-          else
-            wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
-          end if
-          call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
-        end if
-        s%ax(k) = s%ax(k) + ax
-        s%az(k) = s%az(k) + az
-      end if
-    end do
-    !$omp end parallel do
+    call in_team(loops, FORCE)
 
     ! fields in particle order
     if (associated(st%colour) .and. associated(st%st_nx) .and. associated(st%st_nz) &
@@ -269,7 +224,96 @@ contains
       end do
       !$omp end parallel do
     end if
+
   end subroutine surface_tension_rates
+
+  subroutine csf_particle_loops(self, which)
+    class(csf_loops_t), intent(inout) :: self
+    integer, intent(in) :: which
+    integer :: k, n
+    real(rp) :: kap, ax, az, wt, kin, kaz, depth
+    n = self%s%n
+    associate (prm => self%prm, kern => self%kern, s => self%s, wk => self%wk, &
+               kappa => self%kappa, w0 => self%w0, eps => self%eps, axi => self%axi, &
+               colour_delta => self%colour_delta)
+      select case (which)
+      case (SELF_TERMS)
+        !$omp do schedule(static)
+        do k = 1, n
+          wk%v(k) = s%m(k) / s%rho(k)
+          wk%c(k) = merge(wk%v(k) * w0, 0.0_rp, s%fluid(k))
+          wk%nx(k) = 0.0_rp
+          wk%nz(k) = 0.0_rp
+          wk%gx(k) = 0.0_rp
+          wk%gz(k) = 0.0_rp
+          if (axi) then
+            wk%c2(k) = merge(wk%vmu(k) * w0, 0.0_rp, s%fluid(k))
+            wk%n2x(k) = 0.0_rp
+            wk%n2z(k) = 0.0_rp
+            wk%sx(k) = 0.0_rp
+            wk%sz(k) = 0.0_rp
+          end if
+        end do
+        !$omp end do
+      case (UNIT_NORMAL)
+        !$omp do schedule(static)
+        do k = 1, n
+          if (s%fluid(k) .and. axi) then   ! filtered by n2, directed by n
+            call csf_unit_normal(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), wk%n2z(k), &
+                                 eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
+            if (wk%flag(k) > 0.0_rp) &
+              call csf_unit_normal(wk%nx(k), wk%nz(k), 0.0_rp, wk%nhx(k), wk%nhz(k), wt)
+          else if (s%fluid(k)) then
+            call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
+          else
+            wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
+          end if
+          wk%num(k) = 0.0_rp
+          wk%den(k) = wk%flag(k) * wk%v(k) * w0   ! self term of the denominator of eq 23
+          wk%tden(k) = 0.0_rp                       ! no self term: (r_a - r_a) = 0
+        end do
+        !$omp end do
+      case default   ! FORCE
+        !$omp do schedule(static)
+        do k = 1, n
+          if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
+            if (colour_delta) then
+              kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+              kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+            else   ! each moved from the particle's row to the surface by k / (1 - k delta)
+              kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
+              kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+              depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h)
+              kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
+            end if
+          else if (colour_delta) then   ! eq 23 as printed
+            kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
+          else                     ! free-surface curvature (physics/surface_tension.f90)
+            kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
+                                        csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
+          end if
+          kappa(k) = kap
+          if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
+            if (colour_delta) then
+              call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
+            else
+              ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
+              if (axi) then
+                wt = csf_surface_weight(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), &
+                                        wk%n2z(k), prm%h)
+              else
+                wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+              end if
+              call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
+            end if
+            s%ax(k) = s%ax(k) + ax
+            s%az(k) = s%az(k) + az
+          end if
+        end do
+        !$omp end do
+      end select
+    end associate
+  end subroutine csf_particle_loops
 
   !> A principal curvature k of a particle's row moved to the surface at depth delta:
   !> k / (1 - k delta), the factor kept >= DEPTH_FACTOR_MIN as in csf_surface_curvature (whose tangential
@@ -311,19 +355,23 @@ contains
         call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
         if (self%axi) call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%vmu, wk%c2)
       case (PASS_NORMAL)
-        call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
-                          wk%nx, wk%nz)
         if (self%axi) then
+          ! the planar normal (its delta sums discarded), then the mode's colour gradient
+          ! with the delta sums of its pressure pair
+          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
+                            wk%vmu, wk%gi, wk%nx, wk%nz, wk%sx, wk%sz)
           call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%c2, &
-                            wk%n2x, wk%n2z)
-          call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%gi, &
-                           wk%gx, wk%gz)
+                            wk%vmu, wk%gi, wk%n2x, wk%n2z, wk%gx, wk%gz)
         else
-          call delta_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%gi, &
-                           wk%gx, wk%gz)
+          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
+                            wk%v, wk%gi, wk%nx, wk%nz, wk%gx, wk%gz)
         end if
-      case default   ! PASS_CURVATURE (eq 23) or PASS_SURFACE_CURVATURE
-        call curvature_pairs(self%pass == PASS_CURVATURE, pl, wk)
+      case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
+        call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
+                             wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
+      case default            ! PASS_SURFACE_CURVATURE: numerator, tangential denominator
+        call curvature_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
+                             wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
       end select
     end associate
     red = max(red, 0.0_rp)
@@ -345,14 +393,17 @@ contains
     end do
   end subroutine colour_pairs
 
-  !> Normal (eq 18) of the fluid pairs of a list.
-  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, nx, nz)
-    integer, intent(in) :: np, pa(:), pb(:)
-    real(rp), intent(in) :: dx(:), dz(:), f(:), v(:), c(:)
-    logical, intent(in) :: mixed(:)
-    real(rp), intent(inout) :: nx(:), nz(:)
+  !> Normal (eq 18) and the free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab
+  !> of the fluid pairs of a list, in one loop (two independent sets of sums): for the
+  !> delta, planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller);
+  !> axisymmetric V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair).
+  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, nx, nz, gxs, gzs)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), v(*), c(*), vmu(*), gi(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: nx(*), nz(*), gxs(*), gzs(*)
     integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2
+    real(rp) :: gx, gz, da1, da2, db1, db2, gsum
     do k = 1, np
       if (mixed(k)) cycle
       a = pa(k)
@@ -364,23 +415,6 @@ contains
       nz(a) = nz(a) + da2
       nx(b) = nx(b) + db1
       nz(b) = nz(b) + db2
-    end do
-  end subroutine normal_pairs
-
-  !> The free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab of the fluid pairs
-  !> of a list: planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller);
-  !> axisymmetric V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair).
-  pure subroutine delta_pairs(np, pa, pb, dx, dz, f, mixed, vmu, gi, gxs, gzs)
-    integer, intent(in) :: np, pa(:), pb(:)
-    real(rp), intent(in) :: dx(:), dz(:), f(:), vmu(:), gi(:)
-    logical, intent(in) :: mixed(:)
-    real(rp), intent(inout) :: gxs(:), gzs(:)
-    integer :: k, a, b
-    real(rp) :: gx, gz, gsum
-    do k = 1, np
-      if (mixed(k)) cycle
-      a = pa(k)
-      b = pb(k)
       gsum = (gi(a) + gi(b)) * f(k)
       gx = gsum * dx(k)
       gz = gsum * dz(k)
@@ -389,39 +423,35 @@ contains
       gxs(b) = gxs(b) - vmu(a) * gx
       gzs(b) = gzs(b) - vmu(a) * gz
     end do
-  end subroutine delta_pairs
+  end subroutine normal_pairs
 
-  !> Curvature sums (eq 23: numerator and Shepard denominator when shepard, else numerator
-  !> and tangential denominator) of the fluid pairs of a list whose particles both pass the
-  !> filter.
-  subroutine curvature_pairs(shepard, pl, wk)
+  !> Curvature sums of the fluid pairs of a list whose particles both pass the filter: eq
+  !> 23's numerator (num) and, into den, its Shepard denominator when shepard, else the
+  !> tangential denominator of the free-surface curvature (csf_tangential_pair). Plain arrays,
+  !> so that the loop keeps their addresses in registers.
+  pure subroutine curvature_pairs(shepard, np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, &
+                                  num, den)
     logical, intent(in) :: shepard
-    type(pair_list_t), intent(in) :: pl
-    type(csf_work_t), intent(inout) :: wk
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), w(*), flag(*), v(*), nhx(*), nhz(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: num(*), den(*)
     integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2
-    do k = 1, pl%n
-      if (pl%mixed(k)) cycle
-      a = pl%a(k)
-      b = pl%b(k)
-      if (wk%flag(a) == 0.0_rp .or. wk%flag(b) == 0.0_rp) cycle
-      gx = pl%f(k) * pl%dx(k)
-      gz = pl%f(k) * pl%dz(k)
-      call csf_curvature_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                              wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                              gx, gz, pl%w(k), da1, da2, db1, db2)
-      wk%num(a) = wk%num(a) + da1
-      wk%num(b) = wk%num(b) + db1
-      if (shepard) then   ! Shepard denominator of eq 23
-        wk%den(a) = wk%den(a) + da2
-        wk%den(b) = wk%den(b) + db2
-      else                ! tangential denominator
-        call csf_tangential_pair(wk%flag(a), wk%flag(b), wk%v(a), wk%v(b), &
-                                 wk%nhx(a), wk%nhz(a), wk%nhx(b), wk%nhz(b), &
-                                 pl%dx(k), pl%dz(k), pl%f(k), da1, db1)
-        wk%tden(a) = wk%tden(a) + da1
-        wk%tden(b) = wk%tden(b) + db1
-      end if
+    real(rp) :: da1, da2, db1, db2
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      if (flag(a) == 0.0_rp .or. flag(b) == 0.0_rp) cycle
+      call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
+                              f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
+      num(a) = num(a) + da1
+      num(b) = num(b) + db1
+      if (.not. shepard) call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), &
+                                                  nhz(a), nhx(b), nhz(b), dx(k), dz(k), f(k), &
+                                                  da2, db2)
+      den(a) = den(a) + da2
+      den(b) = den(b) + db2
     end do
   end subroutine curvature_pairs
 

@@ -18,7 +18,7 @@
 module traversal
   use sphjet_kinds, only: rp
   use sphjet_kernels, only: kernel_t, kernel_eval_list
-  use sorted_state, only: sorted_t, thread_lists
+  use sorted_state, only: sorted_t, thread_lists, one_thread
   use pair_list, only: pair_list_t, reserve
   !$ use omp_lib, only: omp_get_thread_num
   implicit none
@@ -82,9 +82,13 @@ contains
       end if
       if (.not. allocated(s%cache)) allocate(s%cache(0:s%grid%ncz - 1))
     end if
-    !$omp parallel reduction(max:red)
-    call sweep_thread(s, kern, mode, how, body, red)
-    !$omp end parallel
+    if (one_thread()) then
+      call sweep_thread(s, kern, mode, how, body, red)
+    else
+      !$omp parallel reduction(max:red)
+      call sweep_thread(s, kern, mode, how, body, red)
+      !$omp end parallel
+    end if
   end subroutine pair_sweep
 
   !> One thread's share of a sweep, with the thread's own pair list (or the kept ones).
