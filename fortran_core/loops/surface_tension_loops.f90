@@ -173,7 +173,8 @@ contains
     call sweep(PASS_NORMAL, kern, s, wk, .true., axi)
     if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
       wk%gx = wk%gx - sign(1.0_rp, s%x(1:n)) * hoop
-      wk%n2x = wk%n2x * wk%gi
+      ! the radial part damped next to the axis (axis_detection_factor)
+      wk%n2x = wk%n2x * wk%gi * axis_detection_factor(s%x(1:n), prm%h)
       wk%n2z = wk%n2z * wk%gi
     end if
     if (s%n > s%n_real) then
@@ -259,8 +260,7 @@ contains
         !$omp do schedule(static)
         do k = 1, n
           if (s%fluid(k) .and. axi) then   ! filtered by n2, directed by n
-            call csf_unit_normal(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), wk%n2z(k), &
-                                 eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
+            call csf_unit_normal(wk%n2x(k), wk%n2z(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
             if (wk%flag(k) > 0.0_rp) &
               call csf_unit_normal(wk%nx(k), wk%nz(k), 0.0_rp, wk%nhx(k), wk%nhz(k), wt)
           else if (s%fluid(k)) then
@@ -299,8 +299,7 @@ contains
             else
               ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
               if (axi) then
-                wt = csf_surface_weight(axis_detection_factor(s%x(k), prm%h) * wk%n2x(k), &
-                                        wk%n2z(k), prm%h)
+                wt = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%h)
               else
                 wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
               end if
