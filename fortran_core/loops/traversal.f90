@@ -76,8 +76,9 @@ contains
     how = SWEEP_FRESH
     if (present(cache)) how = cache
     if (in_open_team()) then
-      ! every thread of an open team (sorted_state.f90): its lists were made at the list's
-      ! build; the kept lists are not (predictor_corrector.f90 opens none with surface tension)
+      ! every thread of an open team (sorted_state.f90): the thread lists were made before
+      ! the team opened (pc_step); kept lists are not made here (pc_step opens no team with
+      ! surface tension, whose sweeps keep them)
       call sweep_thread(s, kern, mode, how, body, red)
       return
     end if
