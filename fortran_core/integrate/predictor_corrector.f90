@@ -11,10 +11,11 @@
 !> A driven nozzle (sphjet's jets, nozzle_drive) moves the fluid inside it as a rigid plug.
 module predictor_corrector
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, SPH_OK
+  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, &
+                          SPH_OK, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t, team_work_t, in_team
+  use sorted_state, only: sorted_t, team_work_t, in_team, one_thread, set_open_team, thread_lists
   use rates, only: compute_rates
   use time_step, only: cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
@@ -72,13 +73,10 @@ contains
     type(sorted_t), intent(inout) :: s
     type(sph_step_info_t), intent(inout) :: info
     integer(ip), intent(out) :: status
-    real(rp) :: dt, dt2, vmax, dt_p, dt_c, dtf, dtcv, vgate
+    real(rp) :: dt, dt2, vmax, dt_p, dt_c, vgate
     logical :: dbc, dbc_now
     type(step_work_t) :: work
-    integer :: i, nb, n
 
-    n = st%n
-    nb = st%nb
     dt = info%dt
     dt2 = 0.5_rp * dt
     work%prm = prm
@@ -92,46 +90,31 @@ contains
     vgate = 0.0_rp
     if (st%nb > 0 .and. info%time + dt >= prm%gate_t_start) vgate = sqrt(prm%gate_vx**2 + prm%gate_vz**2)
 
-    ! ---- predictor ----
-    call compute_rates(prm, kern, st, s, vmax)
-    if (prm%variable_dt /= 0) then
-      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_p)
-    end if
-    ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
-    ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
-    ! barrier costs a thread wake-up, a large share of a small case's step.
-    call in_team(work, PREDICT)
+    ! The DBC density update of this step (boundary particles, every dbc_period steps)
     dbc_now = .false.
     if (dbc) then
       info%dbc_counter = info%dbc_counter + 1
       if (mod(info%dbc_counter, int(max(prm%dbc_period, 1), i8)) == 0) then
         dbc_now = .true.
         info%dbc_counter = 0
-        do i = 1, nb
-          st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
-        end do
-        call update_eos(prm, st, 1, nb)
       end if
     end if
 
-    ! ---- corrector ----
-    call compute_rates(prm, kern, st, s, vmax)
-    if (prm%variable_dt /= 0) then
-      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_c)
-      info%dt_f = dtf
-      info%dt_cv = dtcv
-      info%dt_new = dt_c
-    end if
-    ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
-    ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
-    ! final density: the half step's p and c would be overwritten unread).
-    call in_team(work, CORRECT)
-    if (dbc_now) then
-      do i = 1, nb
-        st%rho(i) = max(st%rhoo(i) + dt2 * st%ar(i), prm%rho0)
-        st%rho(i) = max(2.0_rp * st%rho(i) - st%rhoo(i), prm%rho0)
-      end do
-      call update_eos(prm, st, 1, nb)
+    ! Planar runs without surface tension on several threads: both stages in one parallel
+    ! region, whose threads run the particle loops of the gather, the sweeps, the scatter
+    ! and the integrator as its orphaned worksharing loops (sorted_state.f90, in_team), so
+    ! that a step has the barriers those loops need and no more (libgomp's passive waits
+    ! make each barrier a futex sleep and wake-up).
+    if (.not. one_thread() .and. prm%geometry /= GEOM_AXISYMMETRIC .and. prm%periodic_z == 0 &
+        .and. .not. prm%sigma > 0.0_rp) then
+      call thread_lists(s)
+      !$omp parallel
+      call set_open_team(.true.)
+      call pc_stages(prm, kern, st, s, info, work, dbc_now, vgate, vmax, dt_p, dt_c)
+      call set_open_team(.false.)
+      !$omp end parallel
+    else
+      call pc_stages(prm, kern, st, s, info, work, dbc_now, vgate, vmax, dt_p, dt_c)
     end if
 
     call move_gate(prm, st, info%time, dt)
@@ -151,6 +134,69 @@ contains
     if (status /= SPH_OK) return
 
   end subroutine pc_step
+
+
+  !> The predictor and corrector stages of pc_step, called by every thread of a parallel
+  !> region or by this thread alone (then the `single` sections run here and every set of
+  !> loops opens its own region). What the stages decide goes to the caller's (shared)
+  !> variables: vmax, dt_p, dt_c and info.
+  subroutine pc_stages(prm, kern, st, s, info, work, dbc_now, vgate, vmax, dt_p, dt_c)
+    type(sph_params_t), intent(in) :: prm
+    type(kernel_t), intent(in) :: kern
+    type(state_t), intent(inout), target :: st
+    type(sorted_t), intent(inout) :: s
+    type(sph_step_info_t), intent(inout) :: info
+    type(step_work_t), intent(inout) :: work
+    logical, intent(in) :: dbc_now
+    real(rp), intent(in) :: vgate
+    real(rp), intent(inout) :: vmax, dt_p, dt_c
+    real(rp) :: dtf, dtcv
+    integer :: i
+
+    ! ---- predictor ----
+    call compute_rates(prm, kern, st, s, vmax)
+    if (prm%variable_dt /= 0) then
+      !$omp single
+      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_p)
+      !$omp end single
+    end if
+    ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
+    ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
+    ! barrier costs a thread wake-up, a large share of a small case's step.
+    call in_team(work, PREDICT)
+    if (dbc_now) then
+      !$omp single
+      do i = 1, st%nb
+        st%rho(i) = max(st%rhoo(i) + work%dt2 * st%ar(i), prm%rho0)
+      end do
+      call update_eos(prm, st, 1, st%nb)
+      !$omp end single
+    end if
+
+    ! ---- corrector ----
+    call compute_rates(prm, kern, st, s, vmax)
+    if (prm%variable_dt /= 0) then
+      !$omp single
+      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_c)
+      info%dt_f = dtf
+      info%dt_cv = dtcv
+      info%dt_new = dt_c
+      !$omp end single
+    end if
+    ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
+    ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
+    ! final density: the half step's p and c would be overwritten unread).
+    call in_team(work, CORRECT)
+    if (dbc_now) then
+      !$omp single
+      do i = 1, st%nb
+        st%rho(i) = max(st%rhoo(i) + work%dt2 * st%ar(i), prm%rho0)
+        st%rho(i) = max(2.0_rp * st%rho(i) - st%rhoo(i), prm%rho0)
+      end do
+      call update_eos(prm, st, 1, st%nb)
+      !$omp end single
+    end if
+  end subroutine pc_stages
 
   !> The predictor's loop (start-of-step values kept, the fluid's half step and EoS) or the
   !> corrector's (half step, extrapolation, EoS of every non-boundary particle): orphaned
@@ -189,7 +235,9 @@ contains
           end if
           call eos_one(prm, st, j)
         end do
-        !$omp end do
+        ! no barrier: what follows (the DBC update of particles 1..nb, pc_stages) reads
+        ! nothing this loop writes, and the region ends with one
+        !$omp end do nowait
       end if
     end associate
   end subroutine step_loops

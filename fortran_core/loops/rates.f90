@@ -98,23 +98,28 @@ contains
       body%zero = 0.0_rp
     end if
 
-    ! tensile R and the wall geometry in sorted order (an axis image's normal is mirrored)
+    ! tensile R and the wall geometry in sorted order (an axis image's normal is mirrored);
+    ! in an open team (sorted_state.f90) by one of its threads
     body%inv_wdp = 0.0_rp
     if (body%tensile) then
       call kernel_eval(kern, tensile_q(kern%kind) * prm%h, wdp, fdummy)
       body%inv_wdp = 1.0_rp / wdp
-      s%tr(1:n) = tensile_r(s%p(1:n), s%pr(1:n))
     end if
-    if (body%repulsive) then
-      do k = 1, n
-        i = s%src(k)
-        if (i <= st%nb) then
-          s%wnx(k) = s%usign(k) * st%wall_nx(i); s%wnz(k) = st%wall_nz(i)
-          s%wdb(k) = st%wall_dback(i); s%wdf(k) = st%wall_dfwd(i)
-        else
-          s%wnx(k) = 0.0_rp; s%wnz(k) = 0.0_rp; s%wdb(k) = 0.0_rp; s%wdf(k) = 0.0_rp
-        end if
-      end do
+    if (body%tensile .or. body%repulsive) then
+      !$omp single
+      if (body%tensile) s%tr(1:n) = tensile_r(s%p(1:n), s%pr(1:n))
+      if (body%repulsive) then
+        do k = 1, n
+          i = s%src(k)
+          if (i <= st%nb) then
+            s%wnx(k) = s%usign(k) * st%wall_nx(i); s%wnz(k) = st%wall_nz(i)
+            s%wdb(k) = st%wall_dback(i); s%wdf(k) = st%wall_dfwd(i)
+          else
+            s%wnx(k) = 0.0_rp; s%wnz(k) = 0.0_rp; s%wdb(k) = 0.0_rp; s%wdf(k) = 0.0_rp
+          end if
+        end do
+      end if
+      !$omp end single
     end if
 
     ! with surface tension, the pairs are kept for its passes (surface_tension_loops.f90)

@@ -34,11 +34,19 @@ module sorted_state
   use cell_list, only: cell_grid_t, build_cell_list
   use pair_list, only: pair_list_t
   use verlet_list, only: row_list_t, build_verlet_rows
-  !$ use omp_lib, only: omp_get_max_threads
+  !$ use omp_lib, only: omp_get_max_threads, omp_in_parallel
   implicit none
   private
   public :: sorted_t, gather_sorted, scatter_rates, copy_to_images, thread_lists, one_thread, &
-            team_work_t, in_team, SKIN_PER_H
+            team_work_t, in_team, in_open_team, set_open_team, SKIN_PER_H
+
+  !> Whether this thread runs in a team that a caller has opened for several sets of loops
+  !> (predictor_corrector.f90: one parallel region per step). Every thread of that team then
+  !> calls in_team, gather_sorted, pair_sweep and scatter_rates together, and their loops
+  !> are the team's orphaned worksharing loops (no region of their own). Per thread, so that
+  !> the thread that runs a `single` section can clear it there (gather_sorted).
+  logical, save :: open_team = .false.
+  !$omp threadprivate(open_team)
 
   !> Skin of the neighbour list in units of h (cutoff 2h + skin). Case1 rebuilds every ~50
   !> steps with 0.3 h; 0.15 h ran at the same speed there (README, Performance).
@@ -108,15 +116,28 @@ contains
     real(rp), intent(in) :: h
     type(sorted_t), intent(inout), target :: s
     type(sph_params_t), intent(in), optional :: prm
-    integer :: k, i, n, nact
-    real(rp) :: skin, d2max
-    logical :: valid, images, axi
+    integer :: k, i, n
+    logical :: images, axi
     real(rp), allocatable :: xe(:), ze(:), sg(:)
     integer(ip), allocatable :: ae(:)
-    integer, allocatable :: isrc(:), isrc_slot(:)
+    integer, allocatable :: isrc(:)
     logical, allocatable :: fe(:)
     type(sorted_work_t) :: work
 
+    if (open_team) then
+      ! every thread of the step's team (no images there: predictor_corrector.f90); the list
+      ! and the slots' sources by one thread
+      !$omp single
+      open_team = .false.   ! a build's loops in a (nested, one-thread) region of their own
+      call update_list(st, h, s)
+      call slot_sources(st, s, .false.)
+      open_team = .true.
+      !$omp end single
+      work%st => st
+      work%s => s
+      call in_team(work, GATHER)
+      return
+    end if
     images = .false.
     axi = .false.
     if (present(prm)) then
@@ -135,31 +156,7 @@ contains
       call build(xe, ze, ae, fe, h, 0.0_rp, s)
       s%built = .false.
     else
-      skin = s%skin_per_h * h
-      valid = s%built .and. s%n_all == st%n
-      if (associated(st%list_x) .and. associated(st%list_z)) then
-        ! the caller's build positions are the reference; ours may be of another run
-        if (valid) valid = all(s%xb(1:st%n) == st%list_x) .and. all(s%zb(1:st%n) == st%list_z)
-        if (.not. valid .and. listed_positions(st)) then
-          call build(st%list_x, st%list_z, st%active, st%kind == KIND_FLUID, h, skin, s)
-          valid = .true.
-        end if
-      end if
-      if (valid) then
-        work%st => st
-        work%s => s
-        call in_team(work, MOVES)
-        nact = work%nact
-        d2max = work%d2max
-        valid = nact == s%n_active .and. d2max <= (0.5_rp * skin)**2
-      end if
-      if (.not. valid) then
-        call build(st%x, st%z, st%active, st%kind == KIND_FLUID, h, skin, s)
-        if (associated(st%list_x) .and. associated(st%list_z)) then
-          st%list_x = st%x
-          st%list_z = st%z
-        end if
-      end if
+      call update_list(st, h, s)
     end if
 
     n = s%n
@@ -184,32 +181,88 @@ contains
     work%s => s
     work%images = images
     call in_team(work, GATHER)
+    call slot_sources(st, s, images)
+    if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
+  end subroutine gather_sorted
+
+  !> Planar runs: the sorted order and the neighbour list, built again when the caller's
+  !> build positions differ from ours or a particle has moved more than skin/2 since the
+  !> build (or the active set changed).
+  subroutine update_list(st, h, s)
+    type(state_t), intent(inout), target :: st
+    real(rp), intent(in) :: h
+    type(sorted_t), intent(inout), target :: s
+    real(rp) :: skin, d2max
+    integer :: nact
+    logical :: valid, alone
+    type(sorted_work_t) :: work
+    skin = s%skin_per_h * h
+    valid = s%built .and. s%n_all == st%n
+    if (associated(st%list_x) .and. associated(st%list_z)) then
+      ! the caller's build positions are the reference; ours may be of another run
+      if (valid) valid = all(s%xb(1:st%n) == st%list_x) .and. all(s%zb(1:st%n) == st%list_z)
+      if (.not. valid .and. listed_positions(st)) then
+        call build(st%list_x, st%list_z, st%active, st%kind == KIND_FLUID, h, skin, s)
+        valid = .true.
+      end if
+    end if
+    if (valid) then
+      work%st => st
+      work%s => s
+      alone = .false.
+      !$ alone = omp_in_parallel()
+      if (alone) then   ! in an open team's single section (gather_sorted)
+        call count_moves(st, s, work%nact, work%d2max, .true.)
+      else
+        call in_team(work, MOVES)
+      end if
+      nact = work%nact
+      d2max = work%d2max
+      valid = nact == s%n_active .and. d2max <= (0.5_rp * skin)**2
+    end if
+    if (.not. valid) then
+      call build(st%x, st%z, st%active, st%kind == KIND_FLUID, h, skin, s)
+      if (associated(st%list_x) .and. associated(st%list_z)) then
+        st%list_x = st%x
+        st%list_z = st%z
+      end if
+    end if
+  end subroutine update_list
+
+  !> s%n_real, and the slot of each slot's source particle (src_slot; needs s%src with
+  !> images, from gather_sorted).
+  subroutine slot_sources(st, s, images)
+    type(state_t), intent(in) :: st
+    type(sorted_t), intent(inout) :: s
+    logical, intent(in) :: images
+    integer :: k
+    integer, allocatable :: isrc_slot(:)
     s%n_real = count(st%active(1:st%n) /= 0)
     if (images) then
       ! the slot of each image's source: multi-pass loops (CSF) copy the source's fields to
       ! its images between passes, since an image's own sums lack the neighbours beyond the
       ! image band (copy_to_images)
       allocate(isrc_slot(st%n))
-      do k = 1, n
+      do k = 1, s%n
         if (s%grid%order(k) <= st%n) isrc_slot(s%grid%order(k)) = k
       end do
-      do k = 1, n
+      do k = 1, s%n
         s%src_slot(k) = isrc_slot(s%src(k))
       end do
     else
-      do k = 1, n
+      do k = 1, s%n
         s%src_slot(k) = k
       end do
     end if
-    if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
-  end subroutine gather_sorted
+  end subroutine slot_sources
 
   !> Runs work%run(which) in a parallel region, or directly when one thread is in use
-  !> (one_thread: no region, no barrier).
+  !> (one_thread: no region, no barrier) or when every thread of an open team calls it
+  !> (set_open_team).
   subroutine in_team(work, which)
     class(team_work_t), intent(inout) :: work
     integer, intent(in) :: which
-    if (one_thread()) then
+    if (one_thread() .or. open_team) then
       call work%run(which)
     else
       !$omp parallel
@@ -232,21 +285,37 @@ contains
   end subroutine sorted_run
 
   !> Active particles (na) and their largest squared move since the build (d2): zero in,
-  !> reduced over the threads.
-  subroutine count_moves(st, s, na, d2)
+  !> reduced over the threads (a worksharing loop), or by this thread alone.
+  subroutine count_moves(st, s, na, d2, alone)
     type(state_t), intent(in) :: st
     type(sorted_t), intent(in) :: s
     integer, intent(inout) :: na
     real(rp), intent(inout) :: d2
+    logical, intent(in), optional :: alone
     integer :: j
+    if (present(alone)) then
+      do j = 1, st%n
+        call add_move(st, s, j, na, d2)
+      end do
+      return
+    end if
     !$omp do schedule(static) reduction(+:na) reduction(max:d2)
     do j = 1, st%n
-      if (st%active(j) == 0) cycle
-      na = na + 1
-      d2 = max(d2, (st%x(j) - s%xb(j))**2 + (st%z(j) - s%zb(j))**2)
+      call add_move(st, s, j, na, d2)
     end do
     !$omp end do
   end subroutine count_moves
+
+  pure subroutine add_move(st, s, j, na, d2)
+    type(state_t), intent(in) :: st
+    type(sorted_t), intent(in) :: s
+    integer, intent(in) :: j
+    integer, intent(inout) :: na
+    real(rp), intent(inout) :: d2
+    if (st%active(j) == 0) return
+    na = na + 1
+    d2 = max(d2, (st%x(j) - s%xb(j))**2 + (st%z(j) - s%zb(j))**2)
+  end subroutine add_move
 
   !> The fields of the source particles s%src(1:s%n) into the slots of s (but x, z with
   !> images: the caller's), an image's u times its sign, and zero sums. One field at a time:
@@ -427,11 +496,25 @@ contains
   !> Whether the next parallel regions would have one thread. Then the loops run without a
   !> region (their orphaned worksharing constructs serially): with libgomp every barrier, and
   !> so every region, costs a futex system call even for a team of one, and a small case's
-  !> step has dozens of them.
+  !> step has dozens of them. Not in a parallel region: a thread alone in a team's `single`
+  !> section must open a (nested, one-thread) region for orphaned loops.
   logical function one_thread()
     one_thread = .true.
-    !$ one_thread = omp_get_max_threads() == 1
+    !$ one_thread = omp_get_max_threads() == 1 .and. .not. omp_in_parallel()
   end function one_thread
+
+  !> Whether this thread is one of an open team (set_open_team) whose threads all call the
+  !> particle loops together.
+  logical function in_open_team()
+    in_open_team = open_team
+  end function in_open_team
+
+  !> Every thread of a parallel region calls this with .true. at its start (the loops called
+  !> afterwards run as the region's orphaned worksharing loops) and with .false. at its end.
+  subroutine set_open_team(on)
+    logical, intent(in) :: on
+    open_team = on
+  end subroutine set_open_team
 
   !> One pair list per thread (at least omp_get_max_threads()), kept in the work space from
   !> sweep to sweep.

@@ -18,7 +18,7 @@
 module traversal
   use sphjet_kinds, only: rp
   use sphjet_kernels, only: kernel_t, kernel_eval_list
-  use sorted_state, only: sorted_t, thread_lists, one_thread
+  use sorted_state, only: sorted_t, thread_lists, one_thread, in_open_team
   use pair_list, only: pair_list_t, reserve
   !$ use omp_lib, only: omp_get_thread_num
   implicit none
@@ -75,6 +75,13 @@ contains
     integer :: how
     how = SWEEP_FRESH
     if (present(cache)) how = cache
+    if (in_open_team()) then
+      ! every thread of an open team (sorted_state.f90): the thread lists were made before
+      ! the team opened (pc_step); kept lists are not made here (pc_step opens no team with
+      ! surface tension, whose sweeps keep them)
+      call sweep_thread(s, kern, mode, how, body, red)
+      return
+    end if
     call thread_lists(s)
     if (how == SWEEP_KEEP) then
       if (allocated(s%cache)) then
@@ -85,13 +92,14 @@ contains
     if (one_thread()) then
       call sweep_thread(s, kern, mode, how, body, red)
     else
-      !$omp parallel reduction(max:red)
+      !$omp parallel
       call sweep_thread(s, kern, mode, how, body, red)
       !$omp end parallel
     end if
   end subroutine pair_sweep
 
-  !> One thread's share of a sweep, with the thread's own pair list (or the kept ones).
+  !> One thread's share of a sweep, with the thread's own pair list (or the kept ones); red
+  !> is shared by the team (reduced over the tasks of each phase).
   subroutine sweep_thread(s, kern, mode, how, body, red)
     type(sorted_t), intent(inout), target :: s
     type(kernel_t), intent(in) :: kern
@@ -104,7 +112,7 @@ contains
     !$ me = omp_get_thread_num() + 1
     pl => s%lists(me)
     do phase = 0, 1
-      !$omp do schedule(dynamic, 1)
+      !$omp do schedule(dynamic, 1) reduction(max:red)
       do row = phase, s%grid%ncz - 1, 2
         if (how /= SWEEP_FRESH) pl => s%cache(row)
         if (how /= SWEEP_REUSE) then
