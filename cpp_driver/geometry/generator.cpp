@@ -240,7 +240,7 @@ private:
     void nozzle_fluid(const NozzleSpec& nz, const NozzleLayout& lay) {
         const double m = p_.rho0 * lay.spacing_across * lay.spacing_along;
         const double rho = axi_ ? laplace_density(2 * p_.sigma / nz.d0) : p_.rho0;
-        const double pr = p_.B > 0 ? p_.B * (std::pow(rho / p_.rho0, p_.gamma) - 1.0) : 0.0;
+        const double pr = tait_pressure(rho);
         for (const NozzlePoint& q : lay.fluid)
             ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, rho, pr, m, ParticleKind::Fluid);
     }
@@ -516,6 +516,11 @@ private:
         return p_.rho0 * std::pow(1.0 + p / p_.B, 1.0 / p_.gamma);
     }
 
+    // The Tait pressure at the density rho (0 when B = 0), the inverse of laplace_density.
+    [[nodiscard]] double tait_pressure(double rho) const {
+        return p_.B > 0 ? p_.B * (std::pow(rho / p_.rho0, p_.gamma) - 1.0) : 0.0;
+    }
+
     // A sphere of concentric half rings (axisymmetric, a FluidDisc with rings and xc = 0):
     // N = max(1, round(R / dx)) rings at radii (j - 1/2) ds, ds = R / N, j = 1..N (no centre
     // particle: it would sit on the axis), ring j holding n_j = 2 round(pi (j - 1/2)) particles
@@ -546,7 +551,7 @@ private:
                 // surface tension), so that switching the tension on starts no breathing mode
                 const double rho = g == 0 ? laplace_density(2 * p_.sigma / d.radius)
                                           : rho0 * std::pow(1.0 + rho0 * g * (ztop - z) / p_.B, 1.0 / p_.gamma);
-                const double pr = p_.B > 0 ? p_.B * (std::pow(rho / rho0, p_.gamma) - 1.0) : 0.0;
+                const double pr = tait_pressure(rho);
                 ps_.push(x, z, d.u0, d.w0, rho, pr, rho * area * sx * sz, ParticleKind::Fluid);
             }
         }
@@ -564,7 +569,7 @@ private:
     void cylinder(const FluidCylinder& c) {
         const double pi = std::numbers::pi;
         const double rho = laplace_density(p_.sigma / c.radius);
-        const double pr = p_.B > 0 ? p_.B * (std::pow(rho / p_.rho0, p_.gamma) - 1.0) : 0.0;
+        const double pr = tait_pressure(rho);
         const long ncol = std::max(1L, nint(c.radius / p_.dx));
         const long nrow = std::max(1L, nint((c.zmax - c.zmin) / p_.dz));
         const double dr = c.radius / static_cast<double>(ncol);
