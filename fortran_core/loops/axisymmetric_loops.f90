@@ -15,7 +15,8 @@ module axisymmetric_loops
   use sphjet_types, only: sph_params_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
-  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID
+  use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_FRESH, &
+                       SWEEP_REUSE
   use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
                           AXIS_TABLE_N
   implicit none
@@ -39,14 +40,17 @@ module axisymmetric_loops
 contains
 
   !> Sets s%ar and adds the pressure (and laminar hoop) accelerations to s%ax, s%az of the real
-  !> slots.
-  subroutine axisymmetric_rates(prm, kern, s, n_state)
+  !> slots. kept (default .false.): visit the pairs the last sweep at these positions kept
+  !> (pair_sweep with SWEEP_KEEP, PAIRS_ANY_FLUID: the rates sweep's) instead of finding them
+  !> and evaluating the kernel again; the same pairs in the same order either way.
+  subroutine axisymmetric_rates(prm, kern, s, n_state, kept)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(sorted_t), intent(inout), target :: s
     integer, intent(in) :: n_state
+    logical, intent(in), optional :: kept
     type(axi_body_t) :: body
-    integer :: k, n
+    integer :: k, n, how
     real(rp) :: red, hx, hz
     real(rp), allocatable :: gi(:), hoop(:)
     logical :: laminar
@@ -67,7 +71,9 @@ contains
     body%laminar = laminar
     body%s => s
     red = 0.0_rp
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, red)
+    how = SWEEP_FRESH
+    if (present(kept)) how = merge(SWEEP_REUSE, SWEEP_FRESH, kept)
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, red, how)
     !$omp parallel do schedule(static) private(hx, hz)
     do k = 1, n
       if (s%grid%order(k) > n_state) cycle
@@ -108,38 +114,47 @@ contains
     class(axi_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
-    integer :: k, a, b
-    real(rp) :: g, du, dw, gx, gz, q, t
-    associate (u => self%s%u, w => self%s%w, mu => self%mu, v => self%v, pg => self%pg, &
-               cont => self%cont, pax => self%pax, paz => self%paz, &
-               dudr => self%dudr, dwdr => self%dwdr, fl => self%s%fluid)
-      do k = 1, pl%n
-        a = pl%a(k)
-        b = pl%b(k)
-        gx = pl%f(k) * pl%dx(k)
-        gz = pl%f(k) * pl%dz(k)
-        ! continuity: a gets mu_b v_ab . grad_a W_ab, b mu_a v_ab . grad_a W_ab
-        q = (u(a) - u(b)) * gx + (w(a) - w(b)) * gz
-        cont(a) = cont(a) + mu(b) * q
-        cont(b) = cont(b) + mu(a) * q
-        ! pressure: a gets -mu_b (P_a/g_a + P_b/g_b) grad_a W_ab, b the opposite with mu_a
-        t = pg(a) + pg(b)
-        pax(a) = pax(a) - mu(b) * t * gx
-        paz(a) = paz(a) - mu(b) * t * gz
-        pax(b) = pax(b) + mu(a) * t * gx
-        paz(b) = paz(b) + mu(a) * t * gz
-        if (.not. (self%laminar .and. fl(a) .and. fl(b))) cycle
-        ! dW_ab/dx_a = F dx; dW_ba/dx_b = -F dx, and u_a - u_b = -(u_b - u_a): both get + g du
-        g = pl%f(k) * pl%dx(k)
-        du = u(b) - u(a)
-        dw = w(b) - w(a)
-        dudr(a) = dudr(a) + v(b) * du * g
-        dwdr(a) = dwdr(a) + v(b) * dw * g
-        dudr(b) = dudr(b) + v(a) * du * g
-        dwdr(b) = dwdr(b) + v(a) * dw * g
-      end do
-    end associate
+    call axi_pairs(self%laminar, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, self%s%u, self%s%w, &
+                   self%s%fluid, self%mu, self%v, self%pg, self%cont, self%pax, self%paz, &
+                   self%dudr, self%dwdr)
     red = max(red, 0.0_rp)
   end subroutine axi_visit
+
+  !> The sums of the sweep over the pairs of one list. Plain arrays, so that the loop keeps
+  !> their addresses in registers.
+  pure subroutine axi_pairs(laminar, np, pa, pb, dx, dz, f, u, w, fl, mu, v, pg, cont, pax, &
+                            paz, dudr, dwdr)
+    logical, intent(in) :: laminar
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), u(*), w(*), mu(*), v(*), pg(*)
+    logical, intent(in) :: fl(*)
+    real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*)
+    integer :: k, a, b
+    real(rp) :: du, dw, gx, gz, q, t
+    do k = 1, np
+      a = pa(k)
+      b = pb(k)
+      gx = f(k) * dx(k)
+      gz = f(k) * dz(k)
+      ! continuity: a gets mu_b v_ab . grad_a W_ab, b mu_a v_ab . grad_a W_ab
+      q = (u(a) - u(b)) * gx + (w(a) - w(b)) * gz
+      cont(a) = cont(a) + mu(b) * q
+      cont(b) = cont(b) + mu(a) * q
+      ! pressure: a gets -mu_b (P_a/g_a + P_b/g_b) grad_a W_ab, b the opposite with mu_a
+      t = pg(a) + pg(b)
+      pax(a) = pax(a) - mu(b) * t * gx
+      paz(a) = paz(a) - mu(b) * t * gz
+      pax(b) = pax(b) + mu(a) * t * gx
+      paz(b) = paz(b) + mu(a) * t * gz
+      if (.not. (laminar .and. fl(a) .and. fl(b))) cycle
+      ! dW_ab/dx_a = F dx; dW_ba/dx_b = -F dx, and u_a - u_b = -(u_b - u_a): both get + g du
+      du = u(b) - u(a)
+      dw = w(b) - w(a)
+      dudr(a) = dudr(a) + v(b) * du * gx
+      dwdr(a) = dwdr(a) + v(b) * dw * gx
+      dudr(b) = dudr(b) + v(a) * du * gx
+      dwdr(b) = dwdr(b) + v(a) * dw * gx
+    end do
+  end subroutine axi_pairs
 
 end module axisymmetric_loops

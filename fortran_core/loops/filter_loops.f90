@@ -63,6 +63,10 @@ contains
       if (mls .and. pass == 1) then
         do k = 1, n
           if (.not. s%fluid(k)) cycle
+          if (s%src_slot(k) /= k) then   ! an image: its sums (no image-image pairs) are discarded
+            body%beta(:, k) = 0.0_rp
+            cycle
+          end if
           body%acc(1, k) = body%acc(1, k) + w0 * body%v(k)
           call mls_beta(body%acc(:, k), body%beta(:, k), sing)
           if (sing) n_singular = n_singular + 1

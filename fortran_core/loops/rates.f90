@@ -122,12 +122,14 @@ contains
       !$omp end single
     end if
 
-    ! with surface tension, the pairs are kept for its passes (surface_tension_loops.f90)
+    ! the pairs are kept for the sweeps that follow at the same positions: the axisymmetric
+    ! sums and the surface tension passes (surface_tension_loops.f90)
     st_on = prm%sigma > 0.0_rp
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, merge(SWEEP_KEEP, SWEEP_FRESH, st_on))
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, &
+                    merge(SWEEP_KEEP, SWEEP_FRESH, st_on .or. body%axi_pressure))
 
     ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
-    if (prm%geometry == GEOM_AXISYMMETRIC) call axisymmetric_rates(prm, kern, s, st%n)
+    if (body%axi_pressure) call axisymmetric_rates(prm, kern, s, st%n, kept=.true.)
 
     if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
 

@@ -7,7 +7,7 @@
 !> every particle or axis image within 2h of z = dom_zmin or dom_zmax (z -+ lz). An image slot
 !> has grid%order(k) > st%n, src(k) its source particle; the pair sums treat it as any
 !> neighbour and what accumulates in its slot is discarded: every real particle sees each of
-!> its neighbours, real or image, once. In axisymmetric mode m holds the planar mass
+!> its neighbours, real or image, once. Pairs of two images are therefore not listed. In axisymmetric mode m holds the planar mass
 !> m / (2 pi r) (physics/axisymmetric.f90), so that every pair loop is the SPH of the
 !> meridian plane.
 !>
@@ -153,7 +153,7 @@ contains
       do i = st%n + 1, size(xe)
         fe(i) = st%kind(isrc(i - st%n)) == KIND_FLUID
       end do
-      call build(xe, ze, ae, fe, h, 0.0_rp, s)
+      call build(xe, ze, ae, fe, h, 0.0_rp, s, n_real=st%n)
       s%built = .false.
     else
       call update_list(st, h, s)
@@ -456,17 +456,22 @@ contains
 
   !> Sorts the active entries of xl, zl (the particles, then any images) by cell of side
   !> 2h + skin and lists their pairs closer than 2h + skin there (with at least one fluid
-  !> entry, fl); keeps xl, zl as the build positions.
-  subroutine build(xl, zl, act, fl, h, skin, s)
+  !> entry, fl, and at least one of the first n_real entries, the particles; default all);
+  !> keeps xl, zl as the build positions.
+  subroutine build(xl, zl, act, fl, h, skin, s, n_real)
     real(rp), intent(in) :: xl(:), zl(:), h, skin
     integer(ip), intent(in) :: act(:)
     logical, intent(in) :: fl(:)
     type(sorted_t), intent(inout) :: s
-    integer :: k, i, n, n_all
+    integer, intent(in), optional :: n_real
+    integer :: k, i, n, n_all, nr
     real(rp) :: cut
+    logical, allocatable :: real_slot(:)
 
     cut = 2.0_rp * h + skin
     n_all = size(xl)
+    nr = n_all
+    if (present(n_real)) nr = n_real
     call build_cell_list(xl, zl, act, cut, s%grid)
     n = s%grid%nsorted
     s%n = n
@@ -483,14 +488,16 @@ contains
     end if
     if (.not. allocated(s%rows)) allocate(s%rows(0:s%grid%ncz - 1))
     ! the build positions in sorted order (s%x, s%z are gathered again afterwards)
+    allocate(real_slot(n))
     do k = 1, n
       i = s%grid%order(k)
       s%x(k) = xl(i)
       s%z(k) = zl(i)
       s%fluid(k) = fl(i)
+      real_slot(k) = i <= nr
     end do
-    call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), cut * cut, s%all_pairs, &
-                           s%lists, s%rows)
+    call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), real_slot, cut * cut, &
+                           s%all_pairs, s%lists, s%rows)
   end subroutine build
 
   !> Whether the next parallel regions would have one thread. Then the loops run without a

@@ -85,7 +85,6 @@ module surface_tension_loops
     !> axisymmetric only: the colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab of the mode's
     !> density and its gradient, which decide where the free surface is (see below)
     real(rp), allocatable :: c2(:), n2x(:), n2z(:)
-    real(rp), allocatable :: sx(:), sz(:)   !< scratch: the planar normal pass's delta sums
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -150,7 +149,7 @@ contains
                         colour_delta=colour_delta, axi=axi)
 
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
-      allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n), wk%sx(n), wk%sz(n))
+      allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
       wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
     else
@@ -251,8 +250,6 @@ contains
             wk%c2(k) = merge(wk%vmu(k) * w0, 0.0_rp, s%fluid(k))
             wk%n2x(k) = 0.0_rp
             wk%n2z(k) = 0.0_rp
-            wk%sx(k) = 0.0_rp
-            wk%sz(k) = 0.0_rp
           end if
         end do
         !$omp end do
@@ -353,17 +350,14 @@ contains
       case (PASS_COLOUR)
         call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
         if (self%axi) call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%vmu, wk%c2)
-      case (PASS_NORMAL)
+      case (PASS_NORMAL)   ! axisymmetric: also the gradient of the mode's colour
         if (self%axi) then
-          ! the planar normal (its delta sums discarded), then the mode's colour gradient
-          ! with the delta sums of its pressure pair
-          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
-                            wk%vmu, wk%gi, wk%nx, wk%nz, wk%sx, wk%sz)
-          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%vmu, wk%c2, &
-                            wk%vmu, wk%gi, wk%n2x, wk%n2z, wk%gx, wk%gz)
-        else
-          call normal_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, wk%c, &
-                            wk%v, wk%gi, wk%nx, wk%nz, wk%gx, wk%gz)
+          call normal_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
+                            wk%c, wk%vmu, wk%gi, wk%c2, wk%nx, wk%nz, wk%n2x, wk%n2z, &
+                            wk%gx, wk%gz)
+        else   ! c2, n2x, n2z not referenced
+          call normal_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
+                            wk%c, wk%v, wk%gi, wk%c, wk%nx, wk%nz, wk%nx, wk%nz, wk%gx, wk%gz)
         end if
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
@@ -393,14 +387,18 @@ contains
   end subroutine colour_pairs
 
   !> Normal (eq 18) and the free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab
-  !> of the fluid pairs of a list, in one loop (two independent sets of sums): for the
-  !> delta, planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller);
-  !> axisymmetric V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair).
-  pure subroutine normal_pairs(np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, nx, nz, gxs, gzs)
+  !> of the fluid pairs of a list, in one loop (independent sets of sums): for the delta,
+  !> planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller); axisymmetric
+  !> V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair). two (axisymmetric):
+  !> also the gradient n2 of the second colour c2 with the weights vmu, in the same loop;
+  !> otherwise c2, n2x, n2z are not referenced.
+  pure subroutine normal_pairs(two, np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, c2, nx, nz, &
+                               n2x, n2z, gxs, gzs)
+    logical, intent(in) :: two
     integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), f(*), v(*), c(*), vmu(*), gi(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), v(*), c(*), vmu(*), gi(*), c2(*)
     logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: nx(*), nz(*), gxs(*), gzs(*)
+    real(rp), intent(inout) :: nx(*), nz(*), n2x(*), n2z(*), gxs(*), gzs(*)
     integer :: k, a, b
     real(rp) :: gx, gz, da1, da2, db1, db2, gsum
     do k = 1, np
@@ -414,6 +412,13 @@ contains
       nz(a) = nz(a) + da2
       nx(b) = nx(b) + db1
       nz(b) = nz(b) + db2
+      if (two) then
+        call csf_normal_pair(vmu(a), vmu(b), c2(a), c2(b), gx, gz, da1, da2, db1, db2)
+        n2x(a) = n2x(a) + da1
+        n2z(a) = n2z(a) + da2
+        n2x(b) = n2x(b) + db1
+        n2z(b) = n2z(b) + db2
+      end if
       gsum = (gi(a) + gi(b)) * f(k)
       gx = gsum * dx(k)
       gz = gsum * dz(k)

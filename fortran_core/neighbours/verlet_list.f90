@@ -25,11 +25,13 @@ contains
 
   !> Lists of the rows 0 .. grid%ncz - 1 into rows(0:): the pairs closer than sqrt(cut2) of
   !> the sorted positions x, z (cells of side at least sqrt(cut2)), with at least one fluid
-  !> particle unless all_pairs. scratch: one pair list per thread (candidates of a row).
-  subroutine build_verlet_rows(grid, x, z, fluid, cut2, all_pairs, scratch, rows)
+  !> particle unless all_pairs, and at least one real one (real: not an image slot, see
+  !> loops/sorted_state.f90: a pair of two images adds only to image sums, which are
+  !> discarded). scratch: one pair list per thread (candidates of a row).
+  subroutine build_verlet_rows(grid, x, z, fluid, real, cut2, all_pairs, scratch, rows)
     type(cell_grid_t), intent(in) :: grid
     real(rp), intent(in) :: x(:), z(:), cut2
-    logical, intent(in) :: fluid(:), all_pairs
+    logical, intent(in) :: fluid(:), real(:), all_pairs
     type(pair_list_t), intent(inout), target :: scratch(:)
     type(row_list_t), intent(inout) :: rows(0:)
     integer :: row, me
@@ -38,7 +40,7 @@ contains
     !$ me = omp_get_thread_num() + 1
     !$omp do schedule(dynamic, 1)
     do row = 0, grid%ncz - 1
-      call build_row(grid, row, x, z, fluid, cut2, all_pairs, scratch(me), rows(row))
+      call build_row(grid, row, x, z, fluid, real, cut2, all_pairs, scratch(me), rows(row))
     end do
     !$omp end do
     !$omp end parallel
@@ -46,11 +48,11 @@ contains
 
   !> The list of one row: candidates of the cell stencil gathered into the scratch list, the
   !> kept ones copied into the row's own arrays (sized to what is kept, not to the candidates).
-  subroutine build_row(grid, row, x, z, fluid, cut2, all_pairs, sc, rl)
+  subroutine build_row(grid, row, x, z, fluid, real, cut2, all_pairs, sc, rl)
     type(cell_grid_t), intent(in) :: grid
     integer, intent(in) :: row
     real(rp), intent(in) :: x(:), z(:), cut2
-    logical, intent(in) :: fluid(:), all_pairs
+    logical, intent(in) :: fluid(:), real(:), all_pairs
     type(pair_list_t), intent(inout) :: sc
     type(row_list_t), intent(inout) :: rl
     integer :: cx, c, ncx, ncz, m
@@ -93,7 +95,8 @@ contains
       do a = grid%start(c), grid%start(c + 1) - 1
         b0 = merge(a + 1, grid%start(cb), self)
         if (b1 < b0) cycle
-        call keep_within(a, b0, b1, x, z, fluid, cut2, all_pairs .or. fluid(a), sc%n, sc%a, sc%b)
+        call keep_within(a, b0, b1, x, z, fluid, real, cut2, all_pairs .or. fluid(a), real(a), &
+                         sc%n, sc%a, sc%b)
       end do
     end subroutine cell_pair
 
@@ -109,12 +112,13 @@ contains
 
   end subroutine build_row
 
-  !> Appends the pairs (a, b), b = b0..b1, with r^2 < cut2 (and b fluid unless any_b) at
-  !> n+1...: every candidate is written and kept by advancing n (no data-dependent branch).
-  pure subroutine keep_within(a, b0, b1, x, z, fluid, cut2, any_b, n, pa, pb)
+  !> Appends the pairs (a, b), b = b0..b1, with r^2 < cut2 (and b fluid unless any_b, b real
+  !> unless real_a) at n+1...: every candidate is written and kept by advancing n (no
+  !> data-dependent branch).
+  pure subroutine keep_within(a, b0, b1, x, z, fluid, real, cut2, any_b, real_a, n, pa, pb)
     integer, intent(in) :: a, b0, b1
     real(rp), intent(in) :: x(:), z(:), cut2
-    logical, intent(in) :: fluid(:), any_b
+    logical, intent(in) :: fluid(:), real(:), any_b, real_a
     integer, intent(inout) :: n
     integer, intent(inout) :: pa(:), pb(:)
     integer :: b, k
@@ -128,7 +132,8 @@ contains
       pa(k + 1) = a
       pb(k + 1) = b
       ! products of 0/1, not .and.: the compiler would branch on each operand
-      k = k + merge(1, 0, dx * dx + dz * dz < cut2) * merge(1, 0, fluid(b) .or. any_b)
+      k = k + merge(1, 0, dx * dx + dz * dz < cut2) * merge(1, 0, fluid(b) .or. any_b) &
+            * merge(1, 0, real(b) .or. real_a)
     end do
     n = k
   end subroutine keep_within
