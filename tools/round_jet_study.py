@@ -4,10 +4,10 @@
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--set-name mc paper] [--only RUN ...] [--threads 2]
+      [--d0-over-dx 10] [--size-c C] [--set-name mc paper] [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--out cases/round_jet]
+      [--d0-over-dx 10] [--size-c C] [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -16,7 +16,9 @@ The disturbance amplitude EPS (nozzle.disturbance, the plug speed u0 (1 + EPS si
 k a = 0.697) is the one free parameter: the same for every run of a study directory.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
-(1 + 3 Oh_d) d0 for paper, at least 10 d0): it runs to T = 2.5 L_ref / U, the nozzle holds
+(1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
+for every run, at least 10 d0, in a study directory of its own: runs sized for jets that
+break well before the measured length, at a fraction of the cost): it runs to T = 2.5 L_ref / U, the nozzle holds
 the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d0 below the
 orifice (drops beyond leave the run). The breakup length of a run is the mean of the jet's
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.25 L_ref / U,
@@ -114,15 +116,17 @@ def sizing(u, d0, l_ref, n):
             f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"]
 
 
-def plan(eps, n):
-    """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas."""
+def plan(eps, n, size_c=None):
+    """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
+    = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length."""
     runs = []
     for u, l_meas in read_mc():
-        l_ref = max(l_meas, 10.0) * D0_MC
+        l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
         runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n),
                      {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas}))
     for u in PAPER_U0S:
-        l_ref = max(groups(u, D0_PAPER)["eq37_d"], 10.0) * D0_PAPER
+        g = groups(u, D0_PAPER)
+        l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
         runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n) + ["fluid.c0=4"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None}))
     return [(s, name, sets + [f"nozzle.disturbance={eps:g}"], info) for s, name, sets, info in runs]
@@ -131,15 +135,16 @@ def plan(eps, n):
 SET_NAMES = ("mc", "paper")
 
 
-def study_dir(root, eps, n):
-    return os.path.join(root, f"eps{eps:g}_n{n:g}")
+def study_dir(root, eps, n, size_c=None):
+    tail = "" if size_c is None else f"_c{size_c:g}"
+    return os.path.join(root, f"eps{eps:g}_n{n:g}{tail}")
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = select_runs(plan(args.eps, args.d0_over_dx), names, args.only, args.sphjet, args.dry_run)
+    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c), names, args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -213,13 +218,13 @@ def md_table(header, rows):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c)
     if not os.path.isdir(sdir):
         raise StudyError(f"{sdir}: no study there (run `round_jet_study.py run --eps {args.eps:g} "
                          f"--d0-over-dx {args.d0_over_dx:g}` first)")
     os.makedirs(args.out, exist_ok=True)
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
-            for s, name, _sets, info in plan(args.eps, args.d0_over_dx)]
+            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "err vs measured",
               "first breakup t [s], L/d0", "main drop d/d0", "drops (satellites)", "status",
@@ -313,6 +318,9 @@ def main(argv=None):
         p.add_argument("--root", default=root_default, help="study root (default: REPO/runs/round_jet)")
         p.add_argument("--eps", type=float, default=0.01, help="nozzle disturbance amplitude (default 0.01)")
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
+        p.add_argument("--size-c", type=float, default=None, metavar="C",
+                       help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
+                            "measured length, eq 37 for the paper's jets)")
         if name == "run":
             p.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES)
             p.add_argument("--only", action="extend", nargs="+", metavar="RUN")
@@ -326,6 +334,8 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
+    if args.size_c is not None and not args.size_c > 0:
+        ap.error(f"--size-c {args.size_c}: expected a positive number")
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
     args.root = os.path.abspath(args.root)
