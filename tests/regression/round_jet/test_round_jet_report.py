@@ -104,6 +104,17 @@ def main():
         t_end = 2.5 * 67.52 * 0.001194 / 0.7814
         check(f"time.tmax={t_end:.6g}" in p.stdout, f"dry run tmax {t_end:.6g}: {p.stdout}")
         check("nozzle.disturbance=0.01" in p.stdout, "the disturbance of the study")
+        # --size-c 8: L_ref = 8 x d0 (at least 10 d0), in a study directory of its own
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--only", "mc_u0.7814", "mc_u0.3441"],
+                           capture_output=True, text=True)
+        t_end = 2.5 * 8.0 * x1 * 0.001194 / 0.7814
+        check(f"time.tmax={t_end:.6g}" in p.stdout, f"--size-c tmax {t_end:.6g}: {p.stdout}")
+        t_end = 2.5 * max(8.0 * g["x"], 10.0) * 0.001194 / 0.3441
+        check(f"time.tmax={t_end:.6g}" in p.stdout, f"--size-c tmax {t_end:.6g}: {p.stdout}")
+        check("eps0.01_n10_c8" in p.stdout, f"--size-c study directory: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--size-c" in p.stderr, f"--size-c 0: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)
         check(p.returncode == 2 and "not in the plan" in p.stderr, f"unknown run: {p.stderr}")
     if failures:
