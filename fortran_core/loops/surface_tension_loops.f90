@@ -348,8 +348,11 @@ contains
     associate (wk => self%wk)
       select case (self%pass)
       case (PASS_COLOUR)
-        call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%c)
-        if (self%axi) call colour_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%vmu, wk%c2)
+        if (self%axi) then   ! also the mode's colour
+          call colour_pairs(.true., pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%vmu, wk%c, wk%c2)
+        else                 ! v2, c2 not referenced
+          call colour_pairs(.false., pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%v, wk%c, wk%c)
+        end if
       case (PASS_NORMAL)   ! axisymmetric: also the gradient of the mode's colour
         if (self%axi) then
           call normal_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
@@ -370,12 +373,14 @@ contains
     red = max(red, 0.0_rp)
   end subroutine csf_visit
 
-  !> Colour sums (eq 14) of the fluid pairs of a list.
-  pure subroutine colour_pairs(np, pa, pb, w, mixed, v, c)
-    integer, intent(in) :: np, pa(:), pb(:)
-    real(rp), intent(in) :: w(:), v(:)
-    logical, intent(in) :: mixed(:)
-    real(rp), intent(inout) :: c(:)
+  !> Colour sums (eq 14) of the fluid pairs of a list; two (axisymmetric): also the second
+  !> colour c2 with the weights v2, in the same loop (otherwise v2, c2 are not referenced).
+  pure subroutine colour_pairs(two, np, pa, pb, w, mixed, v, v2, c, c2)
+    logical, intent(in) :: two
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: w(*), v(*), v2(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: c(*), c2(*)
     integer :: k, a, b
     do k = 1, np
       if (mixed(k)) cycle
@@ -383,6 +388,10 @@ contains
       b = pb(k)
       c(a) = c(a) + v(b) * w(k)
       c(b) = c(b) + v(a) * w(k)
+      if (two) then
+        c2(a) = c2(a) + v2(b) * w(k)
+        c2(b) = c2(b) + v2(a) * w(k)
+      end if
     end do
   end subroutine colour_pairs
 
