@@ -3,13 +3,15 @@
 !>
 !> Image particles (axisymmetric mode and periodic z; sph_params_t%geometry, %periodic_z):
 !> gather_sorted then adds, as extra sorted slots, the mirror image of every active particle
-!> within 2h of the axis x = 0 (x -> -x, u -> -u, the rest equal) and the periodic image of
-!> every particle or axis image within 2h of z = dom_zmin or dom_zmax (z -+ lz). An image slot
-!> has grid%order(k) > st%n, src(k) its source particle; the pair sums treat it as any
-!> neighbour and what accumulates in its slot is discarded: every real particle sees each of
-!> its neighbours, real or image, once. Pairs of two images are therefore not listed. In axisymmetric mode m holds the planar mass
-!> m / (2 pi r) (physics/axisymmetric.f90), so that every pair loop is the SPH of the
-!> meridian plane.
+!> within 2h + skin of the axis x = 0 at the build (x -> -x, u -> -u, the rest equal) and the
+!> periodic image of every particle or axis image within 2h + skin of z = dom_zmin or
+!> dom_zmax at the build (z -+ lz). An image slot has grid%order(k) > st%n, src(k) its source
+!> particle, usign(k) its x (and u) sign and zshift(k) its z shift, fixed at the build; at
+!> every gather it is put at (usign x, z + zshift) of its source's current position. The
+!> pair sums treat it as any neighbour and what accumulates in its slot is discarded: every
+!> real particle sees each of its neighbours, real or image, once. Pairs of two images are
+!> therefore not listed. In axisymmetric mode m holds the planar mass m / (2 pi r)
+!> (physics/axisymmetric.f90), so that every pair loop is the SPH of the meridian plane.
 !>
 !> gather_sorted is also the one place that decides the neighbour list
 !> (neighbours/verlet_list.f90): the particles are sorted, and the pairs closer than
@@ -23,9 +25,21 @@
 !> from them again and gets the same order; the decision to build depends only on x, z,
 !> list_x, list_z and the active flags. Without those arrays the work space keeps its own
 !> copy (tests, diagnostics). list_x = NaN means "no list": build from the current positions.
-!> With image particles (axisymmetric or periodic z) the images follow their sources at every
-!> step, so the sorted set and the list are built again at every call (with no skin): the
-!> list is reused only by the passes of one evaluation (CSF, MLS), not over steps.
+!>
+!> With image particles the list is kept over steps in the same way (update_list decides on
+!> the real particles alone, and builds the images from their build positions). It stays
+!> exact. A reflection and a shift by lz are isometries, so an image slot has moved exactly
+!> as far from its build position as its source: every slot, real or image, is within
+!> skin/2 of where it was at the build. (a) The images exist: a particle within 2h of the
+!> axis (of a z end) now, whose image a real particle may see within 2h (the real particles
+!> lie at x >= 0 but for a move across the axis within a step, before its fold), was within
+!> 2h + skin/2 of it at the build, so its image was made then (and the periodic image of its
+!> axis image with it); the images the build made beyond 2h of the axis or end now are more
+!> than 2h from every real particle and add no pair. (b) Their pairs are listed: two slots
+!> within 2h now were within 2h + skin at the build. A wrap through a periodic end moves a
+!> particle by lz, and the next gather builds again; a fold across the axis moves it by
+!> 2|x|, which the same test measures. The build positions of the images follow from those
+!> of the particles (list_x, list_z), so kill -9 + resume stays bitwise here too.
 module sorted_state
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use sphjet_kinds, only: rp, ip, KIND_FLUID, GEOM_AXISYMMETRIC
@@ -61,6 +75,7 @@ module sorted_state
     integer, allocatable :: src(:)       !< particle (state index) each slot stands for
     integer, allocatable :: src_slot(:)  !< the slot of that particle (k itself for a real slot)
     real(rp), allocatable :: usign(:)    !< -1 for a mirror image across the axis, else 1
+    real(rp), allocatable :: zshift(:)   !< z shift of a periodic image (+-lz), else 0
     ! accumulated rates (sorted order)
     real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
     ! per-particle inputs of the rates loop (loops/rates.f90): tensile R and repulsive-wall
@@ -73,6 +88,7 @@ module sorted_state
     type(row_list_t), allocatable :: rows(:)
     real(rp), allocatable :: xb(:), zb(:)
     logical :: built = .false.
+    logical :: imaged = .false.            !< the list was built with image particles
     integer :: n_all = -1, n_active = -1
     integer :: n_builds = 0                !< builds so far (diagnostics)
     real(rp) :: skin_per_h = SKIN_PER_H    !< 0: list exactly the pairs closer than 2h
@@ -116,12 +132,8 @@ contains
     real(rp), intent(in) :: h
     type(sorted_t), intent(inout), target :: s
     type(sph_params_t), intent(in), optional :: prm
-    integer :: k, i, n
+    integer :: n
     logical :: images, axi
-    real(rp), allocatable :: xe(:), ze(:), sg(:)
-    integer(ip), allocatable :: ae(:)
-    integer, allocatable :: isrc(:)
-    logical, allocatable :: fe(:)
     type(sorted_work_t) :: work
 
     if (open_team) then
@@ -145,38 +157,11 @@ contains
       images = axi .or. prm%periodic_z /= 0
     end if
     if (images) then
-      ! ---- image particles (axis mirror, periodic z): appended after the st%n particles,
-      ! sorted and listed anew at every call ----
-      call image_particles(st, h, prm, axi, xe, ze, ae, isrc, sg)
-      allocate(fe(size(xe)))
-      fe(1:st%n) = st%kind(1:st%n) == KIND_FLUID
-      do i = st%n + 1, size(xe)
-        fe(i) = st%kind(isrc(i - st%n)) == KIND_FLUID
-      end do
-      call build(xe, ze, ae, fe, h, 0.0_rp, s, n_real=st%n)
-      s%built = .false.
+      call update_list(st, h, s, prm)
     else
       call update_list(st, h, s)
     end if
-
     n = s%n
-    if (images) then
-      ! each slot's source particle, velocity sign and position (an image's is its own)
-      !$omp parallel do schedule(static) private(i)
-      do k = 1, n
-        i = s%grid%order(k)
-        s%x(k) = xe(i)
-        s%z(k) = ze(i)
-        if (i <= st%n) then
-          s%src(k) = i
-          s%usign(k) = 1.0_rp
-        else
-          s%src(k) = isrc(i - st%n)
-          s%usign(k) = sg(i - st%n)
-        end if
-      end do
-      !$omp end parallel do
-    end if
     work%st => st
     work%s => s
     work%images = images
@@ -185,24 +170,25 @@ contains
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
 
-  !> Planar runs: the sorted order and the neighbour list, built again when the caller's
-  !> build positions differ from ours or a particle has moved more than skin/2 since the
-  !> build (or the active set changed).
-  subroutine update_list(st, h, s)
+  !> The sorted order and the neighbour list (with prm: of the particles and their images),
+  !> built again when the caller's build positions differ from ours or a particle has moved
+  !> more than skin/2 since the build (or the active set changed).
+  subroutine update_list(st, h, s, prm)
     type(state_t), intent(inout), target :: st
     real(rp), intent(in) :: h
     type(sorted_t), intent(inout), target :: s
+    type(sph_params_t), intent(in), optional :: prm   !< a run with image particles
     real(rp) :: skin, d2max
     integer :: nact
     logical :: valid, alone
     type(sorted_work_t) :: work
     skin = s%skin_per_h * h
-    valid = s%built .and. s%n_all == st%n
+    valid = s%built .and. s%n_all == st%n .and. (s%imaged .eqv. present(prm))
     if (associated(st%list_x) .and. associated(st%list_z)) then
       ! the caller's build positions are the reference; ours may be of another run
       if (valid) valid = all(s%xb(1:st%n) == st%list_x) .and. all(s%zb(1:st%n) == st%list_z)
       if (.not. valid .and. listed_positions(st)) then
-        call build(st%list_x, st%list_z, st%active, st%kind == KIND_FLUID, h, skin, s)
+        call build_from(st%list_x, st%list_z)
         valid = .true.
       end if
     end if
@@ -221,13 +207,62 @@ contains
       valid = nact == s%n_active .and. d2max <= (0.5_rp * skin)**2
     end if
     if (.not. valid) then
-      call build(st%x, st%z, st%active, st%kind == KIND_FLUID, h, skin, s)
+      call build_from(st%x, st%z)
       if (associated(st%list_x) .and. associated(st%list_z)) then
         st%list_x = st%x
         st%list_z = st%z
       end if
     end if
+  contains
+    !> The list of the particles at xl, zl, with their images there.
+    subroutine build_from(xl, zl)
+      real(rp), intent(in) :: xl(:), zl(:)
+      if (present(prm)) then
+        call build_imaged(st, xl, zl, h, skin, prm, s)
+      else
+        call build(xl, zl, st%active, st%kind == KIND_FLUID, h, skin, s)
+        s%imaged = .false.
+      end if
+    end subroutine build_from
   end subroutine update_list
+
+  !> The list of the st%n particles at their build positions xl, zl and of their images
+  !> there (image_particles, within 2h + skin of the axis and the z ends), and each slot's
+  !> source particle, x and u sign and z shift, which place the images at every gather
+  !> (gather_all).
+  subroutine build_imaged(st, xl, zl, h, skin, prm, s)
+    type(state_t), intent(in) :: st
+    real(rp), intent(in) :: xl(:), zl(:), h, skin
+    type(sph_params_t), intent(in) :: prm
+    type(sorted_t), intent(inout) :: s
+    real(rp), allocatable :: xe(:), ze(:), sg(:), dz(:)
+    integer(ip), allocatable :: ae(:)
+    integer, allocatable :: isrc(:)
+    logical, allocatable :: fe(:)
+    integer :: i, k, n
+    n = st%n
+    call image_particles(xl(1:n), zl(1:n), st%active(1:n), 2.0_rp * h + skin, prm, &
+                         prm%geometry == GEOM_AXISYMMETRIC, xe, ze, ae, isrc, sg, dz)
+    allocate(fe(size(xe)))
+    fe(1:n) = st%kind(1:n) == KIND_FLUID
+    do i = n + 1, size(xe)
+      fe(i) = st%kind(isrc(i - n)) == KIND_FLUID
+    end do
+    call build(xe, ze, ae, fe, h, skin, s, n_real=n)
+    s%imaged = .true.
+    do k = 1, s%n
+      i = s%grid%order(k)
+      if (i <= n) then
+        s%src(k) = i
+        s%usign(k) = 1.0_rp
+        s%zshift(k) = 0.0_rp
+      else
+        s%src(k) = isrc(i - n)
+        s%usign(k) = sg(i - n)
+        s%zshift(k) = dz(i - n)
+      end if
+    end do
+  end subroutine build_imaged
 
   !> s%n_real, and the slot of each slot's source particle (src_slot; needs s%src with
   !> images, from gather_sorted).
@@ -317,8 +352,8 @@ contains
     d2 = max(d2, (st%x(j) - s%xb(j))**2 + (st%z(j) - s%zb(j))**2)
   end subroutine add_move
 
-  !> The fields of the source particles s%src(1:s%n) into the slots of s (but x, z with
-  !> images: the caller's), an image's u times its sign, and zero sums. One field at a time:
+  !> The fields of the source particles s%src(1:s%n) into the slots of s, an image's x and u
+  !> times its sign and its z shifted (build_imaged), and zero sums. One field at a time:
   !> each loop's scattered reads then fall in one source array, small enough to stay in the
   !> second-level cache, instead of ten at once. Same values as slot by slot.
   subroutine gather_all(st, s, images)
@@ -334,9 +369,9 @@ contains
         s%usign(k) = 1.0_rp
       end do
       !$omp end do nowait
-      call permute(st%x, s%x)
-      call permute(st%z, s%z)
     end if
+    call permute(st%x, s%x)
+    call permute(st%z, s%z)
     call permute(st%u, s%u)
     call permute(st%w, s%w)
     call permute(st%rho, s%rho)
@@ -346,7 +381,11 @@ contains
     ! the same static schedule as the loops above: slot k is this thread's in all of them
     !$omp do schedule(static)
     do k = 1, n
-      if (images) s%u(k) = s%usign(k) * s%u(k)
+      if (images) then
+        s%x(k) = s%usign(k) * s%x(k)
+        s%z(k) = s%z(k) + s%zshift(k)
+        s%u(k) = s%usign(k) * s%u(k)
+      end if
       s%pr(k) = s%p(k) / (s%rho(k) * s%rho(k))
       s%fluid(k) = st%kind(s%src(k)) == KIND_FLUID
       call clear_sums(s, k)
@@ -457,7 +496,7 @@ contains
   !> Sorts the active entries of xl, zl (the particles, then any images) by cell of side
   !> 2h + skin and lists their pairs closer than 2h + skin there (with at least one fluid
   !> entry, fl, and at least one of the first n_real entries, the particles; default all);
-  !> keeps xl, zl as the build positions.
+  !> keeps those n_real entries of xl, zl as the build positions.
   subroutine build(xl, zl, act, fl, h, skin, s, n_real)
     real(rp), intent(in) :: xl(:), zl(:), h, skin
     integer(ip), intent(in) :: act(:)
@@ -475,11 +514,11 @@ contains
     call build_cell_list(xl, zl, act, cut, s%grid)
     n = s%grid%nsorted
     s%n = n
-    call ensure(s, n, n_all)
-    s%xb(1:n_all) = xl
-    s%zb(1:n_all) = zl
-    s%n_all = n_all
-    s%n_active = n
+    call ensure(s, n, nr)
+    s%xb(1:nr) = xl(1:nr)
+    s%zb(1:nr) = zl(1:nr)
+    s%n_all = nr
+    s%n_active = count(act(1:nr) /= 0)   ! n without images
     s%built = .true.
     s%n_builds = s%n_builds + 1
     call thread_lists(s)
@@ -536,22 +575,22 @@ contains
     if (.not. allocated(s%lists)) allocate(s%lists(nt))
   end subroutine thread_lists
 
-  !> The positions of the st%n particles followed by their images (xe, ze, active ae), each
-  !> image's source particle isrc and velocity sign sg (-1 across the axis). Serial and in
+  !> The positions xl, zl of the particles (active act) followed by their images within
+  !> reach of the axis and of the z ends (xe, ze, active ae), each image's source particle
+  !> isrc, x and u sign sg (-1 across the axis) and z shift dz (0 or -+lz). Serial and in
   !> particle order: the same images in the same order whatever the thread count.
-  subroutine image_particles(st, h, prm, axi, xe, ze, ae, isrc, sg)
-    type(state_t), intent(in) :: st
-    real(rp), intent(in) :: h
+  subroutine image_particles(xl, zl, act, reach, prm, axi, xe, ze, ae, isrc, sg, dz)
+    real(rp), intent(in) :: xl(:), zl(:), reach
+    integer(ip), intent(in) :: act(:)
     type(sph_params_t), intent(in) :: prm
     logical, intent(in) :: axi
-    real(rp), allocatable, intent(out) :: xe(:), ze(:), sg(:)
+    real(rp), allocatable, intent(out) :: xe(:), ze(:), sg(:), dz(:)
     integer(ip), allocatable, intent(out) :: ae(:)
     integer, allocatable, intent(out) :: isrc(:)
     integer :: n, i, m, m1, j, cap
-    real(rp) :: reach, lz, zlo, zhi
+    real(rp) :: lz, zlo, zhi, sgn
     logical :: per
-    n = st%n
-    reach = 2.0_rp * h
+    n = size(xl)
     per = prm%periodic_z /= 0
     lz = prm%dom_zmax - prm%dom_zmin
     zlo = prm%dom_zmin + reach
@@ -560,15 +599,15 @@ contains
     cap = n
     if (axi) cap = cap + n
     if (per) cap = cap + 2 * cap
-    allocate(xe(cap), ze(cap), ae(cap), isrc(cap - n), sg(cap - n))
-    xe(1:n) = st%x(1:n)
-    ze(1:n) = st%z(1:n)
-    ae(1:n) = st%active(1:n)
+    allocate(xe(cap), ze(cap), ae(cap), isrc(cap - n), sg(cap - n), dz(cap - n))
+    xe(1:n) = xl
+    ze(1:n) = zl
+    ae(1:n) = act
     m = n
     if (axi) then
       do i = 1, n
-        if (st%active(i) == 0 .or. abs(st%x(i)) >= reach) cycle
-        call add(i, -st%x(i), st%z(i), -1.0_rp)
+        if (act(i) == 0 .or. abs(xl(i)) >= reach) cycle
+        call add(i, -xl(i), zl(i), -1.0_rp, 0.0_rp)
       end do
     end if
     if (per) then
@@ -576,9 +615,13 @@ contains
       do j = 1, m1   ! the particles and their axis images
         if (ae(j) == 0) cycle
         i = j
-        if (j > n) i = isrc(j - n)
-        if (ze(j) < zlo) call add(i, xe(j), ze(j) + lz, merge(1.0_rp, sg(max(j - n, 1)), j <= n))
-        if (ze(j) > zhi) call add(i, xe(j), ze(j) - lz, merge(1.0_rp, sg(max(j - n, 1)), j <= n))
+        sgn = 1.0_rp
+        if (j > n) then
+          i = isrc(j - n)
+          sgn = sg(j - n)
+        end if
+        if (ze(j) < zlo) call add(i, xe(j), ze(j) + lz, sgn, lz)
+        if (ze(j) > zhi) call add(i, xe(j), ze(j) - lz, sgn, -lz)
       end do
     end if
     ! shrink to the slots used (build_cell_list sizes its work by size(x))
@@ -586,15 +629,16 @@ contains
     ze = ze(1:m)
     ae = ae(1:m)
   contains
-    subroutine add(src, x, z, sgn)
+    subroutine add(src, x, z, sgn, shift)
       integer, intent(in) :: src
-      real(rp), intent(in) :: x, z, sgn
+      real(rp), intent(in) :: x, z, sgn, shift
       m = m + 1
       xe(m) = x
       ze(m) = z
       ae(m) = 1
       isrc(m - n) = src
       sg(m - n) = sgn
+      dz(m - n) = shift
     end subroutine add
   end subroutine image_particles
 
@@ -622,12 +666,12 @@ contains
     if (allocated(s%x)) then
       if (size(s%x) >= n) return
       deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, &
-                 s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%src_slot, &
+                 s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%zshift, s%src_slot, &
                  s%tr, s%wnx, s%wnz, s%wdb, s%wdf)
     end if
     allocate(s%x(n), s%z(n), s%u(n), s%w(n), s%rho(n), s%p(n), s%c(n), s%m(n), s%pr(n), &
              s%fluid(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n), s%src(n), s%usign(n), &
-             s%src_slot(n), s%tr(n), s%wnx(n), s%wnz(n), s%wdb(n), s%wdf(n))
+             s%zshift(n), s%src_slot(n), s%tr(n), s%wnx(n), s%wnz(n), s%wdb(n), s%wdf(n))
   end subroutine ensure
 
 end module sorted_state
