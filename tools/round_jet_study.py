@@ -4,16 +4,18 @@
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--set-name mc paper] [--only RUN ...] [--threads 2]
-      [--sphjet build/cpp_driver/sphjet] [--dry-run]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--set-name mc paper]
+      [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--out cases/round_jet]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
   paper  paper_u{0.07,0.17,0.2,0.25}: the paper's jets (d0 = 10 mm) as round jets, c0 = 4 m/s
 The disturbance amplitude EPS (nozzle.disturbance, the plug speed u0 (1 + EPS sin(omega t)) at
-k a = 0.697) is the one free parameter: the same for every run of a study directory.
+k a = 0.697) is the one free parameter: the same for every run of a study directory. With
+--remove-drops-below-h D every run removes the detached drops thinner than D h at its breakup
+checks (breakup.remove_drops_below_h, cases/CASE_FORMAT.md), in a study directory of its own.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -116,7 +118,7 @@ def sizing(u, d0, l_ref, n):
             f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"]
 
 
-def plan(eps, n, size_c=None):
+def plan(eps, n, size_c=None, remove_h=None):
     """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
     = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length."""
     runs = []
@@ -129,22 +131,25 @@ def plan(eps, n, size_c=None):
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
         runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n) + ["fluid.c0=4"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None}))
-    return [(s, name, sets + [f"nozzle.disturbance={eps:g}"], info) for s, name, sets, info in runs]
+    extra = [f"nozzle.disturbance={eps:g}"]
+    if remove_h is not None:
+        extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
+    return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
 SET_NAMES = ("mc", "paper")
 
 
-def study_dir(root, eps, n, size_c=None):
-    tail = "" if size_c is None else f"_c{size_c:g}"
+def study_dir(root, eps, n, size_c=None, remove_h=None):
+    tail = ("" if size_c is None else f"_c{size_c:g}") + ("" if remove_h is None else f"_rm{remove_h:g}")
     return os.path.join(root, f"eps{eps:g}_n{n:g}{tail}")
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c), names, args.only, args.sphjet, args.dry_run)
+    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h), names, args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -218,13 +223,13 @@ def md_table(header, rows):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h)
     if not os.path.isdir(sdir):
         raise StudyError(f"{sdir}: no study there (run `round_jet_study.py run --eps {args.eps:g} "
                          f"--d0-over-dx {args.d0_over_dx:g}` first)")
     os.makedirs(args.out, exist_ok=True)
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
-            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c)]
+            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "err vs measured",
               "first breakup t [s], L/d0", "main drop d/d0", "drops (satellites)", "status",
@@ -318,6 +323,8 @@ def main(argv=None):
         p.add_argument("--root", default=root_default, help="study root (default: REPO/runs/round_jet)")
         p.add_argument("--eps", type=float, default=0.01, help="nozzle disturbance amplitude (default 0.01)")
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
+        p.add_argument("--remove-drops-below-h", dest="remove_h", type=float, default=None, metavar="D",
+                       help="remove detached drops with d_eq < D h at the breakup checks (default: keep all)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -334,6 +341,8 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
+    if args.remove_h is not None and not args.remove_h > 0:
+        ap.error(f"--remove-drops-below-h {args.remove_h}: expected a positive number")
     if args.size_c is not None and not args.size_c > 0:
         ap.error(f"--size-c {args.size_c}: expected a positive number")
     if not args.d0_over_dx >= 4:

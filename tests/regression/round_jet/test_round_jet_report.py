@@ -113,6 +113,12 @@ def main():
         t_end = 2.5 * max(8.0 * g["x"], 10.0) * 0.001194 / 0.3441
         check(f"time.tmax={t_end:.6g}" in p.stdout, f"--size-c tmax {t_end:.6g}: {p.stdout}")
         check("eps0.01_n10_c8" in p.stdout, f"--size-c study directory: {p.stdout}")
+        # --remove-drops-below-h 2: the key on every run, in a study directory of its own
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--remove-drops-below-h", "2", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("breakup.remove_drops_below_h=2" in p.stdout and "eps0.01_n10_c8_rm2" in p.stdout,
+              f"--remove-drops-below-h: {p.stdout}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
         check(p.returncode == 2 and "--size-c" in p.stderr, f"--size-c 0: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)
