@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -72,6 +73,7 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     std::size_t un = 0;
     ParticleSet down;  // fluid downstream of the orifice, for the clusters
     std::vector<double> down_s, down_l;  // their axial and (absolute) lateral coordinates
+    std::vector<std::size_t> down_i;     // their indices in ps
     for (std::size_t i = 0; i < ps.size(); ++i) {
         if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid)) continue;
         if (!ps.active.empty() && ps.active[i] == 0) continue;
@@ -88,6 +90,7 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
         down.push(ps.x[i], ps.z[i], ps.u[i], ps.w[i], ps.rho[i], ps.p[i], ps.m[i], ParticleKind::Fluid);
         down_s.push_back(s);
         down_l.push_back(l);
+        down_i.push_back(i);
     }
     const double v = crossing_volume(ps);
     r.volume_out = v;
@@ -121,12 +124,14 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     }
     const auto jet = static_cast<std::size_t>(labels[nearest]);
     r.jet_tip = d[jet].s_max;
+    for (std::size_t k = 0; k < down.size(); ++k)
+        if (static_cast<std::size_t>(labels[k]) != jet) d[static_cast<std::size_t>(labels[k])].members.push_back(down_i[k]);
     neck(down_s, down_l, labels, static_cast<int>(jet), r);
     for (std::size_t c = 0; c < d.size(); ++c) {
         Drop& q = d[c];
         q.d_eq = round_ ? std::cbrt(6.0 * q.size / std::numbers::pi) : 2.0 * std::sqrt(q.size / std::numbers::pi);
         q.satellite = q.d_eq < nz_.d0;
-        if (c != jet) r.drops.push_back(q);
+        if (c != jet) r.drops.push_back(std::move(q));
     }
     std::sort(r.drops.begin(), r.drops.end(), [](const Drop& a, const Drop& b) { return a.s_max > b.s_max; });
     return r;

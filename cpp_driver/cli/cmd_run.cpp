@@ -95,9 +95,13 @@ void register_run(CLI::App& app) {
         const RunSummary s = run_simulation(o);
         std::cout << fmt::format(
             "run summary: {} particles ({} fluid), {} steps to t = {:.6g} s, wall {:.2f} s, "
-            "{:.4g} particle-steps/s, {} outputs, {} left the domain{}\n",
+            "{:.4g} particle-steps/s, {} outputs, {} left the domain{}{}\n",
             s.particles, s.fluid, s.steps, s.time, s.wall_seconds, s.particle_steps_per_second(),
-            s.outputs, s.removed, s.interrupted ? " (interrupted; resume with --resume)" : "");
+            s.outputs, s.removed,
+            s.removed_drops > 0 ? fmt::format(", {} drop(s) ({} particles) removed", s.removed_drops,
+                                              s.removed_drop_particles)
+                                : std::string(),
+            s.interrupted ? " (interrupted; resume with --resume)" : "");
         if (s.interrupted) throw CLI::RuntimeError(130);
     });
 }

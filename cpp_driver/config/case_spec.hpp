@@ -117,6 +117,9 @@ struct BreakupSpec {
     double band_over_d0 = 0.5;      // particles within band_over_d0 * d0 of the axis are "along the axis"
     double check_every = 0;         // [s] between checks; 0 = every output
     double stop_after = -1;         // [s] after the first breakup the run stops; < 0 = never
+    // Drops with d_eq < this x h are removed at the checks; 0 = never. A drop of radius below
+    // h has no interior and collapses (cases/CASE_FORMAT.md [breakup]).
+    double remove_drops_below_h = 0;
 };
 
 enum class OutputFormat { Legacy, Hdf5, Both };

@@ -182,6 +182,7 @@ constexpr KeySpec kKeys[] = {
     {"breakup.band_over_d0", Kind::Float},
     {"breakup.check_every", Kind::Float},
     {"breakup.stop_after", Kind::Float},
+    {"breakup.remove_drops_below_h", Kind::Float},
     // [[wall]]: legacy "Add wall"
     {"wall[].x", Kind::Float},
     {"wall[].height", Kind::Float},
@@ -1242,6 +1243,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         if (auto f = b.num("band_over_d0")) positive(*f), bk.band_over_d0 = f->value;
         if (auto f = b.num("check_every")) non_negative(*f), bk.check_every = f->value;
         if (auto f = b.num("stop_after")) non_negative(*f), bk.stop_after = f->value;
+        if (auto f = b.num("remove_drops_below_h")) non_negative(*f), bk.remove_drops_below_h = f->value;
         spec.breakup = bk;
     } else if (top.has("breakup")) {
         throw InputError(ctx.where("breakup"), "[breakup] needs a jet",
@@ -1660,6 +1662,9 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("band_over_d0", num(b.band_over_d0), "particles within this x D0 of the axis count");
         s += line("check_every", num(b.check_every), "s between checks; 0 = every output");
         if (b.stop_after >= 0) s += line("stop_after", num(b.stop_after), "s after the first breakup the run stops");
+        if (b.remove_drops_below_h > 0)
+            s += line("remove_drops_below_h", num(b.remove_drops_below_h),
+                      "drops with d_eq below this x h are removed at the checks");
     }
 
     for (const auto& w : spec.walls) {

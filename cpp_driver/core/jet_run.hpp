@@ -2,8 +2,11 @@
 // (analysis/jet_monitor.hpp), writes DIR/jet.csv and DIR/drops.csv (one row per sample, one
 // per drop and sample), reports the first breakup in the log, says when the run may stop
 // ([breakup] stop_after), and at the end copies the samples into DIR/run.h5 (/jet).
-// On resume the rows written after the checkpoint's step go away and the first breakup is
-// read back from jet.csv.
+// With [breakup] remove_drops_below_h it also picks, at each check, the drops to remove
+// (their particles' indices: the caller makes them inactive), logs them and writes
+// DIR/removed_drops.csv. On resume the rows written after the checkpoint's step go away, the
+// first breakup is read back from jet.csv and the removed drops are counted from
+// removed_drops.csv.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "analysis/jet_monitor.hpp"
 #include "config/case_spec.hpp"
@@ -28,8 +32,10 @@ public:
            double time, std::int64_t step, Log log);
 
     // After a step: samples when due (every check_every, or when output_written with
-    // check_every = 0).
-    void after_step(const ParticleSet& ps, double time, std::int64_t step, bool output_written);
+    // check_every = 0). Returns the indices of the particles of the drops to remove (empty
+    // unless remove_drops_below_h is set and a check found such a drop).
+    [[nodiscard]] std::vector<std::size_t> after_step(const ParticleSet& ps, double time, std::int64_t step,
+                                                      bool output_written);
     // Why the run should stop now (empty: go on): stop_after past the first breakup, or the
     // nozzle ran dry (no fluid left upstream of the orifice).
     [[nodiscard]] std::string stop_due(double time) const;
@@ -37,16 +43,19 @@ public:
     void finish(bool hdf5);
 
     [[nodiscard]] std::optional<double> first_breakup_time() const { return first_time_; }
+    // Drops removed since t = 0 (remove_drops_below_h), and their particles.
+    [[nodiscard]] std::int64_t removed_drops() const { return removed_drops_; }
+    [[nodiscard]] std::int64_t removed_drop_particles() const { return removed_particles_; }
 
 private:
-    void sample(const ParticleSet& ps, double time, std::int64_t step);
+    std::vector<std::size_t> sample(const ParticleSet& ps, double time, std::int64_t step);
     [[nodiscard]] double next_check_after(double time) const;
     void count_orifice_speed(double u_flux, bool out);
 
     const CaseSpec& spec_;
     std::filesystem::path dir_;
     analysis::JetMonitor mon_;
-    std::optional<AppendFile> jet_csv_, drops_csv_;  // rows land whole or not at all
+    std::optional<AppendFile> jet_csv_, drops_csv_, removed_csv_;  // rows land whole or not at all
     Log log_;
     double next_check_ = 0;
     std::optional<double> first_time_, first_length_, dry_time_;
@@ -54,6 +63,8 @@ private:
     double u_sum_ = 0;
     double u_dev_max_ = 0;
     std::int64_t u_n_ = 0;
+    double remove_below_ = 0;  // d_eq [m] below which a drop is removed; 0: none
+    std::int64_t removed_drops_ = 0, removed_particles_ = 0;
 };
 
 }  // namespace sphjet

@@ -250,7 +250,8 @@ RunSummary run_simulation(const RunOptions& opts) {
                 if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
                     name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
                     name == "case.toml" || name == "INDAT" || name == "IPART" ||
-                    name == "NORMALS.init" || name == "gate" || name == "jet.csv" || name == "drops.csv")
+                    name == "NORMALS.init" || name == "gate" || name == "jet.csv" || name == "drops.csv" ||
+                    name == "removed_drops.csv")
                     fs::remove(e.path());
             }
         }
@@ -400,7 +401,9 @@ RunSummary run_simulation(const RunOptions& opts) {
                                      fmt::join(r.removed_ids, " ")));
             if (output_due) write_output();
             if (jet) {
-                jet->after_step(solver.particles(), st.time, st.step, output_due);
+                if (const auto gone = jet->after_step(solver.particles(), st.time, st.step, output_due);
+                    !gone.empty())
+                    (void)solver.deactivate(gone);
                 if (const std::string why = jet->stop_due(st.time); !why.empty()) {
                     log.line(fmt::format("stopping at t = {:.6g} s: {}", st.time, why));
                     break;
@@ -461,6 +464,7 @@ RunSummary run_simulation(const RunOptions& opts) {
     sum.time = st.time;
     sum.legacy_time = st.legacy_time;
     sum.removed = st.n_removed;
+    if (jet) sum.removed_drops = jet->removed_drops(), sum.removed_drop_particles = jet->removed_drop_particles();
     or_stop(checkpoint);
     if (sum.interrupted) {
         log.line(fmt::format("stopped by signal {} at step {} t = {:.6g} s; checkpoint written: "
@@ -473,9 +477,13 @@ RunSummary run_simulation(const RunOptions& opts) {
     if (jet) or_stop([&] { jet->finish(hdf5_out); });
     log.line(fmt::format("done: {} steps ({} in all) to t = {:.6g} s (SPHysics clock {:.6g} s) in "
                          "{:.2f} s wall; {:.3g} particle-steps/s; {} outputs; {} particles left "
-                         "the domain",
+                         "the domain{}",
                          sum.steps, sum.total_steps, sum.time, sum.legacy_time, sum.wall_seconds,
-                         sum.particle_steps_per_second(), sum.outputs, sum.removed));
+                         sum.particle_steps_per_second(), sum.outputs, sum.removed,
+                         spec.breakup && spec.breakup->remove_drops_below_h > 0
+                             ? fmt::format("; {} drop(s) ({} particles) below {:g} h removed", sum.removed_drops,
+                                           sum.removed_drop_particles, spec.breakup->remove_drops_below_h)
+                             : std::string()));
     return sum;
 }
 

@@ -238,6 +238,23 @@ void Solver::check_state() const {
     if (status != SPH_OK) fail(status, bad, "state check");
 }
 
+std::size_t Solver::deactivate(const std::vector<std::size_t>& indices) {
+    std::size_t n = 0;
+    for (const std::size_t i : indices) {
+        if (i >= ps_.size() || ps_.active[i] == 0 || ps_.kind[i] != static_cast<int>(ParticleKind::Fluid)) continue;
+        ps_.active[i] = 0;
+        ps_.u[i] = 0.0;
+        ps_.w[i] = 0.0;
+        was_active_[i] = 0;  // not among the next step's domain leavers
+        ++n;
+    }
+    if (n > 0) {
+        std::fill(list_x_.begin(), list_x_.end(), std::numeric_limits<double>::quiet_NaN());
+        std::fill(list_z_.begin(), list_z_.end(), std::numeric_limits<double>::quiet_NaN());
+    }
+    return n;
+}
+
 double Solver::compute_rates() {
     double vmax = 0;
     const int status = sph_compute_rates(ws_, &prm_, &arr_, &vmax);

@@ -40,6 +40,13 @@ public:
     void density_filter();
     // NaN/Inf and density band check of the whole state; throws SimulationError.
     void check_state() const;
+    // Makes these fluid particles inactive as the core does with those that leave the domain
+    // (state_checks.f90 check_domain: velocity zeroed, no longer in any sum), and has the
+    // next step list the pairs again from the positions then, as the core does after such a
+    // removal (list_x = NaN, which a checkpoint keeps: a resumed run does the same). They
+    // are not counted in RunState::n_removed (the domain's leavers). Returns how many were
+    // active.
+    std::size_t deactivate(const std::vector<std::size_t>& indices);
     // Pair rates at the current state (tests and diagnostics); returns max visc term.
     double compute_rates();
 

@@ -594,6 +594,10 @@ const BadCase kBad[] = {
     {"BreakupWithoutNozzle", "", "[breakup]\nstop_after = 0.1\n", {"breakup", "needs a jet", "[nozzle]"}},
     {"BreakupLinkZero", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n[breakup]\nlink_over_h = 0\n",
      {"breakup.link_over_h", "must be positive"}},
+    {"BreakupRemoveNegative", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n[breakup]\nremove_drops_below_h = -2\n",
+     {"breakup.remove_drops_below_h", "must not be negative", "a number >= 0", "found -2"}},
+    {"BreakupRemoveString", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n[breakup]\nremove_drops_below_h = \"2\"\n",
+     {"breakup.remove_drops_below_h", "wrong type", "a number", "the string \"2\""}},
     {"FormatVersion", "^", "format_version = 2\n", {"format_version", "unsupported"}},
     {"SyntaxError", "lx = 0.5", "lx = = 0.5", {"case.toml:9:", "TOML syntax error"}},
     // Text that reaches an assertion in toml++ 3.3 (tests/fuzz/README.md) is a syntax error too.
@@ -702,7 +706,7 @@ TEST(ModernCaseRoundTrip, LaminarAndVariants) {
 TEST(ModernCaseRoundTrip, Jet) {
     const std::string jet = "[nozzle]\nx0 = 0.25\nz0 = 0.2\naxis = \"down\"\nd0 = 0.02\nlength_over_d0 = 7.5\nu0 = 0.17\n"
                             "walls = false\n[breakup]\nlink_over_h = 1.5\nband_over_d0 = 0.4\ncheck_every = 0.002\n"
-                            "stop_after = 0.05\n";
+                            "stop_after = 0.05\nremove_drops_below_h = 2\n";
     const CaseSpec s = parse_modern_case(std::string(kMinimal) + jet, "jet.toml");
     ASSERT_TRUE(s.nozzle && s.breakup);
     EXPECT_EQ(s.nozzle->length_over_d0, 7.5);
@@ -711,6 +715,7 @@ TEST(ModernCaseRoundTrip, Jet) {
     EXPECT_EQ(s.params.drive_u, 0.17);
     EXPECT_TRUE(s.params.domain_box);
     EXPECT_EQ(s.breakup->band_over_d0, 0.4);
+    EXPECT_EQ(s.breakup->remove_drops_below_h, 2.0);
     expect_round_trip(s);
     // Axis "right" and the defaults of [breakup] (none given).
     const CaseSpec r = parse_modern_case(
@@ -721,6 +726,7 @@ TEST(ModernCaseRoundTrip, Jet) {
     ASSERT_TRUE(r.breakup);
     EXPECT_EQ(r.breakup->link_over_h, 1.5);
     EXPECT_LT(r.breakup->stop_after, 0.0);
+    EXPECT_EQ(r.breakup->remove_drops_below_h, 0.0);  // legacy and older cases: removal off
     expect_round_trip(r);
 }
 
