@@ -350,17 +350,18 @@ contains
       case (PASS_COLOUR)
         if (self%axi) then   ! also the mode's colour
           call colour_pairs(.true., pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%vmu, wk%c, wk%c2)
-        else                 ! v2, c2 not referenced
-          call colour_pairs(.false., pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%v, wk%c, wk%c)
+        else   ! v2, c2 not referenced (flag: an array no other argument is)
+          call colour_pairs(.false., pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%v, wk%c, wk%flag)
         end if
       case (PASS_NORMAL)   ! axisymmetric: also the gradient of the mode's colour
         if (self%axi) then
           call normal_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
                             wk%c, wk%vmu, wk%gi, wk%c2, wk%nx, wk%nz, wk%n2x, wk%n2z, &
                             wk%gx, wk%gz)
-        else   ! c2, n2x, n2z not referenced
+        else   ! c2, n2x, n2z not referenced (flag: an array no other argument is)
           call normal_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
-                            wk%c, wk%v, wk%gi, wk%c, wk%nx, wk%nz, wk%nx, wk%nz, wk%gx, wk%gz)
+                            wk%c, wk%v, wk%gi, wk%c, wk%nx, wk%nz, wk%flag, wk%flag, wk%gx, &
+                            wk%gz)
         end if
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
