@@ -15,14 +15,22 @@
 
 namespace {
 
-// OpenMP threads that spin while waiting (libgomp's default) lose badly when the machine is
-// shared (a 2-core CI runner running two tests at once slowed down six-fold in our
-// measurements); sleeping waiters cost nothing measurable here. libgomp reads the policy when
-// it is loaded, before main, so the program re-executes itself once with the policy set,
-// unless the user chose one.
-void prefer_passive_openmp_waits(char** argv) {
-    if (std::getenv("OMP_WAIT_POLICY") != nullptr) return;
+// How OpenMP threads wait at a barrier. A step has about a dozen barriers, so this decides how
+// fast two threads run. libgomp's default spins for about 3 ms before it sleeps, which loses
+// badly when the machine is shared (a 2-core CI runner running two tests at once slowed down
+// six-fold in our measurements); sleeping at once (OMP_WAIT_POLICY=PASSIVE) costs a futex sleep
+// and wake-up per barrier: Case1 on two threads of a quiet machine ran at 3.1e6 particle-steps/s
+// so, and at 3.8e6 when the waiters first spin 5000 rounds (GOMP_SPINCOUNT, tens of
+// microseconds) and then sleep, with no more cpu time; two such runs sharing two cores lose
+// 1.35x to sleeping at once (README, Performance). So the default is the short spin; the test
+// suite, whose tests run side by side, asks for PASSIVE (tests/CMakeLists.txt). libgomp reads
+// both variables when it is loaded, before main, so the program re-executes itself once with
+// them set, unless the user chose either.
+void prefer_short_openmp_spins(char** argv) {
+    if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr)
+        return;
     if (setenv("OMP_WAIT_POLICY", "PASSIVE", 1) != 0) return;
+    if (setenv("GOMP_SPINCOUNT", "5000", 1) != 0) return;
     execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
 }
 
@@ -42,7 +50,7 @@ void keep_freed_memory() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    prefer_passive_openmp_waits(argv);
+    prefer_short_openmp_spins(argv);
     keep_freed_memory();
     CLI::App app{"sphjet: 2D weakly compressible SPH (a modern fork of SPHysics 2D) with CSF "
                  "surface tension"};
