@@ -174,7 +174,12 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd):
         if dry_run:
             continue
         os.makedirs(os.path.dirname(run_dir), exist_ok=True)
-        child[0] = subprocess.Popen(argv, cwd=cwd)
+        try:
+            child[0] = subprocess.Popen(argv, cwd=cwd)
+        except OSError as e:   # e.g. the binary replaced by a build while the study ran
+            raise StudyError(f"{head}: cannot start {argv[0]}: {e.strerror}; the runs made "
+                             f"so far are kept, run `{tool}` again to go on (a study can use "
+                             f"a copy of the binary: --sphjet PATH)")
         rc = child[0].wait()
         child[0] = None
         log = os.path.join(run_dir, "run.log")

@@ -213,6 +213,19 @@ def study(tmp):
           f"new run phys_nogravity: wrong command:\n{o}")
     check("[4/4]" in o, f"progress counts: expected [4/4] in\n{o}")
 
+    # 7. a binary that cannot be started (here: executable, but not a program; as when a
+    # build replaces it while a study runs): a message naming it, exit 2, runs kept
+    bad = os.path.join(root, "not_a_program")
+    with open(bad, "w") as f:
+        f.write("not a program\n")
+    os.chmod(bad, 0o755)
+    p = subprocess.run([PY, TOOL, "run", "--root", root, "--sphjet", bad, "--only",
+                        "phys_nogravity"], capture_output=True, text=True)
+    check(p.returncode == 2 and f"cannot start {bad}" in p.stderr and "Traceback" not in p.stderr,
+          f"unstartable binary: exit {p.returncode}, stderr:\n{p.stderr}")
+    check(os.path.isfile(os.path.join(sdir, "t1_wendland_u0.25", "run.log")),
+          "unstartable binary: a finished run's files went missing")
+
 
 if __name__ == "__main__":
     main()
