@@ -86,6 +86,10 @@ module sorted_state
     ! the neighbour list: pairs of each row task (rows(0:grid%ncz-1)), build positions
     ! (particle order), and what the build saw
     type(row_list_t), allocatable :: rows(:)
+    !> The row tasks in the order a sweep hands them out: the even rows, then the odd ones
+    !> (its two phases), each by decreasing number of listed pairs, so that a phase ends on
+    !> small tasks and the threads finish it together (row_phases)
+    integer, allocatable :: row_order(:)
     real(rp), allocatable :: xb(:), zb(:)
     logical :: built = .false.
     logical :: imaged = .false.            !< the list was built with image particles
@@ -142,7 +146,6 @@ contains
       !$omp single
       open_team = .false.   ! a build's loops in a (nested, one-thread) region of their own
       call update_list(st, h, s)
-      call slot_sources(st, s, .false.)
       open_team = .true.
       !$omp end single
       work%st => st
@@ -166,7 +169,6 @@ contains
     work%s => s
     work%images = images
     call in_team(work, GATHER)
-    call slot_sources(st, s, images)
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
 
@@ -214,7 +216,8 @@ contains
       end if
     end if
   contains
-    !> The list of the particles at xl, zl, with their images there.
+    !> The list of the particles at xl, zl, with their images there, and the slots' sources
+    !> (which change only here).
     subroutine build_from(xl, zl)
       real(rp), intent(in) :: xl(:), zl(:)
       if (present(prm)) then
@@ -223,6 +226,7 @@ contains
         call build(xl, zl, st%active, st%kind == KIND_FLUID, h, skin, s)
         s%imaged = .false.
       end if
+      call slot_sources(st, s, present(prm))
     end subroutine build_from
   end subroutine update_list
 
@@ -265,7 +269,8 @@ contains
   end subroutine build_imaged
 
   !> s%n_real, and the slot of each slot's source particle (src_slot; needs s%src with
-  !> images, from gather_sorted).
+  !> images, from build_imaged). Both change only at a build (the active set is that of the
+  !> build until the next one).
   subroutine slot_sources(st, s, images)
     type(state_t), intent(in) :: st
     type(sorted_t), intent(inout) :: s
@@ -537,7 +542,47 @@ contains
     end do
     call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), real_slot, cut * cut, &
                            s%all_pairs, s%lists, s%rows)
+    call row_phases(s)
   end subroutine build
+
+  !> s%row_order: the even rows by decreasing listed pairs, then the odd rows likewise (ties
+  !> by row). Which thread runs a row and when changes no sum: the rows of one phase write
+  !> disjoint particles, and each row's pairs are visited in its own order (traversal.f90).
+  subroutine row_phases(s)
+    type(sorted_t), intent(inout) :: s
+    integer :: ncz, i, j, r, k
+    ncz = s%grid%ncz
+    if (allocated(s%row_order)) then
+      if (size(s%row_order) < ncz) deallocate(s%row_order)
+    end if
+    if (.not. allocated(s%row_order)) allocate(s%row_order(ncz))
+    k = 0
+    do r = 0, ncz - 1, 2
+      k = k + 1
+      s%row_order(k) = r
+    end do
+    do r = 1, ncz - 1, 2
+      k = k + 1
+      s%row_order(k) = r
+    end do
+    call by_pairs(1, (ncz + 1) / 2)
+    call by_pairs((ncz + 1) / 2 + 1, ncz)
+  contains
+    !> Insertion sort of row_order(i0:i1) by decreasing listed pairs (stable).
+    subroutine by_pairs(i0, i1)
+      integer, intent(in) :: i0, i1
+      do i = i0 + 1, i1
+        r = s%row_order(i)
+        j = i - 1
+        do while (j >= i0)
+          if (s%rows(s%row_order(j))%n >= s%rows(r)%n) exit
+          s%row_order(j + 1) = s%row_order(j)
+          j = j - 1
+        end do
+        s%row_order(j + 1) = r
+      end do
+    end subroutine by_pairs
+  end subroutine row_phases
 
   !> Whether the next parallel regions would have one thread. Then the loops run without a
   !> region (their orphaned worksharing constructs serially): with libgomp every barrier, and

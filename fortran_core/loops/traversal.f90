@@ -10,7 +10,7 @@
 !> (pair_body_t%visit) then does branch-free arithmetic over that list. A task on row r
 !> writes only rows r and r+1, so tasks on rows of one parity never touch the same particle
 !> and run in parallel without atomics (two phases: even rows, then odd rows, in one
-!> parallel region). Every particle therefore receives its contributions in a fixed order,
+!> parallel region; each phase hands its rows out largest first). Every particle therefore receives its contributions in a fixed order,
 !> whatever the thread count: results are bitwise independent of the number of threads.
 !>
 !> A new pair loop is a type extending pair_body_t whose visit calls pure pair formulas
@@ -107,13 +107,17 @@ contains
     class(pair_body_t), intent(inout) :: body
     real(rp), intent(inout) :: red
     type(pair_list_t), pointer :: pl
-    integer :: phase, row, me
+    integer :: phase, row, me, i, i0, i1
     me = 1
     !$ me = omp_get_thread_num() + 1
     pl => s%lists(me)
     do phase = 0, 1
+      ! the rows of this phase, largest first (sorted_state.f90, row_phases)
+      i0 = merge(1, (s%grid%ncz + 1) / 2 + 1, phase == 0)
+      i1 = merge((s%grid%ncz + 1) / 2, s%grid%ncz, phase == 0)
       !$omp do schedule(dynamic, 1) reduction(max:red)
-      do row = phase, s%grid%ncz - 1, 2
+      do i = i0, i1
+        row = s%row_order(i)
         if (how /= SWEEP_FRESH) pl => s%cache(row)
         if (how /= SWEEP_REUSE) then
           call build_row_pairs(s, row, kern%support2, mode, pl, how == SWEEP_FRESH)
