@@ -48,7 +48,8 @@ module sorted_state
   use cell_list, only: cell_grid_t, build_cell_list
   use pair_list, only: pair_list_t
   use verlet_list, only: row_list_t, build_verlet_rows
-  !$ use omp_lib, only: omp_get_max_threads, omp_in_parallel
+  !$ use omp_lib, only: omp_get_max_threads, omp_in_parallel, omp_get_thread_num, &
+  !$                     omp_get_num_threads
   implicit none
   private
   public :: sorted_t, gather_sorted, scatter_rates, copy_to_images, thread_lists, one_thread, &
@@ -95,6 +96,14 @@ module sorted_state
     logical :: imaged = .false.            !< the list was built with image particles
     integer :: n_all = -1, n_active = -1
     integer :: n_builds = 0                !< builds so far (diagnostics)
+    ! an open team's list check and build (gather_sorted): each thread's share of the check,
+    ! and a build whose row lists the team makes (build leaves them to it with defer_rows)
+    integer, allocatable :: part_na(:)
+    real(rp), allocatable :: part_d2(:)
+    logical, allocatable :: part_same(:)
+    logical :: defer_rows = .false., rows_pending = .false.
+    logical, allocatable :: real_slot(:)   !< slots of particles, not images, at the build
+    real(rp) :: cut2 = 0.0_rp               !< (2h + skin)^2 of the build
     real(rp) :: skin_per_h = SKIN_PER_H    !< 0: list exactly the pairs closer than 2h
     logical :: all_pairs = .false.         !< list boundary-boundary pairs too
   end type sorted_t
@@ -141,13 +150,27 @@ contains
     type(sorted_work_t) :: work
 
     if (open_team) then
-      ! every thread of the step's team (no images there: predictor_corrector.f90); the list
-      ! and the slots' sources by one thread
-      !$omp single
-      open_team = .false.   ! a build's loops in a (nested, one-thread) region of their own
-      call update_list(st, h, s)
-      open_team = .true.
-      !$omp end single
+      ! every thread of the step's team (no images there: predictor_corrector.f90): the team
+      ! checks whether the list still serves; if not, one thread decides and sorts as
+      ! update_list does, and the team makes the row lists
+      if (team_list_stale(st, h, s)) then
+        !$omp single
+        open_team = .false.   ! loops of a build in a (nested, one-thread) region of their own
+        s%defer_rows = .true.
+        call update_list(st, h, s)
+        s%defer_rows = .false.
+        open_team = .true.
+        !$omp end single
+        if (s%rows_pending) then
+          call build_verlet_rows(s%grid, s%x(1:s%n), s%z(1:s%n), s%fluid(1:s%n), &
+                                 s%real_slot(1:s%n), s%cut2, &
+                                 s%all_pairs, s%lists, s%rows, team=.true.)
+          !$omp single
+          call row_phases(s)
+          s%rows_pending = .false.
+          !$omp end single
+        end if
+      end if
       work%st => st
       work%s => s
       call in_team(work, GATHER)
@@ -171,6 +194,47 @@ contains
     call in_team(work, GATHER)
     if (axi) s%m(1:n) = planar_mass(s%m(1:n), s%x(1:n), h)
   end subroutine gather_sorted
+
+  !> Whether update_list might build (called by every thread of an open team, the same
+  !> answer in all): .false. exactly when update_list would keep the list (no images): built
+  !> for these particles, the caller's build positions ours, the same active particles,
+  !> none moved more than skin/2. Each thread checks a static share of the particles; the
+  !> shares are combined after a barrier, by every thread in the same order. Every thread
+  !> reads what a build changes (s%built, s%xb, s%n_active, ...) before that barrier, and
+  !> after it only the shares: the thread that then builds (gather_sorted) cannot change
+  !> what another is still reading.
+  logical function team_list_stale(st, h, s) result(stale)
+    type(state_t), intent(in) :: st
+    real(rp), intent(in) :: h
+    type(sorted_t), intent(inout) :: s
+    integer :: j, me, nt, na, n_active
+    real(rp) :: d2, d2_max
+    logical :: same, listed
+    me = 1
+    nt = 1
+    !$ me = omp_get_thread_num() + 1
+    !$ nt = omp_get_num_threads()
+    same = s%built .and. s%n_all == st%n .and. .not. s%imaged
+    n_active = s%n_active
+    d2_max = (0.5_rp * s%skin_per_h * h)**2
+    na = 0
+    d2 = 0.0_rp
+    if (same) then   ! the same in every thread
+      listed = associated(st%list_x) .and. associated(st%list_z)
+      !$omp do schedule(static)
+      do j = 1, st%n
+        if (listed) same = same .and. s%xb(j) == st%list_x(j) .and. s%zb(j) == st%list_z(j)
+        call add_move(st, s, j, na, d2)
+      end do
+      !$omp end do nowait
+    end if
+    s%part_na(me) = na
+    s%part_d2(me) = d2
+    s%part_same(me) = same
+    !$omp barrier
+    stale = .not. (all(s%part_same(1:nt)) .and. sum(s%part_na(1:nt)) == n_active .and. &
+                   maxval(s%part_d2(1:nt)) <= d2_max)
+  end function team_list_stale
 
   !> The sorted order and the neighbour list (with prm: of the particles and their images),
   !> built again when the caller's build positions differ from ours or a particle has moved
@@ -510,7 +574,6 @@ contains
     integer, intent(in), optional :: n_real
     integer :: k, i, n, n_all, nr
     real(rp) :: cut
-    logical, allocatable :: real_slot(:)
 
     cut = 2.0_rp * h + skin
     n_all = size(xl)
@@ -532,16 +595,20 @@ contains
     end if
     if (.not. allocated(s%rows)) allocate(s%rows(0:s%grid%ncz - 1))
     ! the build positions in sorted order (s%x, s%z are gathered again afterwards)
-    allocate(real_slot(n))
     do k = 1, n
       i = s%grid%order(k)
       s%x(k) = xl(i)
       s%z(k) = zl(i)
       s%fluid(k) = fl(i)
-      real_slot(k) = i <= nr
+      s%real_slot(k) = i <= nr
     end do
-    call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), real_slot, cut * cut, &
-                           s%all_pairs, s%lists, s%rows)
+    s%cut2 = cut * cut
+    if (s%defer_rows) then   ! an open team makes the row lists (gather_sorted)
+      s%rows_pending = .true.
+      return
+    end if
+    call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), s%real_slot(1:n), &
+                           cut * cut, s%all_pairs, s%lists, s%rows)
     call row_phases(s)
   end subroutine build
 
@@ -618,6 +685,10 @@ contains
       if (size(s%lists) < nt) deallocate(s%lists)
     end if
     if (.not. allocated(s%lists)) allocate(s%lists(nt))
+    if (allocated(s%part_na)) then
+      if (size(s%part_na) < nt) deallocate(s%part_na, s%part_d2, s%part_same)
+    end if
+    if (.not. allocated(s%part_na)) allocate(s%part_na(nt), s%part_d2(nt), s%part_same(nt))
   end subroutine thread_lists
 
   !> The positions xl, zl of the particles (active act) followed by their images within
@@ -710,12 +781,12 @@ contains
     if (.not. allocated(s%xb)) allocate(s%xb(n_all), s%zb(n_all))
     if (allocated(s%x)) then
       if (size(s%x) >= n) return
-      deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, &
+      deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, s%real_slot, &
                  s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%zshift, s%src_slot, &
                  s%tr, s%wnx, s%wnz, s%wdb, s%wdf)
     end if
     allocate(s%x(n), s%z(n), s%u(n), s%w(n), s%rho(n), s%p(n), s%c(n), s%m(n), s%pr(n), &
-             s%fluid(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n), s%src(n), s%usign(n), &
+             s%fluid(n), s%real_slot(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n), s%src(n), s%usign(n), &
              s%zshift(n), s%src_slot(n), s%tr(n), s%wnx(n), s%wnz(n), s%wdb(n), s%wdf(n))
   end subroutine ensure
 

@@ -28,22 +28,34 @@ contains
   !> particle unless all_pairs, and at least one real one (real: not an image slot, see
   !> loops/sorted_state.f90: a pair of two images adds only to image sums, which are
   !> discarded). scratch: one pair list per thread (candidates of a row).
-  subroutine build_verlet_rows(grid, x, z, fluid, real, cut2, all_pairs, scratch, rows)
+  subroutine build_verlet_rows(grid, x, z, fluid, real, cut2, all_pairs, scratch, rows, team)
     type(cell_grid_t), intent(in) :: grid
     real(rp), intent(in) :: x(:), z(:), cut2
     logical, intent(in) :: fluid(:), real(:), all_pairs
     type(pair_list_t), intent(inout), target :: scratch(:)
     type(row_list_t), intent(inout) :: rows(0:)
-    integer :: row, me
-    !$omp parallel private(me)
-    me = 1
-    !$ me = omp_get_thread_num() + 1
-    !$omp do schedule(dynamic, 1)
-    do row = 0, grid%ncz - 1
-      call build_row(grid, row, x, z, fluid, real, cut2, all_pairs, scratch(me), rows(row))
-    end do
-    !$omp end do
-    !$omp end parallel
+    logical, intent(in), optional :: team   !< called by every thread of a parallel region
+    logical :: in_team
+    in_team = .false.
+    if (present(team)) in_team = team
+    if (in_team) then
+      call rows_of_this_thread()
+    else
+      !$omp parallel
+      call rows_of_this_thread()
+      !$omp end parallel
+    end if
+  contains
+    subroutine rows_of_this_thread()
+      integer :: row, me
+      me = 1
+      !$ me = omp_get_thread_num() + 1
+      !$omp do schedule(dynamic, 1)
+      do row = 0, grid%ncz - 1
+        call build_row(grid, row, x, z, fluid, real, cut2, all_pairs, scratch(me), rows(row))
+      end do
+      !$omp end do
+    end subroutine rows_of_this_thread
   end subroutine build_verlet_rows
 
   !> The list of one row: candidates of the cell stencil gathered into the scratch list, the
