@@ -54,11 +54,12 @@ void register_bench(CLI::App& app) {
         }
         const LoadedCase lc = load_case(args->case_path, args->sets);
         std::cout << fmt::format("case {}: {} particles ({} fluid), kernel {}, filter {} every {} "
-                                 "steps, {} warm-up + {} timed steps\n",
+                                 "steps, {} warm-up + {} timed steps, OpenMP waits: {}\n",
                                  args->case_path, lc.particles.size(), lc.particles.n_fluid(),
                                  to_string(lc.spec.params.kernel),
                                  to_string(lc.spec.params.density_filter),
-                                 lc.spec.params.filter_period, args->warmup, args->steps);
+                                 lc.spec.params.filter_period, args->warmup, args->steps,
+                                 Solver::openmp_waits());
         for (int nt : counts) {
             Solver::set_threads(nt);
             Solver s(lc.spec.params, lc.spec.output, lc.particles);

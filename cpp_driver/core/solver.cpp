@@ -1,7 +1,9 @@
 #include "core/solver.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -287,5 +289,16 @@ void Solver::set_wall_geometry(const std::vector<const std::vector<double>*>& nx
 
 void Solver::set_threads(int n) { sph_set_threads(n); }
 int Solver::threads() { return sph_get_threads(); }
+
+std::string Solver::openmp_waits() {
+    const char* policy = std::getenv("OMP_WAIT_POLICY");
+    const char* spins = std::getenv("GOMP_SPINCOUNT");
+    std::string p = policy != nullptr ? policy : "";
+    for (auto& ch : p) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (spins != nullptr) return fmt::format("spin {}, then sleep", spins);
+    if (p == "passive") return "sleep (OMP_WAIT_POLICY=PASSIVE)";
+    if (p == "active") return "spin (OMP_WAIT_POLICY=ACTIVE)";
+    return "libgomp's default (spin about 3 ms, then sleep)";
+}
 
 }  // namespace sphjet

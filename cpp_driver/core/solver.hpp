@@ -80,6 +80,9 @@ public:
 
     static void set_threads(int n);
     static int threads();
+    // How OpenMP threads wait at barriers, from the environment libgomp read at start-up
+    // (cli/main.cpp sets it unless the user did): e.g. "spin 5000, then sleep".
+    static std::string openmp_waits();
 
 private:
     void bind_arrays();
