@@ -1,6 +1,7 @@
 """What the regression scripts share: run a case, read the line `SUMMARY key=value ...` that
 an analysis prints, and check its numbers against [LO, HI] ranges (surface_tension/check_drop.py,
-axisymmetric/check_axi.py); and, for the scripts that read HDF5 themselves, getting an
+axisymmetric/check_axi.py); for the scripts that run sphjet themselves, a run that must
+succeed (run_or_exit); and, for the scripts that read HDF5 themselves, getting an
 interpreter with numpy and h5py (with_h5py).
 
 Every function prints what it does; a failure prints `0 passed, N failed` and returns None or
@@ -10,6 +11,15 @@ import os
 import subprocess
 import sys
 import time
+
+
+def run_or_exit(cmd):
+    """Runs cmd (output captured); if it fails, exits with FAIL, the command, its exit code
+    and the end of its stderr. -> the CompletedProcess."""
+    r = subprocess.run([str(c) for c in cmd], capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(map(str, cmd))} exited {r.returncode}\n{r.stderr[-3000:]}")
+    return r
 
 
 def with_h5py(required=True):

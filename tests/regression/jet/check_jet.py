@@ -25,20 +25,12 @@ import math
 import os
 import pathlib
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import with_h5py  # noqa: E402  (tests/regression/)
+from summary_checks import run_or_exit, with_h5py  # noqa: E402  (tests/regression/)
 
 G, D0, U0, DX = 9.81, 0.01, 0.25, 0.001
-
-
-def run(cmd):
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(map(str, cmd))} exited {r.returncode}\n{r.stderr[-3000:]}")
-    return r
 
 
 def rows(path):
@@ -53,9 +45,9 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     straight, split = work / "straight", work / "split"
-    run([sphjet, "run", case, "--out", straight, "-j", "2", "-q"])
-    run([sphjet, "run", case, "--out", split, "-j", "2", "-q", "--tmax", "0.1113"])
-    run([sphjet, "run", "--resume", split, "-j", "2", "-q", "--tmax", "2.5"])
+    run_or_exit([sphjet, "run", case, "--out", straight, "-j", "2", "-q"])
+    run_or_exit([sphjet, "run", case, "--out", split, "-j", "2", "-q", "--tmax", "0.1113"])
+    run_or_exit([sphjet, "run", "--resume", split, "-j", "2", "-q", "--tmax", "2.5"])
     failures = []
 
     samples = rows(straight / "jet.csv")

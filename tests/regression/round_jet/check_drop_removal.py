@@ -32,11 +32,10 @@ import csv
 import os
 import pathlib
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import with_h5py  # noqa: E402  (tests/regression/)
+from summary_checks import run_or_exit, with_h5py  # noqa: E402  (tests/regression/)
 
 D0, DX = 0.001194, 0.0001194
 H = 2.0 * DX
@@ -54,10 +53,7 @@ def run(sphjet, case, out, extra=(), resume=False, max_steps=None):
             cmd += ["--set", s]
     if max_steps is not None:
         cmd += ["--max-steps", str(max_steps)]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}\n{r.stderr[-3000:]}")
-    return r
+    return run_or_exit(cmd)
 
 
 def rows(path):

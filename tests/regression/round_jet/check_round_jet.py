@@ -32,11 +32,10 @@ import math
 import os
 import pathlib
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import with_h5py  # noqa: E402  (tests/regression/)
+from summary_checks import run_or_exit, with_h5py  # noqa: E402  (tests/regression/)
 
 D0, U0, T_END = 0.001194, 0.7814, 0.012
 
@@ -57,9 +56,7 @@ def main():
     cmd = [str(sphjet), "run", str(src / "cases" / "round_jet" / "round_jet.toml"), "--out", str(out), "-j", "2", "-q"]
     for s in sets:
         cmd += ["--set", s]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}\n{r.stderr[-3000:]}")
+    run_or_exit(cmd)
     with open(out / "jet.csv") as f:
         rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
     fails = []
