@@ -6,7 +6,7 @@ module kernel_wendland
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: wendland_norm, wendland_f, wendland_dfdq
+  public :: wendland_norm, wendland_f, wendland_dfdq_q
 
   real(rp), parameter :: wendland_norm = 7.0_rp / (4.0_rp * pi)  !< times 1/h^2 in 2D
 
@@ -19,11 +19,12 @@ contains
     f = (1.0_rp + 2.0_rp * q) * t**4
   end function wendland_f
 
-  pure elemental function wendland_dfdq(q) result(df)
+  !> (df/dq) / q, without a division: F = (dW/dr)/r = norm/h^4 (df/dq)/q.
+  pure elemental function wendland_dfdq_q(q) result(dfq)
     real(rp), intent(in) :: q
-    real(rp) :: df, t
+    real(rp) :: dfq, t
     t = max(1.0_rp - 0.5_rp * q, 0.0_rp)
-    df = -5.0_rp * q * t**3
-  end function wendland_dfdq
+    dfq = -5.0_rp * t**3
+  end function wendland_dfdq_q
 
 end module kernel_wendland

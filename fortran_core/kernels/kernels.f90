@@ -3,7 +3,7 @@
 !> grad_a W_ab = F (r_a - r_b).
 module sphjet_kernels
   use sphjet_kinds, only: rp, ip, KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_WENDLAND
-  use kernel_wendland, only: wendland_norm, wendland_f, wendland_dfdq
+  use kernel_wendland, only: wendland_norm, wendland_f, wendland_dfdq_q
   use kernel_cubic, only: cubic_norm, cubic_f, cubic_dfdq
   use kernel_quadratic, only: quadratic_norm, quadratic_f, quadratic_dfdq
   use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq
@@ -17,6 +17,7 @@ module sphjet_kernels
     real(rp) :: h = 1.0_rp, inv_h = 1.0_rp
     real(rp) :: aw = 0.0_rp   !< norm / h^2
     real(rp) :: adw = 0.0_rp  !< norm / h^3
+    real(rp) :: adq = 0.0_rp  !< norm / h^4 (F of a kernel whose df/dq has a factor q)
     real(rp) :: support2 = 4.0_rp  !< (2h)^2
   end type kernel_t
 
@@ -43,6 +44,7 @@ contains
     k%inv_h = 1.0_rp / h
     k%aw = norm / (h * h)
     k%adw = norm / (h * h * h)
+    k%adq = norm / (h * h * h * h)
     k%support2 = 4.0_rp * h * h
   end function kernel_setup
 
@@ -55,7 +57,7 @@ contains
     q = r * k%inv_h
     select case (k%kind)
     case (KERNEL_WENDLAND)
-      w = k%aw * wendland_f(q);  f = k%adw * wendland_dfdq(q) / r
+      w = k%aw * wendland_f(q);  f = k%adq * wendland_dfdq_q(q)
     case (KERNEL_CUBIC)
       w = k%aw * cubic_f(q);     f = k%adw * cubic_dfdq(q) / r
     case (KERNEL_QUADRATIC)
@@ -74,7 +76,8 @@ contains
     f = sqrt(r2)   ! r, until the last line of each case
     select case (k%kind)
     case (KERNEL_WENDLAND)
-      w = k%aw * wendland_f(f * k%inv_h);  f = k%adw * wendland_dfdq(f * k%inv_h) / f
+      f = f * k%inv_h   ! q: Wendland's F needs no division by r
+      w = k%aw * wendland_f(f);  f = k%adq * wendland_dfdq_q(f)
     case (KERNEL_CUBIC)
       w = k%aw * cubic_f(f * k%inv_h);     f = k%adw * cubic_dfdq(f * k%inv_h) / f
     case (KERNEL_QUADRATIC)
