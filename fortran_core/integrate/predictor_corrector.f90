@@ -17,7 +17,7 @@ module predictor_corrector
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t, team_work_t, in_team, one_thread, set_open_team, thread_lists
   use rates, only: compute_rates
-  use time_step, only: cfl_time_step
+  use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
   use state_checks, only: check_domain, fold_into_domain
   use nozzle_drive, only: in_driven_nozzle
@@ -25,12 +25,14 @@ module predictor_corrector
   private
   public :: pc_step, update_eos
 
-  !> The particle loops of a step (in_team): which = PREDICT or CORRECT.
+  !> The particle loops of a step (in_team): which = PREDICT or CORRECT. They also make the
+  !> time step's scan of the stage's rates (time_step.f90), into scan(which).
   integer, parameter :: PREDICT = 1, CORRECT = 2
   type, extends(team_work_t) :: step_work_t
     type(sph_params_t) :: prm
     type(state_t), pointer :: st => null()
     real(rp) :: dt2 = 0.0_rp
+    type(cfl_scan_t) :: scan(PREDICT:CORRECT)
   contains
     procedure :: run => step_loops
   end type step_work_t
@@ -73,7 +75,7 @@ contains
     type(sorted_t), intent(inout) :: s
     type(sph_step_info_t), intent(inout) :: info
     integer(ip), intent(out) :: status
-    real(rp) :: dt, dt2, vmax, dt_p, dt_c, vgate
+    real(rp) :: dt, dt2, vmax, vmax_p, vmax_c, dt_p, dt_c, vgate, dtf, dtcv
     logical :: dbc, dbc_now
     type(step_work_t) :: work
 
@@ -83,7 +85,8 @@ contains
     work%st => st
     work%dt2 = dt2
     dbc = prm%boundary == BC_DYNAMIC
-    vmax = 0.0_rp
+    vmax_p = 0.0_rp
+    vmax_c = 0.0_rp
     dt_p = dt
     dt_c = dt
     ! The gate's speed in the next step (it moves from t_start on), for the step bound.
@@ -110,11 +113,22 @@ contains
       call thread_lists(s)
       !$omp parallel
       call set_open_team(.true.)
-      call pc_stages(prm, kern, st, s, info, work, dbc_now, vgate, vmax, dt_p, dt_c)
+      call pc_stages(prm, kern, st, s, work, dbc_now, vmax_p, vmax_c)
       call set_open_team(.false.)
       !$omp end parallel
     else
-      call pc_stages(prm, kern, st, s, info, work, dbc_now, vgate, vmax, dt_p, dt_c)
+      call pc_stages(prm, kern, st, s, work, dbc_now, vmax_p, vmax_c)
+    end if
+
+    ! the next step from each stage's rates; the corrector's viscous bound takes the max of
+    ! both stages' pairs
+    vmax = max(vmax_p, vmax_c)
+    if (prm%variable_dt /= 0) then
+      call cfl_time_step(prm, work%scan(PREDICT), vmax_p, vgate, dtf, dtcv, dt_p)
+      call cfl_time_step(prm, work%scan(CORRECT), vmax, vgate, dtf, dtcv, dt_c)
+      info%dt_f = dtf
+      info%dt_cv = dtcv
+      info%dt_new = dt_c
     end if
 
     call move_gate(prm, st, info%time, dt)
@@ -138,28 +152,21 @@ contains
 
   !> The predictor and corrector stages of pc_step, called by every thread of a parallel
   !> region or by this thread alone (then the `single` sections run here and every set of
-  !> loops opens its own region). What the stages decide goes to the caller's (shared)
-  !> variables: vmax, dt_p, dt_c and info.
-  subroutine pc_stages(prm, kern, st, s, info, work, dbc_now, vgate, vmax, dt_p, dt_c)
+  !> loops opens its own region). What the stages find goes to the caller's (shared)
+  !> variables: each stage's max of the viscous pair term (vmax_p, vmax_c) and, in work,
+  !> its time-step scan.
+  subroutine pc_stages(prm, kern, st, s, work, dbc_now, vmax_p, vmax_c)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
     type(state_t), intent(inout), target :: st
     type(sorted_t), intent(inout) :: s
-    type(sph_step_info_t), intent(inout) :: info
     type(step_work_t), intent(inout) :: work
     logical, intent(in) :: dbc_now
-    real(rp), intent(in) :: vgate
-    real(rp), intent(inout) :: vmax, dt_p, dt_c
-    real(rp) :: dtf, dtcv
+    real(rp), intent(inout) :: vmax_p, vmax_c
     integer :: i
 
     ! ---- predictor ----
-    call compute_rates(prm, kern, st, s, vmax)
-    if (prm%variable_dt /= 0) then
-      !$omp single
-      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_p)
-      !$omp end single
-    end if
+    call compute_rates(prm, kern, st, s, vmax_p)
     ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
     ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
     ! barrier costs a thread wake-up, a large share of a small case's step.
@@ -174,15 +181,7 @@ contains
     end if
 
     ! ---- corrector ----
-    call compute_rates(prm, kern, st, s, vmax)
-    if (prm%variable_dt /= 0) then
-      !$omp single
-      call cfl_time_step(prm, st, vmax, vgate, dtf, dtcv, dt_c)
-      info%dt_f = dtf
-      info%dt_cv = dtcv
-      info%dt_new = dt_c
-      !$omp end single
-    end if
+    call compute_rates(prm, kern, st, s, vmax_c)
     ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
     ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the
     ! final density: the half step's p and c would be overwritten unread).
@@ -205,6 +204,7 @@ contains
     class(step_work_t), intent(inout) :: self
     integer, intent(in) :: which
     integer :: j
+    type(cfl_scan_t) :: mine   ! this thread's share of the time-step scan
     associate (prm => self%prm, st => self%st, dt2 => self%dt2)
       if (which == PREDICT) then
         !$omp do schedule(static)
@@ -216,16 +216,22 @@ contains
           st%rhoo(j) = st%rho(j)
           if (j > st%nb) then
             if (moving_fluid(st, j)) then
+              call cfl_add(mine, st, j)   ! the rates and c of the stage, before the update
               call half_step(prm, st, j, dt2)
               call eos_one(prm, st, j)
             end if
           end if
         end do
-        !$omp end do
+        !$omp end do nowait
+        !$omp critical (step_cfl_scan)
+        call cfl_merge(self%scan(which), mine)
+        !$omp end critical (step_cfl_scan)
+        !$omp barrier
       else
         !$omp do schedule(static)
         do j = st%nb + 1, st%n
           if (moving_fluid(st, j)) then
+            call cfl_add(mine, st, j)
             call half_step(prm, st, j, dt2)
             st%rho(j) = 2.0_rp * st%rho(j) - st%rhoo(j)
             st%x(j) = 2.0_rp * st%x(j) - st%xo(j)
@@ -238,6 +244,9 @@ contains
         ! no barrier: what follows (the DBC update of particles 1..nb, pc_stages) reads
         ! nothing this loop writes, and the region ends with one
         !$omp end do nowait
+        !$omp critical (step_cfl_scan)
+        call cfl_merge(self%scan(which), mine)
+        !$omp end critical (step_cfl_scan)
       end if
     end associate
   end subroutine step_loops

@@ -11,39 +11,66 @@
 !> speed sqrt(2 pi sigma / (rho0 h)) approaches c0 (fine resolution, strong sigma) has no
 !> bound on the explicit surface-tension step. dt_f and dt_cv are reported unchanged.
 !> With a moving gate (moving boundary particles) the step is also capped at CFL h / |v_gate|.
+!> The particle part of the step (which fluid particle has the largest |a|, and max c) is a
+!> scan that the integrator's own particle loops make (cfl_add, each thread over its share,
+!> cfl_merge combining the shares in an order-free way: the same particle as one serial scan,
+!> the last of equal |a|), so that it costs no pass of its own; cfl_time_step then needs no
+!> particle field.
 module time_step
   use sphjet_kinds, only: rp, ip, KIND_FLUID
   use sphjet_types, only: sph_params_t, state_t
   use surface_tension, only: csf_dt
   implicit none
   private
-  public :: cfl_time_step
+  public :: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
+
+  !> What the step needs of the particles: the fluid particle i with the largest |a|^2 = a2
+  !> (the last one in particle order among equal ones) and its acceleration, and max c.
+  type :: cfl_scan_t
+    real(rp) :: a2 = -1.0_rp, ax = 0.0_rp, az = 0.0_rp, cmax = -1.0_rp
+    integer :: i = 0
+  end type cfl_scan_t
 
 contains
 
-  subroutine cfl_time_step(prm, st, vmax, vgate, dt_f, dt_cv, dt_new)
-    type(sph_params_t), intent(in) :: prm
+  !> Particle i (an active fluid particle, particles taken in increasing i) into scan.
+  pure subroutine cfl_add(scan, st, i)
+    type(cfl_scan_t), intent(inout) :: scan
     type(state_t), intent(in) :: st
+    integer, intent(in) :: i
+    real(rp) :: a2
+    a2 = st%ax(i) * st%ax(i) + st%az(i) * st%az(i)
+    if (a2 >= scan%a2) then
+      scan%a2 = a2
+      scan%i = i
+      scan%ax = st%ax(i)
+      scan%az = st%az(i)
+    end if
+    scan%cmax = max(scan%cmax, st%c(i))
+  end subroutine cfl_add
+
+  !> The scan of another share of the particles into scan (either order, same result).
+  pure subroutine cfl_merge(scan, part)
+    type(cfl_scan_t), intent(inout) :: scan
+    type(cfl_scan_t), intent(in) :: part
+    real(rp) :: cmax
+    cmax = max(scan%cmax, part%cmax)
+    if (part%i > 0) then
+      if (part%a2 > scan%a2 .or. (part%a2 == scan%a2 .and. part%i > scan%i)) scan = part
+    end if
+    scan%cmax = cmax
+  end subroutine cfl_merge
+
+  subroutine cfl_time_step(prm, scan, vmax, vgate, dt_f, dt_cv, dt_new)
+    type(sph_params_t), intent(in) :: prm
+    type(cfl_scan_t), intent(in) :: scan
     real(rp), intent(in) :: vmax
     real(rp), intent(in) :: vgate  !< speed of the gate in the next step [m/s]; 0 = none
     real(rp), intent(out) :: dt_f, dt_cv, dt_new
-    integer :: i, imax
-    real(rp) :: amax, a2, cmax, fmag
+    real(rp) :: fmag
 
-    amax = -1.0_rp
-    cmax = -1.0_rp
-    imax = 0
-    do i = st%nb + 1, st%n
-      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
-      a2 = st%ax(i) * st%ax(i) + st%az(i) * st%az(i)
-      if (a2 >= amax) then
-        amax = a2
-        imax = i
-      end if
-      cmax = max(cmax, st%c(i))
-    end do
-    if (imax > 0) then
-      fmag = sqrt((st%ax(imax) + prm%gx)**2 + (st%az(imax) + prm%gz)**2)
+    if (scan%i > 0) then
+      fmag = sqrt((scan%ax + prm%gx)**2 + (scan%az + prm%gz)**2)
     else
       fmag = sqrt(prm%gx**2 + prm%gz**2)
     end if
@@ -52,8 +79,8 @@ contains
     else
       dt_f = huge(1.0_rp)
     end if
-    if (cmax > 0.0_rp) then
-      dt_cv = prm%h / (cmax + prm%h * vmax)
+    if (scan%cmax > 0.0_rp) then
+      dt_cv = prm%h / (scan%cmax + prm%h * vmax)
     else
       dt_cv = dt_f
     end if
