@@ -313,7 +313,7 @@ contains
   end subroutine rates_accumulate
 
   !> Pressure (+ viscosity), continuity and XSPH sums of pairs j0..j1 (term row k - off).
-  !> The pairs of one particle a follow each other (list order: cell, partner cell, a, b),
+  !> The pairs of one particle a follow each other (list order: cell, a, partner cell, b),
   !> and no pair of such a run has a as its b: a's sums are carried in registers along the
   !> run, with the same additions in the same order as one pair at a time.
   pure subroutine accumulate_fluid(j0, j1, off, laminar, pa, pb, t, ax, az, ar, xu, xw)

@@ -130,8 +130,8 @@ contains
   end subroutine sweep_thread
 
   !> The pairs of row task `row` (0-based) closer than sqrt(support2) now into pl: the
-  !> row's neighbour list (sorted_state.f90) filtered, in its order (cell west to east,
-  !> partner cell self, E, NW, N, NE, a, b).
+  !> row's neighbour list (sorted_state.f90) filtered, in its order (cell west to east, a,
+  !> partner cell self, E, NW, N, NE, b).
   subroutine build_row_pairs(s, row, support2, mode, pl, scratch)
     type(sorted_t), intent(in) :: s
     integer, intent(in) :: row, mode
