@@ -376,6 +376,9 @@ contains
 
   !> Colour sums (eq 14) of the fluid pairs of a list; two (axisymmetric): also the second
   !> colour c2 with the weights v2, in the same loop (otherwise v2, c2 are not referenced).
+  !> A particle's pairs follow each other in the list (neighbours/verlet_list.f90) and none
+  !> of them has it as b: its sums are carried along its run (the same additions in the
+  !> same order as one pair at a time), as in rates.f90.
   pure subroutine colour_pairs(two, np, pa, pb, w, mixed, v, v2, c, c2)
     logical, intent(in) :: two
     integer, intent(in) :: np, pa(*), pb(*)
@@ -383,16 +386,27 @@ contains
     logical, intent(in) :: mixed(*)
     real(rp), intent(inout) :: c(*), c2(*)
     integer :: k, a, b
-    do k = 1, np
-      if (mixed(k)) cycle
+    real(rp) :: ca, c2a
+    k = 1
+    do while (k <= np)
       a = pa(k)
-      b = pb(k)
-      c(a) = c(a) + v(b) * w(k)
-      c(b) = c(b) + v(a) * w(k)
-      if (two) then
-        c2(a) = c2(a) + v2(b) * w(k)
-        c2(b) = c2(b) + v2(a) * w(k)
-      end if
+      ca = c(a)
+      if (two) c2a = c2(a)
+      do while (k <= np)
+        if (pa(k) /= a) exit
+        if (.not. mixed(k)) then
+          b = pb(k)
+          ca = ca + v(b) * w(k)
+          c(b) = c(b) + v(a) * w(k)
+          if (two) then
+            c2a = c2a + v2(b) * w(k)
+            c2(b) = c2(b) + v2(a) * w(k)
+          end if
+        end if
+        k = k + 1
+      end do
+      c(a) = ca
+      if (two) c2(a) = c2a
     end do
   end subroutine colour_pairs
 
@@ -410,32 +424,54 @@ contains
     logical, intent(in) :: mixed(*)
     real(rp), intent(inout) :: nx(*), nz(*), n2x(*), n2z(*), gxs(*), gzs(*)
     integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2, gsum
-    do k = 1, np
-      if (mixed(k)) cycle
+    real(rp) :: gx, gz, da1, da2, db1, db2, gsum, sx, sz, s2x, s2z, tx, tz
+    k = 1
+    do while (k <= np)   ! a's sums carried along its run (colour_pairs)
       a = pa(k)
-      b = pb(k)
-      gx = f(k) * dx(k)
-      gz = f(k) * dz(k)
-      call csf_normal_pair(v(a), v(b), c(a), c(b), gx, gz, da1, da2, db1, db2)
-      nx(a) = nx(a) + da1
-      nz(a) = nz(a) + da2
-      nx(b) = nx(b) + db1
-      nz(b) = nz(b) + db2
+      sx = nx(a)
+      sz = nz(a)
+      tx = gxs(a)
+      tz = gzs(a)
       if (two) then
-        call csf_normal_pair(vmu(a), vmu(b), c2(a), c2(b), gx, gz, da1, da2, db1, db2)
-        n2x(a) = n2x(a) + da1
-        n2z(a) = n2z(a) + da2
-        n2x(b) = n2x(b) + db1
-        n2z(b) = n2z(b) + db2
+        s2x = n2x(a)
+        s2z = n2z(a)
       end if
-      gsum = (gi(a) + gi(b)) * f(k)
-      gx = gsum * dx(k)
-      gz = gsum * dz(k)
-      gxs(a) = gxs(a) + vmu(b) * gx
-      gzs(a) = gzs(a) + vmu(b) * gz
-      gxs(b) = gxs(b) - vmu(a) * gx
-      gzs(b) = gzs(b) - vmu(a) * gz
+      do while (k <= np)
+        if (pa(k) /= a) exit
+        if (.not. mixed(k)) then
+          b = pb(k)
+          gx = f(k) * dx(k)
+          gz = f(k) * dz(k)
+          call csf_normal_pair(v(a), v(b), c(a), c(b), gx, gz, da1, da2, db1, db2)
+          sx = sx + da1
+          sz = sz + da2
+          nx(b) = nx(b) + db1
+          nz(b) = nz(b) + db2
+          if (two) then
+            call csf_normal_pair(vmu(a), vmu(b), c2(a), c2(b), gx, gz, da1, da2, db1, db2)
+            s2x = s2x + da1
+            s2z = s2z + da2
+            n2x(b) = n2x(b) + db1
+            n2z(b) = n2z(b) + db2
+          end if
+          gsum = (gi(a) + gi(b)) * f(k)
+          gx = gsum * dx(k)
+          gz = gsum * dz(k)
+          tx = tx + vmu(b) * gx
+          tz = tz + vmu(b) * gz
+          gxs(b) = gxs(b) - vmu(a) * gx
+          gzs(b) = gzs(b) - vmu(a) * gz
+        end if
+        k = k + 1
+      end do
+      nx(a) = sx
+      nz(a) = sz
+      gxs(a) = tx
+      gzs(a) = tz
+      if (two) then
+        n2x(a) = s2x
+        n2z(a) = s2z
+      end if
     end do
   end subroutine normal_pairs
 
@@ -451,21 +487,37 @@ contains
     logical, intent(in) :: mixed(*)
     real(rp), intent(inout) :: num(*), den(*)
     integer :: k, a, b
-    real(rp) :: da1, da2, db1, db2
-    do k = 1, np
-      if (mixed(k)) cycle
+    real(rp) :: da1, da2, db1, db2, sn, sd
+    k = 1
+    do while (k <= np)   ! a's sums carried along its run (colour_pairs)
       a = pa(k)
-      b = pb(k)
-      if (flag(a) == 0.0_rp .or. flag(b) == 0.0_rp) cycle
-      call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
-                              f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
-      num(a) = num(a) + da1
-      num(b) = num(b) + db1
-      if (.not. shepard) call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), &
-                                                  nhz(a), nhx(b), nhz(b), dx(k), dz(k), f(k), &
-                                                  da2, db2)
-      den(a) = den(a) + da2
-      den(b) = den(b) + db2
+      if (flag(a) == 0.0_rp) then   ! none of a's pairs adds anything
+        do while (k <= np)
+          if (pa(k) /= a) exit
+          k = k + 1
+        end do
+        cycle
+      end if
+      sn = num(a)
+      sd = den(a)
+      do while (k <= np)
+        if (pa(k) /= a) exit
+        b = pb(k)
+        if (.not. mixed(k) .and. flag(b) /= 0.0_rp) then
+          call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), &
+                                  nhz(b), f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
+          sn = sn + da1
+          num(b) = num(b) + db1
+          if (.not. shepard) call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), &
+                                                      nhz(a), nhx(b), nhz(b), dx(k), dz(k), &
+                                                      f(k), da2, db2)
+          sd = sd + da2
+          den(b) = den(b) + db2
+        end if
+        k = k + 1
+      end do
+      num(a) = sn
+      den(a) = sd
     end do
   end subroutine curvature_pairs
 
