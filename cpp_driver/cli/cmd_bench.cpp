@@ -66,7 +66,7 @@ void register_bench(CLI::App& app) {
             const auto& prm = lc.spec.params;
             auto advance = [&](long n) {
                 for (long k = 0; k < n; ++k) {
-                    s.step();
+                    s.step(false);   // as a run's steps between outputs
                     if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
                         s.state().step % prm.filter_period == 0)
                         s.density_filter();

@@ -392,7 +392,7 @@ RunSummary run_simulation(const RunOptions& opts) {
             const bool output_due = (sim_clock() - prm.trec_ini) -
                                         prm.out * static_cast<double>(st.n_outputs) >=
                                     prm.out;
-            const StepReport r = solver.step();
+            const StepReport r = solver.step(output_due);   // the CSF fields only for outputs
             solver.check_state();
             if (r.removed > 0)
                 log.line(fmt::format("step {} t = {:.6g} s: {} particle(s) left the domain and "

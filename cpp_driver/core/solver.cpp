@@ -191,7 +191,13 @@ void Solver::fail(int status, std::int64_t particle, const std::string& where) c
     throw SimulationError(msg);
 }
 
-StepReport Solver::step() {
+StepReport Solver::step(bool fields) {
+    if (!colour_.empty()) {
+        arr_.colour = fields ? colour_.data() : nullptr;
+        arr_.st_nx = fields ? st_nx_.data() : nullptr;
+        arr_.st_nz = fields ? st_nz_.data() : nullptr;
+        arr_.kappa = fields ? kappa_.data() : nullptr;
+    }
     sph_step_info_t info{};
     info.dt = state_.dt;
     info.time = state_.time;

@@ -35,7 +35,10 @@ public:
 
     // One predictor-corrector step with state().dt; updates RunState (time, legacy clock,
     // step, dt, counters). Throws SimulationError with step, time, particle and cause.
-    StepReport step();
+    // fields: whether colour(), st_nx(), st_nz() and curvature() are to hold this step's
+    // surface-tension fields afterwards (an output follows); otherwise they keep what they
+    // held and the core does not copy them out (the step itself is the same either way).
+    StepReport step(bool fields = true);
     // Density filter (Shepard or MLS, as the parameters say); no-op when none.
     void density_filter();
     // NaN/Inf and density band check of the whole state; throws SimulationError.

@@ -273,6 +273,12 @@ contains
       case default   ! FORCE
         !$omp do schedule(static)
         do k = 1, n
+          ! no valid normal (flag 0, most particles): every curvature below is 0 and the
+          ! force an exact zero, which changes no sum (they start at +0 and never hold -0)
+          if (wk%flag(k) == 0.0_rp) then
+            kappa(k) = 0.0_rp
+            cycle
+          end if
           if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
             if (colour_delta) then
               kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
