@@ -17,7 +17,7 @@
 !> the last of equal |a|), so that it costs no pass of its own; cfl_time_step then needs no
 !> particle field.
 module time_step
-  use sphjet_kinds, only: rp, ip, KIND_FLUID
+  use sphjet_kinds, only: rp
   use sphjet_types, only: sph_params_t, state_t
   use surface_tension, only: csf_dt
   implicit none

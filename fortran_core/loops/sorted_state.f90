@@ -610,7 +610,7 @@ contains
       return
     end if
     call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), s%real_slot(1:n), &
-                           cut * cut, s%all_pairs, s%lists, s%rows)
+                           s%cut2, s%all_pairs, s%lists, s%rows)
     call row_phases(s)
   end subroutine build
 
