@@ -73,17 +73,37 @@ contains
     type(kernel_t), intent(in) :: k
     real(rp), intent(in) :: r2(:)
     real(rp), intent(out) :: w(:), f(:)
-    f = sqrt(r2)   ! r, until the last line of each case
+    integer :: i
+    real(rp) :: r, q
+    ! one loop per kernel, W and F of a pair together (one pass over the list, not four)
     select case (k%kind)
     case (KERNEL_WENDLAND)
-      f = f * k%inv_h   ! q: Wendland's F needs no division by r
-      w = k%aw * wendland_f(f);  f = k%adq * wendland_dfdq_q(f)
+      do i = 1, size(r2)
+        q = sqrt(r2(i)) * k%inv_h   ! Wendland's F needs no division by r
+        w(i) = k%aw * wendland_f(q)
+        f(i) = k%adq * wendland_dfdq_q(q)
+      end do
     case (KERNEL_CUBIC)
-      w = k%aw * cubic_f(f * k%inv_h);     f = k%adw * cubic_dfdq(f * k%inv_h) / f
+      do i = 1, size(r2)
+        r = sqrt(r2(i))
+        q = r * k%inv_h
+        w(i) = k%aw * cubic_f(q)
+        f(i) = k%adw * cubic_dfdq(q) / r
+      end do
     case (KERNEL_QUADRATIC)
-      w = k%aw * quadratic_f(f * k%inv_h); f = k%adw * quadratic_dfdq(f * k%inv_h) / f
+      do i = 1, size(r2)
+        r = sqrt(r2(i))
+        q = r * k%inv_h
+        w(i) = k%aw * quadratic_f(q)
+        f(i) = k%adw * quadratic_dfdq(q) / r
+      end do
     case default
-      w = k%aw * gaussian_f(f * k%inv_h);  f = k%adw * gaussian_dfdq(f * k%inv_h) / f
+      do i = 1, size(r2)
+        r = sqrt(r2(i))
+        q = r * k%inv_h
+        w(i) = k%aw * gaussian_f(q)
+        f(i) = k%adw * gaussian_dfdq(q) / r
+      end do
     end select
   end subroutine kernel_eval_list
 
