@@ -110,6 +110,8 @@ contains
     end do
   end subroutine axis_weights_of
 
+  !> The pairs of one row task: the axisymmetric pressure pair, continuity and velocity
+  !> gradients (axi_pairs).
   subroutine axi_visit(self, pl, red)
     class(axi_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl

@@ -92,6 +92,8 @@ contains
     end do
   end subroutine apply_density_filter
 
+  !> The pairs of one row task: Shepard sums (kernel-weighted volumes and masses), MLS pass 1
+  !> moments, or MLS pass 2 corrected density sums, into both particles of each pair.
   subroutine filter_visit(self, pl, red)
     class(filter_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl

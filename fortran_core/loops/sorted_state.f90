@@ -502,6 +502,8 @@ contains
     call in_team(work, SCATTER)
   end subroutine scatter_rates
 
+  !> The loops of scatter_rates (in_team's SCATTER): every thread its static share of the
+  !> slots, rates and XSPH back to particle order; inactive particles get zeros.
   subroutine scatter_all(s, st, xsph_eps)
     type(sorted_t), intent(in) :: s
     type(state_t), intent(inout) :: st
