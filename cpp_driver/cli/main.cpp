@@ -38,12 +38,17 @@ void prefer_short_openmp_spins(char** argv) {
 // axisymmetric sums, the axis images). glibc gives freed memory at the top of the heap back
 // to the system beyond 128 KiB and serves blocks over 128 KiB (adaptively more) by mmap, so
 // those arrays came back as fresh pages every evaluation: page faults and brk calls took
-// about 8% of an axisymmetric jet's time (perf). Freed memory stays in the process instead;
-// the peak resident memory is the same.
+// about 8% of an axisymmetric jet's time (perf). Freed memory stays in the process instead.
+// One heap for all threads: with one per thread (glibc's default) a block freed by one thread
+// is not reused by another, and the neighbour lists' rows are reallocated by whichever thread
+// builds them; the 1e6-particle dam break on two threads then peaked at 775-965 MB from run to
+// run of the same command, and at 742 MB in every run with one heap, at the same speed
+// (README, Performance, session 13). The core allocates outside its pair loops only.
 void keep_freed_memory() {
 #ifdef __GLIBC__
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
     mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest on 64-bit systems
+    mallopt(M_ARENA_MAX, 1);
 #endif
 }
 
