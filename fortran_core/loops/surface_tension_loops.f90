@@ -79,8 +79,8 @@ module surface_tension_loops
     real(rp), allocatable :: v(:), c(:), nx(:), nz(:), nhx(:), nhz(:), flag(:), num(:), den(:)
     real(rp), allocatable :: gx(:), gz(:)  !< sum_b V_b grad_a W_ab (free-surface delta)
     real(rp), allocatable :: tden(:)       !< tangential denominator (free-surface curvature)
-    !> the weights of the free-surface delta's pair sums (delta_pairs): 1/2 (planar), or
-    !> 1/g with m / (2 pi rho) for V (axisymmetric: the weights of its pressure pair)
+    !> axisymmetric only: the weights of the free-surface delta's pair sums (normal_pairs),
+    !> 1/g with m / (2 pi rho) for V (the weights of its pressure pair; planar: 1/2 and m/rho)
     real(rp), allocatable :: vmu(:), gi(:)
     !> axisymmetric only: the colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab of the mode's
     !> density and its gradient, which decide where the free surface is (see below)
@@ -152,9 +152,6 @@ contains
       allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
       wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
-    else
-      allocate(wk%gi(n))
-      wk%gi = 0.5_rp
     end if
 
     ! colour (eq 14), self term included
@@ -364,9 +361,9 @@ contains
           call normal_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
                             wk%c, wk%vmu, wk%gi, wk%c2, wk%nx, wk%nz, wk%n2x, wk%n2z, &
                             wk%gx, wk%gz)
-        else   ! c2, n2x, n2z not referenced (flag: an array no other argument is)
+        else   ! gi, c2, n2x, n2z not referenced (flag: an array no other argument is)
           call normal_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
-                            wk%c, wk%v, wk%gi, wk%c, wk%nx, wk%nz, wk%flag, wk%flag, wk%gx, &
+                            wk%c, wk%v, wk%v, wk%c, wk%nx, wk%nz, wk%flag, wk%flag, wk%gx, &
                             wk%gz)
         end if
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
@@ -418,10 +415,11 @@ contains
 
   !> Normal (eq 18) and the free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab
   !> of the fluid pairs of a list, in one loop (independent sets of sums): for the delta,
-  !> planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller); axisymmetric
-  !> V = m/(2 pi rho) and g = 1/g(x) (the weights of its pressure pair). two (axisymmetric):
-  !> also the gradient n2 of the second colour c2 with the weights vmu, in the same loop;
-  !> otherwise c2, n2x, n2z are not referenced.
+  !> planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller: g_a + g_b = 1,
+  !> so the pair's gradient is the normal's); axisymmetric V = m/(2 pi rho) and g = 1/g(x)
+  !> (the weights of its pressure pair). two (axisymmetric): also the gradient n2 of the
+  !> second colour c2 with the weights vmu, in the same loop; otherwise gi, c2, n2x, n2z are
+  !> not referenced.
   pure subroutine normal_pairs(two, np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, c2, nx, nz, &
                                n2x, n2z, gxs, gzs)
     logical, intent(in) :: two
@@ -459,10 +457,10 @@ contains
             s2z = s2z + da2
             n2x(b) = n2x(b) + db1
             n2z(b) = n2z(b) + db2
-          end if
-          gsum = (gi(a) + gi(b)) * f(k)
-          gx = gsum * dx(k)
-          gz = gsum * dz(k)
+            gsum = (gi(a) + gi(b)) * f(k)
+            gx = gsum * dx(k)
+            gz = gsum * dz(k)
+          end if   ! planar: g_a + g_b = 1/2 + 1/2 = 1 exactly, and gx, gz are the normal's
           tx = tx + vmu(b) * gx
           tz = tz + vmu(b) * gz
           gxs(b) = gxs(b) - vmu(a) * gx
