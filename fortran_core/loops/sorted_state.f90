@@ -90,9 +90,15 @@ module sorted_state
     ! (particle order), and what the build saw
     type(row_list_t), allocatable :: rows(:)
     !> The row tasks in the order a sweep hands them out: the even rows, then the odd ones
-    !> (its two phases), each by decreasing number of listed pairs, so that a phase ends on
-    !> small tasks and the threads finish it together (row_phases)
+    !> (an odd row waits for the even rows next to it), each by decreasing number of listed
+    !> pairs, so that the sweep ends on small tasks and the threads finish it together
+    !> (row_phases)
     integer, allocatable :: row_order(:)
+    !> Sweeps by a team (traversal.f90, sweep_thread): the row tasks each row has finished
+    !> since the last build (rows(0:ncz-1), all equal between sweeps), the number of tasks
+    !> handed out and of threads done handing out in the sweep under way
+    integer, allocatable :: row_done(:)
+    integer :: next_task = 0, threads_out = 0
     real(rp), allocatable :: xb(:), zb(:)
     logical :: built = .false.
     logical :: imaged = .false.            !< the list was built with image particles
@@ -617,8 +623,9 @@ contains
   end subroutine build
 
   !> s%row_order: the even rows by decreasing listed pairs, then the odd rows likewise (ties
-  !> by row). Which thread runs a row and when changes no sum: the rows of one phase write
-  !> disjoint particles, and each row's pairs are visited in its own order (traversal.f90).
+  !> by row), and the sweeps' counters (row_done, all 0). Which thread runs a row and when
+  !> changes no sum: rows of one parity write disjoint particles, an odd row waits for its
+  !> even neighbours, and each row's pairs are visited in its own order (traversal.f90).
   subroutine row_phases(s)
     type(sorted_t), intent(inout) :: s
     integer :: ncz, i, j, r, k
@@ -638,6 +645,13 @@ contains
     end do
     call by_pairs(1, (ncz + 1) / 2)
     call by_pairs((ncz + 1) / 2 + 1, ncz)
+    if (allocated(s%row_done)) then
+      if (size(s%row_done) < ncz) deallocate(s%row_done)
+    end if
+    if (.not. allocated(s%row_done)) allocate(s%row_done(0:ncz - 1))
+    s%row_done = 0
+    s%next_task = 0
+    s%threads_out = 0
   contains
     !> Insertion sort of row_order(i0:i1) by decreasing listed pairs (stable).
     subroutine by_pairs(i0, i1)

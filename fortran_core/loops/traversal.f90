@@ -9,9 +9,11 @@
 !> for the whole list with the kernel chosen outside the loop, W and F); the loop body
 !> (pair_body_t%visit) then does branch-free arithmetic over that list. A task on row r
 !> writes only rows r and r+1, so tasks on rows of one parity never touch the same particle
-!> and run in parallel without atomics (two phases: even rows, then odd rows, in one
-!> parallel region; each phase hands its rows out largest first). Every particle therefore receives its contributions in a fixed order,
-!> whatever the thread count: results are bitwise independent of the number of threads.
+!> and run in parallel without atomics on the sums: the even rows are handed out first, then
+!> the odd ones (each largest first), and a task on odd row r starts once the tasks on even
+!> rows r - 1 and r + 1 have finished (sweep_thread; no barrier between the two halves).
+!> Every particle therefore receives its contributions in a fixed order, whatever the
+!> thread count: results are bitwise independent of the number of threads.
 !>
 !> A new pair loop is a type extending pair_body_t whose visit calls pure pair formulas
 !> from physics/ over the list; pair_sweep does the rest.
@@ -20,7 +22,7 @@ module traversal
   use sphjet_kernels, only: kernel_t, kernel_eval_list
   use sorted_state, only: sorted_t, thread_lists, one_thread, in_open_team
   use pair_list, only: pair_list_t, reserve
-  !$ use omp_lib, only: omp_get_thread_num
+  !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
   private
   public :: pair_list_t, pair_body_t, pair_sweep, build_row_pairs, &
@@ -59,8 +61,8 @@ module traversal
 
 contains
 
-  !> Visits every pair of `mode` of the sorted particles with `body`: one parallel region,
-  !> two phases of row tasks. red: max over the tasks of what visit leaves in it. s must
+  !> Visits every pair of `mode` of the sorted particles with `body`: one parallel region of
+  !> row tasks. red: max over the tasks of what visit leaves in it. s must
   !> hold the gathered state and its neighbour list (gather_sorted). cache (SWEEP_*, default
   !> SWEEP_FRESH): a series of sweeps over the same positions (the CSF passes, the two MLS
   !> passes) finds the pairs and evaluates the kernel once (SWEEP_KEEP, then SWEEP_REUSE).
@@ -99,7 +101,12 @@ contains
   end subroutine pair_sweep
 
   !> One thread's share of a sweep, with the thread's own pair list (or the kept ones); red
-  !> is shared by the team (reduced over the tasks of each phase).
+  !> is shared by the team. The rows are handed out one at a time in s%row_order (the even
+  !> rows, then the odd ones). A task on odd row r writes rows r and r + 1, which the tasks on
+  !> the even rows r - 1 and r + 1 also write: it starts when those two have finished (not
+  !> when every even row has, as a barrier between two phases would have it). Each particle
+  !> thus receives its contributions in the same order as with the two phases, whatever the
+  !> thread count and whichever thread runs a row.
   subroutine sweep_thread(s, kern, mode, how, body, red)
     type(sorted_t), intent(inout), target :: s
     type(kernel_t), intent(in) :: kern
@@ -107,26 +114,79 @@ contains
     class(pair_body_t), intent(inout) :: body
     real(rp), intent(inout) :: red
     type(pair_list_t), pointer :: pl
-    integer :: phase, row, me, i, i0, i1
+    integer :: row, me, nt, i, ncz, n_even, done, out
+    real(rp) :: mine
     me = 1
+    nt = 1
     !$ me = omp_get_thread_num() + 1
+    !$ nt = omp_get_num_threads()
     pl => s%lists(me)
-    do phase = 0, 1
-      ! the rows of this phase, largest first (sorted_state.f90, row_phases)
-      i0 = merge(1, (s%grid%ncz + 1) / 2 + 1, phase == 0)
-      i1 = merge((s%grid%ncz + 1) / 2, s%grid%ncz, phase == 0)
-      !$omp do schedule(dynamic, 1) reduction(max:red)
-      do i = i0, i1
-        row = s%row_order(i)
-        if (how /= SWEEP_FRESH) pl => s%cache(row)
-        if (how /= SWEEP_REUSE) then
-          call build_row_pairs(s, row, kern%support2, mode, pl, how == SWEEP_FRESH)
-          if (mode /= PAIRS_ALL) call kernel_eval_list(kern, pl%r2(1:pl%n), pl%w(1:pl%n), pl%f(1:pl%n))
-        end if
-        call body%visit(pl, red)
+    ncz = s%grid%ncz
+    if (nt == 1) then   ! in order; the rows' counts stay as they are (all equal)
+      do i = 1, ncz
+        call visit_row(s%row_order(i))
       end do
-      !$omp end do
+      return
+    end if
+    n_even = (ncz + 1) / 2
+    mine = red
+    do
+      !$omp atomic capture
+      s%next_task = s%next_task + 1
+      i = s%next_task
+      !$omp end atomic
+      if (i > ncz) exit
+      row = s%row_order(i)
+      ! only this task writes its row's count: the others' were made equal to it before the
+      ! sweep (a barrier ended the last one)
+      done = s%row_done(row) + 1
+      if (i > n_even) then   ! an odd row: the even rows next to it first
+        call wait_row(row - 1)
+        if (row + 1 < ncz) call wait_row(row + 1)
+      end if
+      call visit_row(row)
+      !$omp flush
+      !$omp atomic write
+      s%row_done(row) = done
     end do
+    ! the last thread to run out of tasks readies the counters for the next sweep
+    !$omp atomic capture
+    s%threads_out = s%threads_out + 1
+    out = s%threads_out
+    !$omp end atomic
+    if (out == nt) then
+      s%next_task = 0
+      s%threads_out = 0
+    end if
+    !$omp critical (sweep_max)
+    red = max(red, mine)
+    !$omp end critical (sweep_max)
+    !$omp barrier
+  contains
+    subroutine visit_row(r)
+      integer, intent(in) :: r
+      if (how /= SWEEP_FRESH) pl => s%cache(r)
+      if (how /= SWEEP_REUSE) then
+        call build_row_pairs(s, r, kern%support2, mode, pl, how == SWEEP_FRESH)
+        if (mode /= PAIRS_ALL) call kernel_eval_list(kern, pl%r2(1:pl%n), pl%w(1:pl%n), pl%f(1:pl%n))
+      end if
+      if (nt == 1) then
+        call body%visit(pl, red)
+      else
+        call body%visit(pl, mine)
+      end if
+    end subroutine visit_row
+    !> Waits until row r has finished this sweep's task (its count reached done).
+    subroutine wait_row(r)
+      integer, intent(in) :: r
+      integer :: d
+      do
+        !$omp atomic read
+        d = s%row_done(r)
+        if (d >= done) exit
+      end do
+      !$omp flush
+    end subroutine wait_row
   end subroutine sweep_thread
 
   !> The pairs of row task `row` (0-based) closer than sqrt(support2) now into pl: the
