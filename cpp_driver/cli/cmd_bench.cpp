@@ -60,6 +60,8 @@ void register_bench(CLI::App& app) {
                                  to_string(lc.spec.params.density_filter),
                                  lc.spec.params.filter_period, args->warmup, args->steps,
                                  Solver::openmp_waits());
+        if (const std::string note = initial_step_note(lc.spec.params); !note.empty())
+            std::cout << note << '\n';
         for (int nt : counts) {
             Solver::set_threads(nt);
             Solver s(lc.spec.params, lc.spec.output, lc.particles);

@@ -96,6 +96,12 @@ struct SimParams {
     [[nodiscard]] bool tensile_on() const;
 };
 
+// A note for the run log when the case's time.dt exceeds the CFL step of the fluid at rest,
+// cfl h / c0 (the bound of the step control before anything moves), else "". With variable dt
+// the first step takes time.dt all the same, as in legacy SPHysics: the particles get a kick,
+// and a case refined from a coarser one without scaling its time.dt gets a large one.
+[[nodiscard]] std::string initial_step_note(const SimParams& p);
+
 [[nodiscard]] std::string to_string(KernelType k);
 [[nodiscard]] std::string to_string(DensityFilter f);
 [[nodiscard]] std::string to_string(ViscosityModel v);

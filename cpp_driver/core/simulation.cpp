@@ -296,6 +296,8 @@ RunSummary run_simulation(const RunOptions& opts) {
     if (opts.resume)
         log.line(fmt::format("resuming at step {} t = {:.6g} s from {}", st.step, st.time,
                              checkpoint_path(dir).string()));
+    else if (const std::string note = initial_step_note(prm); !note.empty())
+        log.line(note);
 
     // ---- outputs ----
     std::optional<Hdf5Writer> h5;

@@ -396,6 +396,26 @@ TEST(ModernCase, SoundSpeedGivenDirectly) {
     EXPECT_EQ(q.B, 1000.0 * 17.0 * 17.0);
 }
 
+// The run log's note on a first step above the CFL step cfl h / c0 of the fluid at rest
+// (config/params.cpp): the ratio it states, and no note at or below that step.
+TEST(ModernCase, InitialStepNote) {
+    SimParams p;
+    p.rho0 = 1000.0;
+    p.gamma = 7.0;
+    p.B = 1000.0 * 10.0 * 10.0 / 7.0;  // c0 = 10 m/s
+    p.h = 0.001;
+    p.cfl = 0.2;                         // CFL step 2e-5 s
+    p.dt = 1e-4;
+    const std::string note = initial_step_note(p);
+    EXPECT_NE(note.find("5 times the CFL step"), std::string::npos) << note;
+    EXPECT_NE(note.find("first step"), std::string::npos) << note;
+    p.variable_dt = false;
+    EXPECT_NE(initial_step_note(p).find("fixed for the whole run"), std::string::npos);
+    p.variable_dt = true;
+    p.dt = 2e-5 * 0.999;
+    EXPECT_EQ(initial_step_note(p), "");
+}
+
 TEST(ModernCase, ZeroGravityWorksWithC0) {
     const SimParams p =
         parse_modern_case(kMinimal, "c.toml", {"gravity.gz=0", "gravity.gx=0"}).params;
