@@ -129,7 +129,7 @@ contains
       return
     end if
     n_even = (ncz + 1) / 2
-    mine = red
+    mine = -huge(1.0_rp)   ! this thread's max; red is read only in the critical section below
     do
       !$omp atomic capture
       s%next_task = s%next_task + 1
