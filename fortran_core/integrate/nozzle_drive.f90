@@ -5,7 +5,7 @@
 !>   s = (r - r0) . e < 0   and   |(r - r0) x e| <= half_width,
 !> r0 the orifice centre, e the unit jet axis (flow direction). The test has no memory: fluid
 !> that comes back upstream into that strip is driven again (with the plug's velocity, see
-!> predictor_corrector's half_step); keep other fluid regions out of it.
+!> predictor_corrector's plug_step); keep other fluid regions out of it.
 module nozzle_drive
   use sphjet_kinds, only: rp
   use sphjet_types, only: sph_params_t

@@ -21,6 +21,7 @@ module predictor_corrector
   use eos_tait, only: tait_pressure, tait_sound_speed
   use state_checks, only: check_domain, fold_into_domain
   use nozzle_drive, only: in_driven_nozzle
+  !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
   private
   public :: pc_step, update_eos
@@ -203,53 +204,125 @@ contains
   subroutine step_loops(self, which)
     class(step_work_t), intent(inout) :: self
     integer, intent(in) :: which
-    integer :: j
+    integer :: j, j0, j1, me, nt
     type(cfl_scan_t) :: mine   ! this thread's share of the time-step scan
+    me = 0
+    nt = 1
+    !$ me = omp_get_thread_num()
+    !$ nt = omp_get_num_threads()
     associate (prm => self%prm, st => self%st, dt2 => self%dt2)
+      ! this thread's block of the particles, the same in every pass below, so that each
+      ! particle's steps keep their order without a barrier between the passes
       if (which == PREDICT) then
-        !$omp do schedule(static)
-        do j = 1, st%n
+        call block_of(1, st%n, me, nt, j0, j1)
+        do j = j0, j1
           st%xo(j) = st%x(j)
           st%zo(j) = st%z(j)
           st%uo(j) = st%u(j)
           st%wo(j) = st%w(j)
           st%rhoo(j) = st%rho(j)
-          if (j > st%nb) then
-            if (moving_fluid(st, j)) then
-              call cfl_add(mine, st, j)   ! the rates and c of the stage, before the update
-              call half_step(prm, st, j, dt2)
-              call eos_one(prm, st, j)
-            end if
-          end if
         end do
-        !$omp end do nowait
-        !$omp critical (step_cfl_scan)
-        call cfl_merge(self%scan(which), mine)
-        !$omp end critical (step_cfl_scan)
-        !$omp barrier
+        j0 = max(j0, st%nb + 1)
       else
-        !$omp do schedule(static)
-        do j = st%nb + 1, st%n
-          if (moving_fluid(st, j)) then
-            call cfl_add(mine, st, j)
-            call half_step(prm, st, j, dt2)
-            st%rho(j) = 2.0_rp * st%rho(j) - st%rhoo(j)
-            st%x(j) = 2.0_rp * st%x(j) - st%xo(j)
-            st%z(j) = 2.0_rp * st%z(j) - st%zo(j)
-            st%u(j) = 2.0_rp * st%u(j) - st%uo(j)
-            st%w(j) = 2.0_rp * st%w(j) - st%wo(j)
-          end if
-          call eos_one(prm, st, j)
-        end do
-        ! no barrier: what follows (the DBC update of particles 1..nb, pc_stages) reads
-        ! nothing this loop writes, and the region ends with one
-        !$omp end do nowait
-        !$omp critical (step_cfl_scan)
-        call cfl_merge(self%scan(which), mine)
-        !$omp end critical (step_cfl_scan)
+        call block_of(st%nb + 1, st%n, me, nt, j0, j1)
+      end if
+      do j = j0, j1   ! the rates and c of the stage, before the update
+        if (moving_fluid(st, j)) call cfl_add(mine, st, j)
+      end do
+      if (j1 >= j0) then
+        call half_steps(j1 - j0 + 1, st%active(j0:j1), st%kind(j0:j1), dt2, prm%gx, prm%gz, &
+                        st%rhoo(j0:j1), st%ar(j0:j1), st%xo(j0:j1), st%zo(j0:j1), &
+                        st%uo(j0:j1), st%wo(j0:j1), st%xsph_u(j0:j1), st%xsph_w(j0:j1), &
+                        st%ax(j0:j1), st%az(j0:j1), st%rho(j0:j1), st%x(j0:j1), &
+                        st%z(j0:j1), st%u(j0:j1), st%w(j0:j1))
+        if (prm%drive_u > 0.0_rp) then
+          do j = j0, j1
+            if (moving_fluid(st, j)) then
+              if (in_driven_nozzle(prm, st%xo(j), st%zo(j))) call plug_step(prm, st, j, dt2)
+            end if
+          end do
+        end if
+        call stage_ends(which == CORRECT, j1 - j0 + 1, st%active(j0:j1), st%kind(j0:j1), &
+                        prm%rho0, prm%b, prm%gamma, prm%c0, st%rhoo(j0:j1), st%xo(j0:j1), &
+                        st%zo(j0:j1), st%uo(j0:j1), st%wo(j0:j1), st%rho(j0:j1), &
+                        st%x(j0:j1), st%z(j0:j1), st%u(j0:j1), st%w(j0:j1), st%p(j0:j1), &
+                        st%c(j0:j1))
+      end if
+      !$omp critical (step_cfl_scan)
+      call cfl_merge(self%scan(which), mine)
+      !$omp end critical (step_cfl_scan)
+      ! the corrector: no barrier, what follows (the DBC update of particles 1..nb, pc_stages)
+      ! reads nothing this loop writes, and the region ends with one
+      if (which == PREDICT) then
+        !$omp barrier
       end if
     end associate
   end subroutine step_loops
+
+  !> Block me (0-based) of nt contiguous blocks of i0..i1 (the first ones one longer).
+  pure subroutine block_of(i0, i1, me, nt, j0, j1)
+    integer, intent(in) :: i0, i1, me, nt
+    integer, intent(out) :: j0, j1
+    integer :: n, q, r
+    n = max(i1 - i0 + 1, 0)
+    q = n / nt
+    r = mod(n, nt)
+    j0 = i0 + me * q + min(me, r)
+    j1 = j0 + q - 1 + merge(1, 0, me < r)
+  end subroutine block_of
+
+  !> Half step of the moving fluid particles (active, fluid) of a block from their
+  !> start-of-step values with the current rates: rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u
+  !> + XSPH), u = u^n + dt2 (a + g). Arrays, not the state's pointers, so that the compiler
+  !> knows they do not overlap and vectorises the loop. A particle in a driven nozzle is moved
+  !> again by plug_step afterwards.
+  pure subroutine half_steps(n, act, kind, dt2, gx, gz, rhoo, ar, xo, zo, uo, wo, xu, xw, &
+                             ax, az, rho, x, z, u, w)
+    integer, intent(in) :: n
+    integer(ip), intent(in) :: act(n), kind(n)
+    real(rp), intent(in) :: dt2, gx, gz
+    real(rp), intent(in) :: rhoo(n), ar(n), xo(n), zo(n), uo(n), wo(n), xu(n), xw(n), ax(n), az(n)
+    real(rp), intent(inout) :: rho(n), x(n), z(n), u(n), w(n)
+    integer :: k
+    do k = 1, n
+      if (act(k) /= 0 .and. kind(k) == KIND_FLUID) then
+        rho(k) = rhoo(k) + dt2 * ar(k)
+        x(k) = xo(k) + dt2 * (u(k) + xu(k))
+        z(k) = zo(k) + dt2 * (w(k) + xw(k))
+        u(k) = uo(k) + dt2 * (ax(k) + gx)
+        w(k) = wo(k) + dt2 * (az(k) + gz)
+      end if
+    end do
+  end subroutine half_steps
+
+  !> The end of a stage for a block: the predictor's EoS of the moving fluid, or the
+  !> corrector's phi^{n+1} = 2 phi^{n+1/2} - phi^n of the moving fluid and the EoS of every
+  !> particle of the block (its final density).
+  pure subroutine stage_ends(correct, n, act, kind, rho0, b, gamma, c0, rhoo, xo, zo, uo, wo, &
+                             rho, x, z, u, w, p, c)
+    logical, intent(in) :: correct
+    integer, intent(in) :: n
+    integer(ip), intent(in) :: act(n), kind(n)
+    real(rp), intent(in) :: rho0, b, gamma, c0, rhoo(n), xo(n), zo(n), uo(n), wo(n)
+    real(rp), intent(inout) :: rho(n), x(n), z(n), u(n), w(n), p(n), c(n)
+    integer :: k
+    logical :: moving
+    do k = 1, n
+      moving = act(k) /= 0 .and. kind(k) == KIND_FLUID
+      if (correct .and. moving) then
+        rho(k) = 2.0_rp * rho(k) - rhoo(k)
+        x(k) = 2.0_rp * x(k) - xo(k)
+        z(k) = 2.0_rp * z(k) - zo(k)
+        u(k) = 2.0_rp * u(k) - uo(k)
+        w(k) = 2.0_rp * w(k) - wo(k)
+      end if
+      if (correct .or. moving) then
+        p(k) = tait_pressure(rho(k), rho0, b, gamma)
+        c(k) = tait_sound_speed(rho(k), rho0, c0)
+      end if
+    end do
+  end subroutine stage_ends
+
 
   !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'
   !> movingGate does: from t >= gate_t_start (t = this step's start, sphjet's clock) by
@@ -289,35 +362,23 @@ contains
     end do
   end subroutine move_gate
 
-  !> Half step of fluid particle i from its start-of-step values with the current rates:
-  !> rho = rho^n + dt2 drho/dt, r = r^n + dt2 (u + XSPH), u = u^n + dt2 (a + g).
-  !> A fluid particle whose start-of-step position lies in a driven nozzle (nozzle_drive)
-  !> moves rigidly with the plug velocity instead: r = r^n + dt2 u_plug, u = u_plug (and
-  !> u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its density still
-  !> follows continuity.
-  subroutine half_step(prm, st, i, dt2)
+  !> A fluid particle whose start-of-step position lies in a driven nozzle (nozzle_drive),
+  !> after half_steps: it moves rigidly with the plug velocity instead, r = r^n + dt2 u_plug,
+  !> u = u_plug (and u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its
+  !> density still follows continuity (half_steps).
+  subroutine plug_step(prm, st, i, dt2)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
     real(rp), intent(in) :: dt2
-    st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
-    if (prm%drive_u > 0.0_rp) then
-      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) then
-        st%u(i) = prm%drive_u * prm%drive_ex
-        st%w(i) = prm%drive_u * prm%drive_ez
-        st%x(i) = st%xo(i) + dt2 * st%u(i)
-        st%z(i) = st%zo(i) + dt2 * st%w(i)
-        ! The corrector's u = 2 u^{n+1/2} - u^n must give the plug's velocity also for a
-        ! particle that entered the plug with another one.
-        st%uo(i) = st%u(i)
-        st%wo(i) = st%w(i)
-        return
-      end if
-    end if
-    st%x(i) = st%xo(i) + dt2 * (st%u(i) + st%xsph_u(i))
-    st%z(i) = st%zo(i) + dt2 * (st%w(i) + st%xsph_w(i))
-    st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gx)
-    st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gz)
-  end subroutine half_step
+    st%u(i) = prm%drive_u * prm%drive_ex
+    st%w(i) = prm%drive_u * prm%drive_ez
+    st%x(i) = st%xo(i) + dt2 * st%u(i)
+    st%z(i) = st%zo(i) + dt2 * st%w(i)
+    ! The corrector's u = 2 u^{n+1/2} - u^n must give the plug's velocity also for a
+    ! particle that entered the plug with another one.
+    st%uo(i) = st%u(i)
+    st%wo(i) = st%w(i)
+  end subroutine plug_step
 
 end module predictor_corrector
