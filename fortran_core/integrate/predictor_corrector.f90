@@ -168,9 +168,10 @@ contains
 
     ! ---- predictor ----
     call compute_rates(prm, kern, st, s, vmax_p)
-    ! Start-of-step values kept, and the fluid's half step, in one pass: every parallel loop
-    ! ends in a barrier, and with OpenMP's passive wait policy (the default, main.cpp) each
-    ! barrier costs a thread wake-up, a large share of a small case's step.
+    ! Start-of-step values kept, and the fluid's half step, with one barrier at the end:
+    ! each thread makes every pass over its own block of particles (step_loops), and with
+    ! OpenMP's passive waits each barrier costs a thread wake-up, a large share of a small
+    ! case's step.
     call in_team(work, PREDICT)
     if (dbc_now) then
       !$omp single
@@ -198,9 +199,10 @@ contains
     end if
   end subroutine pc_stages
 
-  !> The predictor's loop (start-of-step values kept, the fluid's half step and EoS) or the
-  !> corrector's (half step, extrapolation, EoS of every non-boundary particle): orphaned
-  !> worksharing loops.
+  !> The predictor's loops (start-of-step values kept, the fluid's half step and EoS) or the
+  !> corrector's (half step, extrapolation, EoS of every non-boundary particle), each thread
+  !> of the team over its own block of the particles (every thread calls it), or one thread
+  !> over all.
   subroutine step_loops(self, which)
     class(step_work_t), intent(inout) :: self
     integer, intent(in) :: which
