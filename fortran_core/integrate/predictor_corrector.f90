@@ -66,8 +66,14 @@ contains
   pure logical function moving_fluid(st, i)
     type(state_t), intent(in) :: st
     integer, intent(in) :: i
-    moving_fluid = st%active(i) /= 0 .and. st%kind(i) == KIND_FLUID
+    moving_fluid = moves(st%active(i), st%kind(i))
   end function moving_fluid
+
+  !> The same from a particle's active flag and kind.
+  pure elemental logical function moves(active, kind)
+    integer(ip), intent(in) :: active, kind
+    moves = active /= 0 .and. kind == KIND_FLUID
+  end function moves
 
   subroutine pc_step(prm, kern, st, s, info, status)
     type(sph_params_t), intent(in) :: prm
@@ -287,7 +293,7 @@ contains
     real(rp), intent(inout) :: rho(n), x(n), z(n), u(n), w(n)
     integer :: k
     do k = 1, n
-      if (act(k) /= 0 .and. kind(k) == KIND_FLUID) then
+      if (moves(act(k), kind(k))) then
         rho(k) = rhoo(k) + dt2 * ar(k)
         x(k) = xo(k) + dt2 * (u(k) + xu(k))
         z(k) = zo(k) + dt2 * (w(k) + xw(k))
@@ -310,7 +316,7 @@ contains
     integer :: k
     logical :: moving
     do k = 1, n
-      moving = act(k) /= 0 .and. kind(k) == KIND_FLUID
+      moving = moves(act(k), kind(k))
       if (correct .and. moving) then
         rho(k) = 2.0_rp * rho(k) - rhoo(k)
         x(k) = 2.0_rp * x(k) - xo(k)
@@ -324,7 +330,6 @@ contains
       end if
     end do
   end subroutine stage_ends
-
 
   !> Moving boundary particles (a legacy gate), moved after the corrector as SPHysics'
   !> movingGate does: from t >= gate_t_start (t = this step's start, sphjet's clock) by

@@ -122,14 +122,15 @@ contains
     !$ nt = omp_get_num_threads()
     pl => s%lists(me)
     ncz = s%grid%ncz
+    mine = -huge(1.0_rp)   ! this thread's max; red is read only where it is merged
     if (nt == 1) then   ! in order; the rows' counts stay as they are (all equal)
       do i = 1, ncz
         call visit_row(s%row_order(i))
       end do
+      red = max(red, mine)
       return
     end if
     n_even = (ncz + 1) / 2
-    mine = -huge(1.0_rp)   ! this thread's max; red is read only in the critical section below
     do
       !$omp atomic capture
       s%next_task = s%next_task + 1
@@ -170,11 +171,7 @@ contains
         call build_row_pairs(s, r, kern%support2, mode, pl, how == SWEEP_FRESH)
         if (mode /= PAIRS_ALL) call kernel_eval_list(kern, pl%r2(1:pl%n), pl%w(1:pl%n), pl%f(1:pl%n))
       end if
-      if (nt == 1) then
-        call body%visit(pl, red)
-      else
-        call body%visit(pl, mine)
-      end if
+      call body%visit(pl, mine)
     end subroutine visit_row
     !> Waits until row r has finished this sweep's task (its count reached done).
     subroutine wait_row(r)
