@@ -26,8 +26,9 @@ orifice (drops beyond leave the run). The breakup length of a run is the mean of
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.25 L_ref / U,
 by when the start-up head has long gone (the first breakup comes at about L / U); it counts
 only when every sample of that window has the jet broken. Its standard deviation over the
-window is given beside it. Drops: those of the last sample of the window (equivalent sphere
-diameters, satellites are drops smaller than d0).
+window is given beside it. Drops (equivalent sphere diameters, satellites are drops smaller
+than d0): the mean of the main drops of the last sample of the window, and the median of the
+main drops of every sample of the window with their count.
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
@@ -41,6 +42,7 @@ import argparse
 import csv
 import math
 import os
+import statistics
 import sys
 
 from study_runs import StudyError, blew_up, parse_log, run_all, select_runs
@@ -164,7 +166,8 @@ def read_csv(path):
 
 def read_run(run_dir, info):
     r = {"status": "missing", "L": None, "L_std": None, "n_window": 0, "t_first": None,
-         "L_first": None, "drops_main": None, "n_drops": None, "n_sat": None, "notes": [],
+         "L_first": None, "drops_main": None, "drops_median": None, "n_main_window": 0,
+         "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
     if not os.path.isdir(run_dir):
         return r
@@ -192,10 +195,19 @@ def read_run(run_dir, info):
         r["L_std"] = math.sqrt(sum((v - r["L"]) ** 2 for v in ls) / len(ls))
         step = window[-1]["step"]
         try:
-            d = [x for x in read_csv(os.path.join(run_dir, "drops.csv")) if x["step"] == step]
+            every = read_csv(os.path.join(run_dir, "drops.csv"))
+            d = [x for x in every if x["step"] == step]
             main = [float(x["d_eq_over_d0"]) for x in d if x["satellite"] == "0"]
             r["n_drops"], r["n_sat"] = len(d), len(d) - len(main)
             r["drops_main"] = sum(main) / len(main) if main else None
+            # the main drops of every sample of the window: one sample holds one or two main
+            # drops, some merging or just pinched off; their median over the window is the
+            # drop size the jet makes
+            steps = {x["step"] for x in window}
+            seen = sorted(float(x["d_eq_over_d0"]) for x in every
+                          if x["step"] in steps and x["satellite"] == "0")
+            r["n_main_window"] = len(seen)
+            r["drops_median"] = statistics.median(seen) if seen else None
         except (OSError, KeyError, ValueError) as e:
             r["notes"].append(f"drops.csv: {e}")
     elif window:
@@ -232,7 +244,8 @@ def report(args):
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "err vs measured",
-              "first breakup t [s], L/d0", "main drop d/d0", "drops (satellites)", "status",
+              "first breakup t [s], L/d0", "main drop d/d0", "main drops d/d0 window median (n)",
+              "drops (satellites)", "status",
               "particles", "wall [s]"]
     rows, missing = [], []
     xs_m, ys_m, xs_s, ys_s = [], [], [], []
@@ -250,6 +263,7 @@ def report(args):
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
                      f"{fmt(r['L'])} ({fmt(r['L_std'])})", fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
+                     f"{fmt(r['drops_median'])} ({r['n_main_window']})",
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
                      fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
     with open(os.path.join(args.out, "round_jets.csv"), "w", newline="") as f:
