@@ -28,7 +28,8 @@ by when the start-up head has long gone (the first breakup comes at about L / U)
 only when every sample of that window has the jet broken. Its standard deviation over the
 window is given beside it. Drops (equivalent sphere diameters, satellites are drops smaller
 than d0): the mean of the main drops of the last sample of the window, and the median of the
-main drops of every sample of the window with their count.
+main drops of every sample of the window, with the number of drop-samples it is taken over
+(a drop counts once for each sample it is seen in).
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
@@ -200,9 +201,9 @@ def read_run(run_dir, info):
             main = [float(x["d_eq_over_d0"]) for x in d if x["satellite"] == "0"]
             r["n_drops"], r["n_sat"] = len(d), len(d) - len(main)
             r["drops_main"] = sum(main) / len(main) if main else None
-            # the main drops of every sample of the window: one sample holds one or two main
-            # drops, some merging or just pinched off; their median over the window is the
-            # drop size the jet makes
+            # the main drops of every sample of the window (a drop is counted in each sample
+            # it is seen in, so the median weighs it by its time in the box): the last
+            # sample's few drops, some merging or just pinched off, scatter more
             steps = {x["step"] for x in window}
             seen = sorted(float(x["d_eq_over_d0"]) for x in every
                           if x["step"] in steps and x["satellite"] == "0")
@@ -244,7 +245,7 @@ def report(args):
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "err vs measured",
-              "first breakup t [s], L/d0", "main drop d/d0", "main drops d/d0 window median (n)",
+              "first breakup t [s], L/d0", "main drop d/d0", "main drops d/d0 window median (drop-samples)",
               "drops (satellites)", "status",
               "particles", "wall [s]"]
     rows, missing = [], []

@@ -67,7 +67,8 @@ def main():
         write(os.path.join(d, "drops.csv"),
               "time,step,drop,particles,volume,d_eq_over_d0,xc,zc,s_max_over_d0,satellite\n"
               "0.25,60,0,50,1e-9,1.8,0,0.01,80,0\n0.25,60,1,60,1e-9,2.0,0,0.01,75,0\n"
-              "0.25,60,2,3,1e-11,0.4,0,0.01,72,1\n0.2,50,0,3,1e-11,5.0,0,0.01,72,0\n")
+              "0.25,60,2,3,1e-11,0.4,0,0.01,72,1\n0.2,50,0,3,1e-11,5.0,0,0.01,72,0\n"
+              "0.1,20,0,90,1e-9,9.0,0,0.01,70,0\n")   # before the window: not in the median
         fake_run(os.path.join(sdir, "mc_u1.0179"),
                  [(0.05, 10, 1, 80.0), (0.2, 20, 1, 90.0), (0.25, 30, 0, 0.0)])
         out = os.path.join(tmp, "out")
@@ -81,6 +82,8 @@ def main():
         check(r.get("err vs measured") == "-1%", f"error vs 67.52: {r.get('err vs measured')}")
         check(r.get("main drop d/d0") == "1.90", f"main drops (1.8 + 2.0) / 2: {r.get('main drop d/d0')}")
         check(r.get("drops (satellites)") == "3 (1)", f"drops: {r.get('drops (satellites)')}")
+        med = r.get("main drops d/d0 window median (drop-samples)")
+        check(med == "2.00 (3)", f"window median of 1.8, 2.0 (step 60), 5.0 (step 50), not 9.0 (step 20): {med}")
         check(r.get("first breakup t [s], L/d0") == "0.0500, 60.00", r.get("first breakup t [s], L/d0"))
         we_d = 1000 * 0.7814 ** 2 * 0.001194 / 0.072
         check(r.get("We_d") == f"{we_d:.3g}", f"We_d {r.get('We_d')} vs {we_d:.3g}")
