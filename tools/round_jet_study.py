@@ -26,9 +26,10 @@ orifice (drops beyond leave the run). The breakup length of a run is the mean of
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.25 L_ref / U,
 by when the start-up head has long gone (the first breakup comes at about L / U); it counts
 only when every sample of that window has the jet broken. Its standard deviation over the
-window is given beside it. Drops (equivalent sphere diameters, satellites are drops smaller
-than d0): the mean of the main drops of the last sample of the window, and the median of the
-main drops of every sample of the window, with the number of drop-samples it is taken over
+window is given beside it, and the number of samples in the window (fewer where a run stopped
+within it). Drops (equivalent sphere diameters, satellites are drops smaller than d0): the mean
+of the main drops of the last sample of the window, and the median of the main drops of every
+sample of the window, with the number of drop-samples it is taken over
 (a drop counts once for each sample it is seen in).
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
@@ -244,7 +245,8 @@ def report(args):
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
-              "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "err vs measured",
+              "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "window samples",
+              "err vs measured",
               "first breakup t [s], L/d0", "main drop d/d0", "main drops d/d0 window median (drop-samples)",
               "drops (satellites)", "status",
               "particles", "wall [s]"]
@@ -262,7 +264,7 @@ def report(args):
             xs_s.append(g["x"]), ys_s.append(r["L"])
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
-                     f"{fmt(r['L'])} ({fmt(r['L_std'])})", fmt(err, "+.0f") + ("%" if err is not None else ""),
+                     f"{fmt(r['L'])} ({fmt(r['L_std'])})", f"{r['n_window']}", fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})",
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],

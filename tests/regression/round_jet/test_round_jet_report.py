@@ -80,6 +80,7 @@ def main():
         r = rows.get("mc_u0.7814", {})
         check(r.get("L/d0 SPH (std)") == "67.00 (2.24)", f"mc_u0.7814 L: {r.get('L/d0 SPH (std)')}")
         check(r.get("err vs measured") == "-1%", f"error vs 67.52: {r.get('err vs measured')}")
+        check(r.get("window samples") == "4", f"samples at t >= 0.129 s: {r.get('window samples')}")
         check(r.get("main drop d/d0") == "1.90", f"main drops (1.8 + 2.0) / 2: {r.get('main drop d/d0')}")
         check(r.get("drops (satellites)") == "3 (1)", f"drops: {r.get('drops (satellites)')}")
         med = r.get("main drops d/d0 window median (drop-samples)")

@@ -114,7 +114,8 @@ def main():
         length = number(row["L/d0 SPH (std)"])
         measured = float(row["L/d0 measured"])
         drop = number(row["main drops d/d0 window median (drop-samples)"])
-        print(f"{name}: x = {x:.3f}, L/d0 = {row['L/d0 SPH (std)']} (measured {measured}), "
+        print(f"{name}: x = {x:.3f}, L/d0 = {row['L/d0 SPH (std)']} over {row['window samples']} "
+              f"samples (measured {measured}), "
               f"main drops (window median) {drop if drop is not None else '-'} d0, {row['status']}")
         if length is None:
             if mode == "--mansour-chigier":
