@@ -206,8 +206,8 @@ def read_run(run_dir, info):
             # it is seen in, so the median weighs it by its time in the box): the last
             # sample's few drops, some merging or just pinched off, scatter more
             steps = {x["step"] for x in window}
-            seen = sorted(float(x["d_eq_over_d0"]) for x in every
-                          if x["step"] in steps and x["satellite"] == "0")
+            seen = [float(x["d_eq_over_d0"]) for x in every
+                    if x["step"] in steps and x["satellite"] == "0"]
             r["n_main_window"] = len(seen)
             r["drops_median"] = statistics.median(seen) if seen else None
         except (OSError, KeyError, ValueError) as e:
@@ -246,9 +246,8 @@ def report(args):
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "window samples",
-              "err vs measured",
-              "first breakup t [s], L/d0", "main drop d/d0", "main drops d/d0 window median (drop-samples)",
-              "drops (satellites)", "status",
+              "err vs measured", "first breakup t [s], L/d0", "main drop d/d0",
+              "main drops d/d0 window median (drop-samples)", "drops (satellites)", "status",
               "particles", "wall [s]"]
     rows, missing = [], []
     xs_m, ys_m, xs_s, ys_s = [], [], [], []
@@ -264,7 +263,8 @@ def report(args):
             xs_s.append(g["x"]), ys_s.append(r["L"])
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
-                     f"{fmt(r['L'])} ({fmt(r['L_std'])})", f"{r['n_window']}", fmt(err, "+.0f") + ("%" if err is not None else ""),
+                     f"{fmt(r['L'])} ({fmt(r['L_std'])})", f"{r['n_window']}",
+                     fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})",
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
