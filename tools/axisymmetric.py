@@ -15,7 +15,9 @@ Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
   rest     RUN --sigma S --radius A [--rho R0] [--from T]
                                         largest speed (from T on) of a liquid body that should
                                         stay at rest, over the capillary velocity sqrt(sigma/(rho A))
-  mode2    RUN --sigma S --rho R0       omega of the mode-2 oscillation vs 8 sigma/(rho R^3)
+  mode2    RUN --sigma S --rho R0 [--nu NU] [--extent-max E]
+                                        omega of the mode-2 oscillation vs 8 sigma/(rho R^3)
+                                        (and Lamb's damped value), while the drop is intact
   growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
                                         growth rate of the Fourier mode of r_s(z) vs Rayleigh
 Each prints a line `SUMMARY key=value ...` (the format of `sphjet drop`), which
@@ -139,13 +141,56 @@ def rest(a):
 
 
 # ---------------------------------------------------------------- mode 2
+def damped_fit(t, y, om0):
+    """Least-squares fit y = c + exp(-gamma t) (a cos(omega t) + b sin(omega t)): for each
+    (omega, gamma) on a grid (omega within +-50% of om0, gamma in [0, om0/2]) the linear
+    coefficients by least squares, the pair of the smallest residual refined on a grid 20 times
+    finer around it. Returns (omega, gamma), or None when the residual has no interior minimum
+    in omega (no oscillation in the window). The crossings' estimate depends on the mean of the
+    window (a partial period biases it); the fit does not."""
+    import numpy as np
+
+    def best(oms, gams):
+        res = np.full((len(oms), len(gams)), np.inf)
+        for j, g in enumerate(gams):
+            e = np.exp(-g * t)
+            for i, o in enumerate(oms):
+                A = np.column_stack((np.ones_like(t), e * np.cos(o * t), e * np.sin(o * t)))
+                coef, r, *_ = np.linalg.lstsq(A, y, rcond=None)
+                res[i, j] = float(((A @ coef - y) ** 2).sum())
+        i, j = np.unravel_index(np.argmin(res), res.shape)
+        return i, j
+    oms = np.linspace(0.5 * om0, 1.5 * om0, 201)
+    gams = np.linspace(0.0, 0.5 * om0, 51)
+    i, j = best(oms, gams)
+    if i in (0, len(oms) - 1):
+        return None
+    do, dg = oms[1] - oms[0], gams[1] - gams[0]
+    oms2 = np.linspace(oms[i] - do, oms[i] + do, 41)
+    gams2 = np.linspace(max(gams[j] - dg, 0.0), gams[j] + dg, 41)
+    i2, j2 = best(oms2, gams2)
+    return float(oms2[i2]), float(gams2[j2])
+
+
 def mode2(a):
+    """Period of the mode-2 oscillation from the zero crossings of the deformation
+    (<z^2> - <r^2>/2)/(<z^2> + <r^2>/2) about its mean, over the snapshots in which the drop is
+    intact: every fluid particle within --extent-max radii of the centre of mass (a particle
+    thrown out at a pole, cases/axisymmetric/README.md, ends the window; the oscillation's own
+    extent is 1 + 2 x elongation). With --nu also against Lamb's damped frequency
+    sqrt(omega0^2 - (5 nu / R^2)^2) (n = 2)."""
     import numpy as np
     snaps = [fluid(d) for d in snapshots(a.run)]
+    v0 = volume(snaps[0])
+    radius = (3.0 * v0 / (4.0 * math.pi)) ** (1.0 / 3.0)
     t, dd = [], []
+    intact_until = None
     for d in snaps:
         m = d["m"]
         zc = (m * d["z"]).sum() / m.sum()
+        if float(np.hypot(d["x"], d["z"] - zc).max()) > a.extent_max * radius:
+            intact_until = d["time"]
+            break
         # second moments of the 3D body: <z^2> against <y^2> = <x^2> = <r^2>/2
         izz = (m * (d["z"] - zc) ** 2).sum() / m.sum()
         irr = (m * d["x"] ** 2).sum() / m.sum() / 2.0
@@ -157,18 +202,25 @@ def mode2(a):
     for i in range(len(t) - 1):
         if dev[i] == 0 or dev[i] * dev[i + 1] < 0:
             cross.append(t[i] + (t[i + 1] - t[i]) * dev[i] / (dev[i] - dev[i + 1]))
-    v0 = volume(snaps[0])
-    radius = (3.0 * v0 / (4.0 * math.pi)) ** (1.0 / 3.0)
     om_th = math.sqrt(sphere_mode2_omega2(a.sigma, a.rho, radius))
+    om_d = math.sqrt(max(om_th ** 2 - (5.0 * a.nu / radius ** 2) ** 2, 0.0))
+    intact = "nan" if intact_until is None else f"{intact_until:.4g}"
+    fit = damped_fit(t, dd, om_th) if len(t) > 8 else None
+    fit_txt = "omega_fit=nan gamma_fit=nan" if fit is None else \
+        (f"omega_fit={fit[0]:.4f} omega2_fit_error={(fit[0] / om_th) ** 2 - 1:.4f} "
+         f"omega2_fit_error_damped={(fit[0] / om_d) ** 2 - 1:.4f} gamma_fit={fit[1]:.3f} "
+         f"gamma_lamb={5.0 * a.nu / radius ** 2:.3f}")
     use = cross[: a.crossings] if a.crossings else cross
     if len(use) < 2:
-        print(f"SUMMARY crossings={len(cross)} period_error=nan omega_error=nan")
+        print(f"SUMMARY crossings={len(cross)} period_error=nan omega_error=nan intact_until={intact} {fit_txt}")
         return 0
     period = 2.0 * (use[-1] - use[0]) / (len(use) - 1)
     om = 2.0 * math.pi / period
     print(f"SUMMARY crossings={len(use)} period={period:.5f} omega={om:.4f} omega_theory={om_th:.4f} "
           f"omega_error={om / om_th - 1:.4f} omega2_error={(om / om_th) ** 2 - 1:.4f} "
-          f"radius={radius:.6g} first_extremum={dev[np.argmax(abs(dev[: max(2, len(dev) // 4)]))]:.4f}")
+          f"omega_damped={om_d:.4f} omega2_error_damped={(om / om_d) ** 2 - 1:.4f} "
+          f"intact_until={intact} last_crossing={use[-1]:.4g} {fit_txt} radius={radius:.6g} "
+          f"first_extremum={dev[np.argmax(abs(dev[: max(2, len(dev) // 4)]))]:.4f}")
     return 0
 
 
@@ -266,6 +318,9 @@ def main(argv=None):
     p.add_argument("--sigma", type=float, required=True)
     p.add_argument("--rho", type=float, default=1000.0)
     p.add_argument("--crossings", type=int, default=0, help="use the first N zero crossings (0: all)")
+    p.add_argument("--nu", type=float, default=0.0, help="kinematic viscosity, for Lamb's damped frequency")
+    p.add_argument("--extent-max", type=float, default=1.2,
+                   help="the window ends at the first snapshot with a particle beyond this many radii")
     p = sub.add_parser("growth")
     p.add_argument("run")
     p.add_argument("--sigma", type=float, required=True)
