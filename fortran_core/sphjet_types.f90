@@ -47,6 +47,8 @@ module sphjet_types
     real(c_double) :: drive_x0 = 0.0_rp, drive_z0 = 0.0_rp  !< orifice centre [m]
     real(c_double) :: drive_ex = 0.0_rp, drive_ez = -1.0_rp !< unit jet axis (flow direction)
     real(c_double) :: drive_half_width = 0.0_rp  !< plug half-width across the axis [m]
+    real(c_double) :: axis_m1 = 0.0_rp       !< rings pair: a ring lighter is in the first column [kg]
+    integer(c_int) :: axis_pair = 0          !< axisymmetric pair: 0 smoothed radius, 1 rings
   end type sph_params_t
 
   !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in

@@ -80,4 +80,12 @@ std::string to_string(Geometry g) {
     return "unknown";
 }
 
+std::string to_string(AxisPair a) {
+    switch (a) {
+        case AxisPair::SmoothedRadius: return "smoothed_radius";
+        case AxisPair::Rings: return "rings";
+    }
+    return "unknown";
+}
+
 }  // namespace sphjet

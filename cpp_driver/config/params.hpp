@@ -23,6 +23,10 @@ enum class SurfaceTensionDelta : int { PressureConsistent = 0, ColourGradient = 
 // line x = 0 and a particle is a ring whose mass is its true 3D mass (core: sph_params_t::geometry,
 // fortran_core/physics/axisymmetric.f90, cases/axisymmetric/README.md).
 enum class Geometry : int { Planar = 0, Axisymmetric = 1 };
+// The axisymmetric pressure and continuity pair (core: sph_params_t::axis_pair,
+// cases/axisymmetric/README.md): the smoothed-radius pair (the default) or the rings pair,
+// the 3D SPH density of the rings with the midpoint rule's end correction at the axis.
+enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
 
 struct SimParams {
     // Numerics
@@ -89,6 +93,8 @@ struct SimParams {
     // (case keys domain.geometry, domain.periodic_z; either geometry).
     Geometry geometry = Geometry::Planar;
     bool periodic_z = false;
+    // The axisymmetric pair (case key domain.axis_pair; axisymmetric only).
+    AxisPair axis_pair = AxisPair::SmoothedRadius;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;
@@ -108,5 +114,6 @@ struct SimParams {
 [[nodiscard]] std::string to_string(BoundaryType b);
 [[nodiscard]] std::string to_string(SurfaceTensionDelta d);
 [[nodiscard]] std::string to_string(Geometry g);
+[[nodiscard]] std::string to_string(AxisPair a);
 
 }  // namespace sphjet

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -38,6 +39,10 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.st_delta = static_cast<int>(p.st_delta);
     c.geometry = static_cast<int>(p.geometry);
     c.periodic_z = p.periodic_z ? 1 : 0;
+    c.axis_pair = static_cast<int>(p.axis_pair);
+    // the rings pair's axis correction tells the first column (r = dx/2) by its ring mass,
+    // pi rho0 dx^2 dz against 3 pi rho0 dx^2 dz for the second (axisymmetric_loops.f90)
+    c.axis_m1 = p.axis_pair == AxisPair::Rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dx * p.dz : 0.0;
     c.h = p.h;
     c.rho0 = p.rho0;
     c.b = p.B;

@@ -8,7 +8,8 @@ module sphjet_capi
   use sphjet_kinds, only: rp, ip, i8, SPH_OK, SPH_ERR_ARGUMENT, SPH_ERR_CAPACITY, &
                           SPH_ERR_DT_COLLAPSE, BC_REPULSIVE, BC_DYNAMIC, VISC_ARTIFICIAL, &
                           VISC_LAMINAR, FILTER_NONE, FILTER_MLS, KIND_FLUID, &
-                          GEOM_PLANAR, GEOM_AXISYMMETRIC
+                          GEOM_PLANAR, GEOM_AXISYMMETRIC, AXIS_PAIR_SMOOTHED_RADIUS, &
+                          AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
   use sorted_state, only: sorted_t, gather_sorted
@@ -84,7 +85,9 @@ contains
       .and. prm%cfl > 0.0_rp .and. prm%sigma >= 0.0_rp &
       .and. any(prm%st_delta == [ST_DELTA_PRESSURE, ST_DELTA_COLOUR]) &
       .and. any(prm%geometry == [GEOM_PLANAR, GEOM_AXISYMMETRIC]) &
-      .and. any(prm%periodic_z == [0, 1])
+      .and. any(prm%periodic_z == [0, 1]) &
+      .and. any(prm%axis_pair == [AXIS_PAIR_SMOOTHED_RADIUS, AXIS_PAIR_RINGS]) &
+      .and. prm%axis_m1 >= 0.0_rp
     ! a period must hold the images of both ends apart (two kernel supports)
     if (prm%periodic_z /= 0) params_ok = params_ok .and. &
       prm%dom_zmax - prm%dom_zmin > 4.0_rp * prm%h
@@ -240,8 +243,12 @@ contains
     if (.not. ok) return
     if (st%n > 0 .and. .not. (associated(st%colour) .and. associated(st%st_nx) .and. &
                               associated(st%st_nz) .and. associated(st%kappa))) return
+    ! the rings pair's CSF force needs its rates (axisymmetric_loops.f90): fields only
+    if (prm%axis_pair == AXIS_PAIR_RINGS .and. c_associated(arr%ax)) return
     call c_f_pointer(ws_handle, ws)
     call gather_sorted(st, prm%h, ws%sorted, prm)
+    if (prm%axis_pair == AXIS_PAIR_RINGS .and. allocated(ws%sorted%axi_dx)) &
+      deallocate(ws%sorted%axi_dx, ws%sorted%axi_dz)   ! not this state's
     call surface_tension_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted)
     if (c_associated(arr%ax) .and. c_associated(arr%az)) then
       call c_f_pointer(arr%ax, ax, [st%n])

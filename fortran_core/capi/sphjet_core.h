@@ -64,6 +64,8 @@ typedef struct sph_params_t {
     double drive_ex;          /* unit jet axis (flow direction) */
     double drive_ez;
     double drive_half_width;  /* plug half-width across the axis [m] */
+    double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
+    int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
 } sph_params_t;
 
 typedef struct sph_arrays_t {

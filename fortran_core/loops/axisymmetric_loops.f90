@@ -10,18 +10,41 @@
 !>                du/dr|_a = sum_b A_b (u_b - u_a) dW_ab/dx_a)
 !> Artificial viscosity gets no hoop term: it is numerical damping of the meridian plane,
 !> not a model of a physical viscosity. Image slots (order > n_state) are left alone.
+!> With domain.axis_pair = "rings" (prm%axis_pair = AXIS_PAIR_RINGS) the continuity and the
+!> pressure are the rings pair's instead (ring_rates; physics/axisymmetric.f90), and the
+!> pressure pair's truncation vector, which the CSF force needs, is left in s%axi_dx, s%axi_dz.
 module axisymmetric_loops
-  use sphjet_kinds, only: rp, VISC_LAMINAR, KERNEL_WENDLAND
+  use sphjet_kinds, only: rp, pi, VISC_LAMINAR, KERNEL_WENDLAND, AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_FRESH, &
                        SWEEP_REUSE
   use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
-                          AXIS_TABLE_N
+                          AXIS_TABLE_N, ring_kernel_tables, ring_kernel_derivs, RING_NU, RING_NV
   implicit none
   private
   public :: axisymmetric_rates, axis_weights_of
+
+  !> The ring kernel's derivative tables per kernel kind (ring_kernel_tables), built on first
+  !> use.
+  real(rp), save, allocatable :: ring_gs(:, :, :), ring_gp(:, :, :)
+  logical, save :: ring_ready(KERNEL_WENDLAND) = .false.
+
+  !> The rings pair's sweep: continuity, pressure and truncation-vector sums (ring masses m,
+  !> ring volumes vr = m/rho) and, with laminar viscosity, the radial velocity derivatives as
+  !> axi_body_t's (planar volumes v, images included).
+  type, extends(pair_body_t) :: ring_body_t
+    type(sorted_t), pointer :: s => null()
+    logical :: laminar = .false.
+    integer :: kind = 0
+    real(rp) :: h = 0.0_rp
+    real(rp), allocatable :: v(:), m(:), pg(:), cont(:), pax(:), paz(:), dudr(:), dwdr(:)
+    real(rp), allocatable :: vr(:), ddx(:), ddz(:)
+    logical, allocatable :: real_(:)
+  contains
+    procedure :: visit => ring_visit
+  end type ring_body_t
 
   !> The sweep: the continuity and pressure sums and, with laminar viscosity, the radial
   !> derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area.
@@ -57,6 +80,10 @@ contains
 
     n = s%n
     laminar = prm%viscosity == VISC_LAMINAR .and. prm%visc_value > 0.0_rp
+    if (prm%axis_pair == AXIS_PAIR_RINGS) then
+      call ring_rates(prm, kern, s, n_state, laminar, kept)
+      return
+    end if
     allocate(body%v(n), body%mu(n), body%pg(n), body%cont(n), body%pax(n), body%paz(n), &
              body%dudr(n), body%dwdr(n), gi(n), hoop(n))
     call axis_weights_of(kern, s%x(1:n), gi, hoop)
@@ -91,6 +118,149 @@ contains
     end do
     !$omp end parallel do
   end subroutine axisymmetric_rates
+
+  !> The rings pair (physics/axisymmetric.f90, ring_kernel_tables): the 3D SPH density of the
+  !> rings rho_a = sum_b m_b Wr_ab (a itself included: its own far side), its continuity and
+  !> Euler-Lagrange force; pairs with a mirror image are skipped (the ring kernel holds the far
+  !> side of each ring), periodic images are not. The lattice's error at the axis is the
+  !> midpoint rule's, (dx^2/24) F'(0) per row of rings (Euler-Maclaurin, F = 2 pi r f): to that
+  !> order the first column's rings (r = dx/2, ring mass pi rho0 dx^2 dz, the next column's 3
+  !> times that: told by a mass below prm%axis_m1 = 2 pi rho0 dx^2 dz) count with 11/12 of
+  !> their mass in every sum of the pair (so that it still conserves its energy, with that
+  !> mass as the rings' inertia in it). prm%axis_m1 = 0 leaves the masses alone.
+  subroutine ring_rates(prm, kern, s, n_state, laminar, kept)
+    type(sph_params_t), intent(in) :: prm
+    type(kernel_t), intent(in) :: kern
+    type(sorted_t), intent(inout), target :: s
+    integer, intent(in) :: n_state
+    logical, intent(in) :: laminar
+    logical, intent(in), optional :: kept
+    type(ring_body_t) :: body
+    integer :: k, n, how
+    real(rp) :: red, hx, hz, fs, fp, self
+    n = s%n
+    !$omp critical (ring_tables_cache)
+    if (.not. allocated(ring_gs)) then
+      allocate(ring_gs(RING_NU, RING_NV, KERNEL_WENDLAND), ring_gp(RING_NU, RING_NV, KERNEL_WENDLAND))
+    end if
+    if (.not. ring_ready(kern%kind)) then
+      call ring_kernel_tables(kern%kind, ring_gs(:, :, kern%kind), ring_gp(:, :, kern%kind))
+      ring_ready(kern%kind) = .true.
+    end if
+    !$omp end critical (ring_tables_cache)
+    allocate(body%v(n), body%m(n), body%pg(n), body%cont(n), body%pax(n), body%paz(n), &
+             body%dudr(n), body%dwdr(n), body%vr(n), body%ddx(n), body%ddz(n), body%real_(n))
+    body%v = s%m(1:n) / s%rho(1:n)
+    body%m = 2.0_rp * pi * mass_per_radian(s%m(1:n), s%x(1:n), prm%h)
+    ! the midpoint rule's end correction at the axis (above)
+    where (body%m < prm%axis_m1) body%m = body%m * (11.0_rp / 12.0_rp)
+    body%vr = body%m / s%rho(1:n)
+    body%pg = s%pr(1:n)
+    body%real_ = sign(1.0_rp, s%x(1:n)) > 0.0_rp   ! not an axis image
+    body%cont = 0.0_rp
+    body%pax = 0.0_rp
+    body%paz = 0.0_rp
+    body%dudr = 0.0_rp
+    body%dwdr = 0.0_rp
+    body%ddx = 0.0_rp
+    body%ddz = 0.0_rp
+    body%laminar = laminar
+    body%kind = kern%kind
+    body%h = prm%h
+    body%s => s
+    red = 0.0_rp
+    how = SWEEP_FRESH
+    if (present(kept)) how = merge(SWEEP_REUSE, SWEEP_FRESH, kept)
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, red, how)
+    if (allocated(s%axi_dx)) then
+      if (size(s%axi_dx) < n) deallocate(s%axi_dx, s%axi_dz)
+    end if
+    if (.not. allocated(s%axi_dx)) allocate(s%axi_dx(n + n / 4 + 16), s%axi_dz(n + n / 4 + 16))
+    !$omp parallel do schedule(static) private(hx, hz, fs, fp, self)
+    do k = 1, n
+      s%axi_dx(k) = 0.0_rp
+      s%axi_dz(k) = 0.0_rp
+      if (s%grid%order(k) > n_state) cycle
+      ! the ring's own far side: dWr(0, r^2)/dr = 2 r Fp
+      call ring_kernel_derivs(0.0_rp, s%x(k)**2, prm%h, ring_gs(:, :, kern%kind), &
+                              ring_gp(:, :, kern%kind), fs, fp)
+      self = 2.0_rp * s%x(k) * fp
+      s%ar(k) = body%cont(k) + body%m(k) * s%u(k) * self
+      s%axi_dx(k) = body%ddx(k) + body%vr(k) * self
+      s%axi_dz(k) = body%ddz(k)
+      if (s%fluid(k)) then
+        s%ax(k) = s%ax(k) + body%pax(k) - body%pg(k) * body%m(k) * self
+        s%az(k) = s%az(k) + body%paz(k)
+      end if
+      if (laminar .and. s%fluid(k)) then
+        call viscous_hoop(prm%visc_value, s%u(k), body%dudr(k), body%dwdr(k), s%x(k), prm%h, &
+                          hx, hz)
+        s%ax(k) = s%ax(k) + hx
+        s%az(k) = s%az(k) + hz
+      end if
+    end do
+    !$omp end parallel do
+  end subroutine ring_rates
+
+  !> The pairs of one row task: the rings pair's sums (ring_pairs).
+  subroutine ring_visit(self, pl, red)
+    class(ring_body_t), intent(inout) :: self
+    type(pair_list_t), intent(inout) :: pl
+    real(rp), intent(inout) :: red
+    call ring_pairs(self%laminar, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, self%s%x, self%s%u, &
+                    self%s%w, self%s%fluid, self%real_, self%h, ring_gs(:, :, self%kind), &
+                    ring_gp(:, :, self%kind), self%m, self%v, self%vr, self%pg, self%cont, &
+                    self%pax, self%paz, self%dudr, self%dwdr, self%ddx, self%ddz)
+    red = max(red, 0.0_rp)
+  end subroutine ring_visit
+
+  !> The rings pair's sums over the pairs of one list: pairs of two rings (no mirror image)
+  !> add to the continuity, the pressure and the truncation vector with the ring kernel's
+  !> derivatives (dWr/dr_a = 2 (r_a - r_b) Fs + r_b Fp, dWr/dz_a = 2 (z_a - z_b) Fs); fluid
+  !> pairs, images included, to the radial velocity derivatives as axi_pairs.
+  pure subroutine ring_pairs(laminar, np, pa, pb, dx, dz, f, x, u, w, fl, rl, h, gs, gp, m, v, &
+                             vr, pg, cont, pax, paz, dudr, dwdr, ddx, ddz)
+    logical, intent(in) :: laminar
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), x(*), u(*), w(*), m(*), v(*), vr(*), pg(*), h
+    real(rp), intent(in) :: gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
+    logical, intent(in) :: fl(*), rl(*)
+    real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*), ddx(*), ddz(*)
+    integer :: k, a, b
+    real(rp) :: du, dw, gx, q, t, fs, fp, dra, drb, dzz
+    do k = 1, np
+      a = pa(k)
+      b = pb(k)
+      if (rl(a) .and. rl(b)) then
+        call ring_kernel_derivs(dx(k)**2 + dz(k)**2, x(a) * x(b), h, gs, gp, fs, fp)
+        dra = 2.0_rp * dx(k) * fs + x(b) * fp
+        drb = -2.0_rp * dx(k) * fs + x(a) * fp
+        dzz = 2.0_rp * dz(k) * fs
+        q = u(a) * dra + u(b) * drb + (w(a) - w(b)) * dzz
+        cont(a) = cont(a) + m(b) * q
+        cont(b) = cont(b) + m(a) * q
+        t = pg(a) + pg(b)
+        pax(a) = pax(a) - m(b) * t * dra
+        paz(a) = paz(a) - m(b) * t * dzz
+        pax(b) = pax(b) - m(a) * t * drb
+        paz(b) = paz(b) + m(a) * t * dzz
+        if (fl(a) .and. fl(b)) then
+          ddx(a) = ddx(a) + 2.0_rp * vr(b) * dra
+          ddz(a) = ddz(a) + 2.0_rp * vr(b) * dzz
+          ddx(b) = ddx(b) + 2.0_rp * vr(a) * drb
+          ddz(b) = ddz(b) - 2.0_rp * vr(a) * dzz
+        end if
+      end if
+      if (.not. (laminar .and. fl(a) .and. fl(b))) cycle
+      gx = f(k) * dx(k)
+      du = u(b) - u(a)
+      dw = w(b) - w(a)
+      dudr(a) = dudr(a) + v(b) * du * gx
+      dwdr(a) = dwdr(a) + v(b) * dw * gx
+      dudr(b) = dudr(b) + v(a) * du * gx
+      dwdr(b) = dwdr(b) + v(a) * dw * gx
+    end do
+  end subroutine ring_pairs
 
   !> The axis weights 1/g and g'/g of every x (physics/axisymmetric.f90: axis_weights), from
   !> the kernel's tables (built once per kind).

@@ -81,6 +81,9 @@ module sorted_state
     real(rp), allocatable :: zshift(:)   !< z shift of a periodic image (+-lz), else 0
     ! accumulated rates (sorted order)
     real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
+    !> The rings pair's truncation vector (loops/axisymmetric_loops.f90, ring_rates), set with
+    !> the rates and read by the CSF force of the same evaluation
+    real(rp), allocatable :: axi_dx(:), axi_dz(:)
     ! per-particle inputs of the rates loop (loops/rates.f90): tensile R and repulsive-wall
     ! geometry, kept here so that an evaluation allocates (and page-faults) nothing
     real(rp), allocatable :: tr(:), wnx(:), wnz(:), wdb(:), wdf(:)

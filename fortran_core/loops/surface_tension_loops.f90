@@ -26,7 +26,7 @@
 !> colour in those too, a sphere at rest held 0.63-0.94 of its Laplace pressure, since that
 !> colour is 6% high on the lattice row next to the axis, where a sphere's poles are.
 module surface_tension_loops
-  use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC
+  use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC, AXIS_PAIR_RINGS
   use axisymmetric, only: azimuthal_curvature, mass_per_radian, axis_detection_factor
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
@@ -169,6 +169,19 @@ contains
     call sweep(PASS_NORMAL, kern, s, wk, .true., axi)
     if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
       wk%gx = wk%gx - sign(1.0_rp, s%x(1:n)) * hoop
+      if (prm%axis_pair == AXIS_PAIR_RINGS) then
+        ! the rings pair's own, from the rates of this evaluation (axisymmetric_rates); the
+        ! fields-only call of the initial state (sph_surface_tension_fields, no acceleration
+        ! asked for) has no rates: no force
+        wk%gx = 0.0_rp
+        wk%gz = 0.0_rp
+        if (allocated(s%axi_dx)) then
+          if (size(s%axi_dx) >= n) then
+            wk%gx = s%axi_dx(1:n)
+            wk%gz = s%axi_dz(1:n)
+          end if
+        end if
+      end if
       ! the radial part damped next to the axis (axis_detection_factor)
       wk%n2x = wk%n2x * wk%gi * axis_detection_factor(s%x(1:n), prm%h)
       wk%n2z = wk%n2z * wk%gi

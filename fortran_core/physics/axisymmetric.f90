@@ -19,6 +19,13 @@
 !>                Its one inconsistency: a uniform pressure pushes particles within 2h of the
 !>                axis with -P rho (|x|/g)~' (the smoothed slope of |x|/g), which the liquid
 !>                there balances with a pressure 13% above the rest at R/dx = 10 (README).
+!>   rings pair   (domain.axis_pair = "rings") in place of the three lines above:
+!>                rho_a = sum_b m_b Wr_ab, Wr the 3D kernel averaged over the azimuth of ring
+!>                b (ring_kernel_tables): the 3D SPH density of the rings, without images or
+!>                axis weight, its continuity and Euler-Lagrange force (loops/
+!>                axisymmetric_loops.f90, ring_pairs). No uniform-pressure error in the
+!>                continuum; the lattice's (the midpoint rule's at the axis) is corrected to
+!>                leading order by 11/12 of the first column's masses (README).
 !>   viscosity    du_r/dt += nu ((1/r) du_r/dr - u_r / r^2),  du_z/dt += nu (1/r) du_z/dr
 !>   CSF          kappa = div_2D nhat + nhat_r / r  (both principal curvatures)
 !> The viscous hoop terms and the azimuthal curvature take 1/r as 1/max(r, R_MIN_H h)
@@ -33,13 +40,16 @@ module axisymmetric
   implicit none
   private
   public :: axis_radius, planar_mass, mass_per_radian, viscous_hoop, azimuthal_curvature, &
-            R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N, axis_detection_factor
+            R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N, axis_detection_factor, &
+            ring_kernel_tables, ring_kernel_derivs, RING_NU, RING_NV
 
   !> Smallest radius used in 1/r, in units of h.
   real(rp), parameter :: R_MIN_H = 0.25_rp
   !> Smoothed-radius tables (axis_weight_tables): points, extent [h], grid of the sums [h].
   integer, parameter :: AXIS_TABLE_N = 201
   real(rp), parameter :: AXIS_TABLE_X = 2.0_rp, AXIS_GRID_D = 0.001_rp
+  !> Ring-kernel tables (ring_kernel_tables): points in u = s^2/(2h)^2 and v = p/(p + h^2).
+  integer, parameter :: RING_NU = 257, RING_NV = 257
 
 contains
 
@@ -162,5 +172,86 @@ contains
       hoop = ((1.0_rp - t) * hoopt(k) + t * hoopt(k + 1)) / h
     end if
   end subroutine axis_weights
+
+  !> Tables of the ring kernel's derivatives (the rings pair, domain.axis_pair = "rings"; the
+  !> pair itself is in loops/axisymmetric_loops.f90). The ring kernel is the 3D kernel averaged
+  !> over the azimuth of ring b seen from a point of ring a,
+  !>   Wr(s^2, p) = (1/pi) int_0^pi W3(d) dphi,  d^2 = s^2 + 4 p sin^2(phi/2),
+  !> s^2 = (r_a - r_b)^2 + (z_a - z_b)^2, p = r_a r_b: the density sum_b m_b Wr is the 3D SPH
+  !> density of the rings (no mirror images, no axis weight). With K(d) = W3'(d)/d:
+  !>   Fs = dWr/ds^2 = (1/2pi) int K dphi,  Fp = dWr/dp = (1/pi) int K 2 sin^2(phi/2) dphi.
+  !> For h = 1 on u = s^2/4 in [0, 1], v = p/(p + 1) in [0, 1]: gs = sqrt(p + 1) Fs,
+  !> gp = (p + 1)^(3/2) Fp (finite as p -> infinity; v = 1 taken at p = 1e12). W3 is the 2D
+  !> kernel's shape normalised in 3D (the integral of 4 pi q^2 f).
+  pure subroutine ring_kernel_tables(kind, gs, gp)
+    use sphjet_kinds, only: ip
+    use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval
+    integer(ip), intent(in) :: kind
+    real(rp), intent(out) :: gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
+    integer, parameter :: NQ = 800, NR = 20000
+    type(kernel_t) :: kern
+    real(rp) :: norm3, q, w, f, s2, p, phimax, phi, dphi, d, sn, as, ap
+    integer :: i, j, k
+    kern = kernel_setup(kind, 1.0_rp)
+    norm3 = 0.0_rp   ! int_0^2 4 pi q^2 W2(q) dq (midpoint): W3 = W2 / norm3
+    do k = 1, NR
+      q = (k - 0.5_rp) * 2.0_rp / NR
+      call kernel_eval(kern, q, w, f)
+      norm3 = norm3 + 4.0_rp * pi * q * q * w * (2.0_rp / NR)
+    end do
+    do j = 1, RING_NV
+      if (j == RING_NV) then
+        p = 1.0e12_rp
+      else
+        p = real(j - 1, rp) / (RING_NV - 1)
+        p = p / (1.0_rp - p)
+      end if
+      do i = 1, RING_NU
+        s2 = 4.0_rp * real(i - 1, rp) / (RING_NU - 1)
+        as = 0.0_rp
+        ap = 0.0_rp
+        if (p > 0.0_rp) then
+          phimax = 2.0_rp * asin(min(1.0_rp, sqrt(max(4.0_rp - s2, 0.0_rp)) / (2.0_rp * sqrt(p))))
+        else
+          phimax = pi
+        end if
+        dphi = phimax / NQ
+        do k = 1, NQ
+          phi = (k - 0.5_rp) * dphi
+          sn = sin(0.5_rp * phi)
+          d = sqrt(s2 + 4.0_rp * p * sn * sn)
+          if (d >= 2.0_rp) cycle
+          call kernel_eval(kern, max(d, 1.0e-9_rp), w, f)
+          as = as + f * dphi
+          ap = ap + f * 2.0_rp * sn * sn * dphi
+        end do
+        gs(i, j) = sqrt(p + 1.0_rp) * as / (2.0_rp * pi * norm3)
+        gp(i, j) = (p + 1.0_rp)**1.5_rp * ap / (pi * norm3)
+      end do
+    end do
+  end subroutine ring_kernel_tables
+
+  !> Fs = dWr/ds^2 and Fp = dWr/dp of the ring kernel (ring_kernel_tables, bilinear) at
+  !> s2 = s^2, p = r_a r_b [1/m^5], h the smoothing length.
+  pure subroutine ring_kernel_derivs(s2, p, h, gs, gp, fs, fp)
+    real(rp), intent(in) :: s2, p, h, gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
+    real(rp), intent(out) :: fs, fp
+    real(rp) :: u, v, pn, tu, tv, h5, a, b
+    integer :: i, j
+    h5 = h**5
+    u = min(s2 / (4.0_rp * h * h), 1.0_rp) * (RING_NU - 1)
+    pn = p / (h * h)
+    v = pn / (pn + 1.0_rp) * (RING_NV - 1)
+    i = min(int(u) + 1, RING_NU - 1)
+    j = min(int(v) + 1, RING_NV - 1)
+    tu = u - (i - 1)
+    tv = v - (j - 1)
+    a = (1.0_rp - tu) * gs(i, j) + tu * gs(i + 1, j)
+    b = (1.0_rp - tu) * gs(i, j + 1) + tu * gs(i + 1, j + 1)
+    fs = ((1.0_rp - tv) * a + tv * b) / (sqrt(pn + 1.0_rp) * h5)
+    a = (1.0_rp - tu) * gp(i, j) + tu * gp(i + 1, j)
+    b = (1.0_rp - tu) * gp(i, j + 1) + tu * gp(i + 1, j + 1)
+    fp = ((1.0_rp - tv) * a + tv * b) / ((pn + 1.0_rp)**1.5_rp * h5)
+  end subroutine ring_kernel_derivs
 
 end module axisymmetric

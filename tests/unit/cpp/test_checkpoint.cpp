@@ -126,6 +126,7 @@ SimParams unusual_params() {
     p.domain_box = true;
     p.geometry = Geometry::Axisymmetric;  // not the default
     p.periodic_z = true;
+    p.axis_pair = AxisPair::Rings;  // not the default
     return p;
 }
 
@@ -179,6 +180,7 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
     EXPECT_EQ(a.domain_box, b.domain_box);
     EXPECT_EQ(a.geometry, b.geometry);
     EXPECT_EQ(a.periodic_z, b.periodic_z);
+    EXPECT_EQ(a.axis_pair, b.axis_pair);
 }
 
 RunState unusual_state() {
@@ -428,6 +430,15 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     const SimParams pre_jet = read_checkpoint(dir).params;
     EXPECT_EQ(pre_jet.drive_u, 0.0);
     EXPECT_FALSE(pre_jet.domain_box);
+
+    // And the axisymmetric pair: without it, the smoothed-radius pair (the only one before).
+    write_sample(dir);
+    {
+        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
+        ASSERT_GE(H5Adelete(g, "axis_pair"), 0);
+    }
+    EXPECT_EQ(read_checkpoint(dir).params.axis_pair, AxisPair::SmoothedRadius);
     fs::remove_all(dir);
 }
 
