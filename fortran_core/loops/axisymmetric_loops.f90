@@ -31,30 +31,36 @@ module axisymmetric_loops
   real(rp), save, allocatable :: ring_gs(:, :, :), ring_gp(:, :, :)
   logical, save :: ring_ready(KERNEL_WENDLAND) = .false.
 
-  !> The rings pair's sweep: continuity, pressure and truncation-vector sums (ring masses m,
-  !> ring volumes vr = m/rho) and, with laminar viscosity, the radial velocity derivatives as
-  !> axi_body_t's (planar volumes v, images included).
-  type, extends(pair_body_t) :: ring_body_t
+  !> The sums of either pair's sweep: continuity, pressure and, with laminar viscosity, the
+  !> radial derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area
+  !> (planar volume v = m / rho); pg the pressure factor of the pair.
+  type, abstract, extends(pair_body_t) :: axi_sums_t
     type(sorted_t), pointer :: s => null()
     logical :: laminar = .false.
+    real(rp), allocatable :: v(:), pg(:), cont(:), pax(:), paz(:), dudr(:), dwdr(:)
+  contains
+    procedure :: start => sums_start
+    procedure :: sweep => sums_sweep
+    procedure :: accelerate => sums_accelerate
+  end type axi_sums_t
+
+  !> The smoothed-radius pair's sweep (axi_pairs), with the masses per radian mu.
+  type, extends(axi_sums_t) :: axi_body_t
+    real(rp), allocatable :: mu(:)
+  contains
+    procedure :: visit => axi_visit
+  end type axi_body_t
+
+  !> The rings pair's sweep (ring_pairs), with the ring masses m, the ring volumes vr = m/rho
+  !> and the truncation vector's sums ddx, ddz.
+  type, extends(axi_sums_t) :: ring_body_t
     integer :: kind = 0
     real(rp) :: h = 0.0_rp
-    real(rp), allocatable :: v(:), m(:), pg(:), cont(:), pax(:), paz(:), dudr(:), dwdr(:)
-    real(rp), allocatable :: vr(:), ddx(:), ddz(:)
+    real(rp), allocatable :: m(:), vr(:), ddx(:), ddz(:)
     logical, allocatable :: real_(:)
   contains
     procedure :: visit => ring_visit
   end type ring_body_t
-
-  !> The sweep: the continuity and pressure sums and, with laminar viscosity, the radial
-  !> derivatives (u_b - u_a) F dx, (w_b - w_a) F dx weighted by the partner's area.
-  type, extends(pair_body_t) :: axi_body_t
-    type(sorted_t), pointer :: s => null()
-    logical :: laminar = .false.
-    real(rp), allocatable :: v(:), mu(:), pg(:), cont(:), pax(:), paz(:), dudr(:), dwdr(:)
-  contains
-    procedure :: visit => axi_visit
-  end type axi_body_t
 
   !> Axis weight tables per kernel kind (axis_weight_tables), built on first use.
   real(rp), save :: tab_gi(AXIS_TABLE_N, KERNEL_WENDLAND), tab_hoop(AXIS_TABLE_N, KERNEL_WENDLAND)
@@ -73,8 +79,7 @@ contains
     integer, intent(in) :: n_state
     logical, intent(in), optional :: kept
     type(axi_body_t) :: body
-    integer :: k, n, how
-    real(rp) :: red, hx, hz
+    integer :: k, n
     real(rp), allocatable :: gi(:), hoop(:)
     logical :: laminar
 
@@ -84,37 +89,17 @@ contains
       call ring_rates(prm, kern, s, n_state, laminar, kept)
       return
     end if
-    allocate(body%v(n), body%mu(n), body%pg(n), body%cont(n), body%pax(n), body%paz(n), &
-             body%dudr(n), body%dwdr(n), gi(n), hoop(n))
+    allocate(gi(n), hoop(n))
     call axis_weights_of(kern, s%x(1:n), gi, hoop)
-    body%v = s%m(1:n) / s%rho(1:n)
+    call body%start(s, laminar)
     body%mu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h)
-    body%pg = s%pr(1:n) * gi
-    body%cont = 0.0_rp
-    body%pax = 0.0_rp
-    body%paz = 0.0_rp
-    body%dudr = 0.0_rp
-    body%dwdr = 0.0_rp
-    body%laminar = laminar
-    body%s => s
-    red = 0.0_rp
-    how = SWEEP_FRESH
-    if (present(kept)) how = merge(SWEEP_REUSE, SWEEP_FRESH, kept)
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, red, how)
-    !$omp parallel do schedule(static) private(hx, hz)
+    body%pg = body%pg * gi
+    call body%sweep(kern, kept)
+    !$omp parallel do schedule(static)
     do k = 1, n
       if (s%grid%order(k) > n_state) cycle
       s%ar(k) = body%cont(k) * gi(k) - s%rho(k) * hoop(k) * s%u(k)
-      if (s%fluid(k)) then
-        s%ax(k) = s%ax(k) + body%pax(k) + s%p(k) / s%rho(k) * hoop(k)
-        s%az(k) = s%az(k) + body%paz(k)
-      end if
-      if (laminar .and. s%fluid(k)) then
-        call viscous_hoop(prm%visc_value, s%u(k), body%dudr(k), body%dwdr(k), s%x(k), prm%h, &
-                          hx, hz)
-        s%ax(k) = s%ax(k) + hx
-        s%az(k) = s%az(k) + hz
-      end if
+      if (s%fluid(k)) call body%accelerate(prm, k, s%p(k) / s%rho(k) * hoop(k))
     end do
     !$omp end parallel do
   end subroutine axisymmetric_rates
@@ -136,8 +121,8 @@ contains
     logical, intent(in) :: laminar
     logical, intent(in), optional :: kept
     type(ring_body_t) :: body
-    integer :: k, n, how
-    real(rp) :: red, hx, hz, fs, fp, self
+    integer :: k, n
+    real(rp) :: fs, fp, self
     n = s%n
     !$omp critical (ring_tables_cache)
     if (.not. allocated(ring_gs)) then
@@ -148,35 +133,21 @@ contains
       ring_ready(kern%kind) = .true.
     end if
     !$omp end critical (ring_tables_cache)
-    allocate(body%v(n), body%m(n), body%pg(n), body%cont(n), body%pax(n), body%paz(n), &
-             body%dudr(n), body%dwdr(n), body%vr(n), body%ddx(n), body%ddz(n), body%real_(n))
-    body%v = s%m(1:n) / s%rho(1:n)
+    call body%start(s, laminar)
     body%m = 2.0_rp * pi * mass_per_radian(s%m(1:n), s%x(1:n), prm%h)
     ! the midpoint rule's end correction at the axis (above)
     where (body%m < prm%axis_m1) body%m = body%m * (11.0_rp / 12.0_rp)
     body%vr = body%m / s%rho(1:n)
-    body%pg = s%pr(1:n)
     body%real_ = sign(1.0_rp, s%x(1:n)) > 0.0_rp   ! not an axis image
-    body%cont = 0.0_rp
-    body%pax = 0.0_rp
-    body%paz = 0.0_rp
-    body%dudr = 0.0_rp
-    body%dwdr = 0.0_rp
-    body%ddx = 0.0_rp
-    body%ddz = 0.0_rp
-    body%laminar = laminar
+    allocate(body%ddx(n), body%ddz(n), source=0.0_rp)
     body%kind = kern%kind
     body%h = prm%h
-    body%s => s
-    red = 0.0_rp
-    how = SWEEP_FRESH
-    if (present(kept)) how = merge(SWEEP_REUSE, SWEEP_FRESH, kept)
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, red, how)
+    call body%sweep(kern, kept)
     if (allocated(s%axi_dx)) then
       if (size(s%axi_dx) < n) deallocate(s%axi_dx, s%axi_dz)
     end if
     if (.not. allocated(s%axi_dx)) allocate(s%axi_dx(n + n / 4 + 16), s%axi_dz(n + n / 4 + 16))
-    !$omp parallel do schedule(static) private(hx, hz, fs, fp, self)
+    !$omp parallel do schedule(static) private(fs, fp, self)
     do k = 1, n
       s%axi_dx(k) = 0.0_rp
       s%axi_dz(k) = 0.0_rp
@@ -188,19 +159,39 @@ contains
       s%ar(k) = body%cont(k) + body%m(k) * s%u(k) * self
       s%axi_dx(k) = body%ddx(k) + body%vr(k) * self
       s%axi_dz(k) = body%ddz(k)
-      if (s%fluid(k)) then
-        s%ax(k) = s%ax(k) + body%pax(k) - body%pg(k) * body%m(k) * self
-        s%az(k) = s%az(k) + body%paz(k)
-      end if
-      if (laminar .and. s%fluid(k)) then
-        call viscous_hoop(prm%visc_value, s%u(k), body%dudr(k), body%dwdr(k), s%x(k), prm%h, &
-                          hx, hz)
-        s%ax(k) = s%ax(k) + hx
-        s%az(k) = s%az(k) + hz
-      end if
+      if (s%fluid(k)) call body%accelerate(prm, k, -(body%pg(k) * body%m(k) * self))
     end do
     !$omp end parallel do
   end subroutine ring_rates
+
+  !> Readies the common sums for a sweep over the slots of s: v = m/rho, pg = p/rho^2 (a pair
+  !> may weight it), the sums zero.
+  subroutine sums_start(self, s, laminar)
+    class(axi_sums_t), intent(inout) :: self
+    type(sorted_t), intent(inout), target :: s
+    logical, intent(in) :: laminar
+    integer :: n
+    n = s%n
+    allocate(self%cont(n), self%pax(n), self%paz(n), self%dudr(n), self%dwdr(n), source=0.0_rp)
+    self%v = s%m(1:n) / s%rho(1:n)
+    self%pg = s%pr(1:n)
+    self%laminar = laminar
+    self%s => s
+  end subroutine sums_start
+
+  !> The sweep over the pairs with a fluid particle, images included. kept: the pairs the
+  !> last sweep at these positions kept (axisymmetric_rates).
+  subroutine sums_sweep(self, kern, kept)
+    class(axi_sums_t), intent(inout) :: self
+    type(kernel_t), intent(in) :: kern
+    logical, intent(in), optional :: kept
+    integer :: how
+    real(rp) :: red
+    red = 0.0_rp
+    how = SWEEP_FRESH
+    if (present(kept)) how = merge(SWEEP_REUSE, SWEEP_FRESH, kept)
+    call pair_sweep(self%s, kern, PAIRS_ANY_FLUID, self, red, how)
+  end subroutine sums_sweep
 
   !> The pairs of one row task: the rings pair's sums (ring_pairs).
   subroutine ring_visit(self, pl, red)
@@ -227,7 +218,7 @@ contains
     logical, intent(in) :: fl(*), rl(*)
     real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*), ddx(*), ddz(*)
     integer :: k, a, b
-    real(rp) :: du, dw, gx, q, t, fs, fp, dra, drb, dzz
+    real(rp) :: q, t, fs, fp, dra, drb, dzz
     do k = 1, np
       a = pa(k)
       b = pb(k)
@@ -251,14 +242,8 @@ contains
           ddz(b) = ddz(b) - 2.0_rp * vr(a) * dzz
         end if
       end if
-      if (.not. (laminar .and. fl(a) .and. fl(b))) cycle
-      gx = f(k) * dx(k)
-      du = u(b) - u(a)
-      dw = w(b) - w(a)
-      dudr(a) = dudr(a) + v(b) * du * gx
-      dwdr(a) = dwdr(a) + v(b) * dw * gx
-      dudr(b) = dudr(b) + v(a) * du * gx
-      dwdr(b) = dwdr(b) + v(a) * dw * gx
+      if (laminar .and. fl(a) .and. fl(b)) &
+        call add_radial_derivatives(a, b, f(k) * dx(k), u, w, v, dudr, dwdr)
     end do
   end subroutine ring_pairs
 
@@ -302,7 +287,7 @@ contains
     logical, intent(in) :: fl(*)
     real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*)
     integer :: k, a, b
-    real(rp) :: du, dw, gx, gz, q, t
+    real(rp) :: gx, gz, q, t
     do k = 1, np
       a = pa(k)
       b = pb(k)
@@ -318,15 +303,45 @@ contains
       paz(a) = paz(a) - mu(b) * t * gz
       pax(b) = pax(b) + mu(a) * t * gx
       paz(b) = paz(b) + mu(a) * t * gz
-      if (.not. (laminar .and. fl(a) .and. fl(b))) cycle
-      ! dW_ab/dx_a = F dx; dW_ba/dx_b = -F dx, and u_a - u_b = -(u_b - u_a): both get + g du
-      du = u(b) - u(a)
-      dw = w(b) - w(a)
-      dudr(a) = dudr(a) + v(b) * du * gx
-      dwdr(a) = dwdr(a) + v(b) * dw * gx
-      dudr(b) = dudr(b) + v(a) * du * gx
-      dwdr(b) = dwdr(b) + v(a) * dw * gx
+      if (laminar .and. fl(a) .and. fl(b)) &
+        call add_radial_derivatives(a, b, gx, u, w, v, dudr, dwdr)
     end do
   end subroutine axi_pairs
+
+  !> The radial derivatives of u_r and u_z of a fluid pair (a, b) with gx = dW_ab/dx_a = F dx:
+  !> du/dr|_a += A_b (u_b - u_a) gx, and b the same (dW_ba/dx_b = -gx, u_a - u_b = -(u_b - u_a)).
+  pure subroutine add_radial_derivatives(a, b, gx, u, w, v, dudr, dwdr)
+    integer, intent(in) :: a, b
+    real(rp), intent(in) :: gx, u(*), w(*), v(*)
+    real(rp), intent(inout) :: dudr(*), dwdr(*)
+    real(rp) :: du, dw
+    du = u(b) - u(a)
+    dw = w(b) - w(a)
+    dudr(a) = dudr(a) + v(b) * du * gx
+    dwdr(a) = dwdr(a) + v(b) * dw * gx
+    dudr(b) = dudr(b) + v(a) * du * gx
+    dwdr(b) = dwdr(b) + v(a) * dw * gx
+  end subroutine add_radial_derivatives
+
+  !> Adds to fluid slot k's acceleration its pressure sums, fx (the pair's own radial force
+  !> of the slot alone: its hoop term) and, with laminar viscosity, the viscous hoop terms
+  !> (physics/axisymmetric.f90, viscous_hoop) from its radial derivatives.
+  subroutine sums_accelerate(self, prm, k, fx)
+    class(axi_sums_t), intent(in) :: self
+    type(sph_params_t), intent(in) :: prm
+    integer, intent(in) :: k
+    real(rp), intent(in) :: fx
+    real(rp) :: hx, hz
+    associate (s => self%s)
+      s%ax(k) = s%ax(k) + self%pax(k) + fx
+      s%az(k) = s%az(k) + self%paz(k)
+      if (self%laminar) then
+        call viscous_hoop(prm%visc_value, s%u(k), self%dudr(k), self%dwdr(k), s%x(k), prm%h, &
+                          hx, hz)
+        s%ax(k) = s%ax(k) + hx
+        s%az(k) = s%az(k) + hz
+      end if
+    end associate
+  end subroutine sums_accelerate
 
 end module axisymmetric_loops
