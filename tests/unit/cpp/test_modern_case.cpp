@@ -158,6 +158,7 @@ void expect_same(const CaseSpec& a, const CaseSpec& b) {
     EXPECT_EQ(p.kernel, q.kernel);
     EXPECT_EQ(p.geometry, q.geometry);
     EXPECT_EQ(p.periodic_z, q.periodic_z);
+    EXPECT_EQ(p.axis_pair, q.axis_pair);
     EXPECT_EQ(p.integrator, q.integrator);
     EXPECT_EQ(p.density_filter, q.density_filter);
     EXPECT_EQ(p.filter_period, q.filter_period);
@@ -901,6 +902,31 @@ TEST(ModernCase, AxisymmetricAndPeriodicZ) {
     const CaseSpec p = parse_modern_case(kMinimal, "case.toml", {"domain.periodic_z=true", "domain.wall_bottom=false"});
     EXPECT_TRUE(p.params.periodic_z);
     EXPECT_TRUE(p.params.domain_box);
+}
+
+// domain.axis_pair (cases/CASE_FORMAT.md): the smoothed-radius pair by default; "rings" read,
+// written back and read again; refused in planar geometry, below h = 2 dx and for an unknown
+// value, naming the key, what was expected and what was found.
+TEST(ModernCase, AxisPair) {
+    const std::vector<std::string> axi = {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                          "numerics.lattice=\"sc\""};
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", axi).params.axis_pair, AxisPair::SmoothedRadius);
+    std::vector<std::string> rings = axi;
+    rings.push_back("domain.axis_pair=\"rings\"");
+    std::string e = error_of(kMinimal, rings);   // kMinimal's h is below 2 dx
+    EXPECT_NE(e.find("domain.axis_pair"), std::string::npos) << e;
+    EXPECT_NE(e.find("h_over_dx >= 2"), std::string::npos) << e;
+    EXPECT_NE(e.find("found h = "), std::string::npos) << e;
+    rings.push_back("resolution.h_over_dx=2.0");
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", rings);
+    EXPECT_EQ(s.params.axis_pair, AxisPair::Rings);
+    expect_round_trip(s);
+    e = error_of(kMinimal, {"domain.axis_pair=\"rings\""});
+    EXPECT_NE(e.find("domain.geometry = \"axisymmetric\""), std::string::npos) << e;
+    std::vector<std::string> bad = axi;
+    bad.push_back("domain.axis_pair=\"ring\"");
+    e = error_of(kMinimal, bad);
+    EXPECT_NE(e.find("\"smoothed_radius\", \"rings\""), std::string::npos) << e;
 }
 
 // output.revolution_sectors (cases/CASE_FORMAT.md [output]): read in axisymmetric cases, off by
