@@ -4,10 +4,12 @@
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--set-name mc paper]
-      [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet] [--dry-run]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings]
+      [--set-name mc paper] [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet]
+      [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--out cases/round_jet]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings]
+      [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -15,7 +17,9 @@ The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN
 The disturbance amplitude EPS (nozzle.disturbance, the plug speed u0 (1 + EPS sin(omega t)) at
 k a = 0.697) is the one free parameter: the same for every run of a study directory. With
 --remove-drops-below-h D every run removes the detached drops thinner than D h at its breakup
-checks (breakup.remove_drops_below_h, cases/CASE_FORMAT.md), in a study directory of its own.
+checks (breakup.remove_drops_below_h, cases/CASE_FORMAT.md), in a study directory of its own;
+with --axis-pair rings every run uses the rings pair (domain.axis_pair, cases/axisymmetric/
+README.md) instead of the default smoothed-radius pair, likewise in a directory of its own.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -122,9 +126,10 @@ def sizing(u, d0, l_ref, n):
             f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"]
 
 
-def plan(eps, n, size_c=None, remove_h=None):
+def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
     """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
-    = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length."""
+    = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length;
+    axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius pair)."""
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
@@ -138,22 +143,26 @@ def plan(eps, n, size_c=None, remove_h=None):
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
         extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
+    if axis_pair is not None:
+        extra.append(f"domain.axis_pair={axis_pair}")
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
 SET_NAMES = ("mc", "paper")
 
 
-def study_dir(root, eps, n, size_c=None, remove_h=None):
-    tail = ("" if size_c is None else f"_c{size_c:g}") + ("" if remove_h is None else f"_rm{remove_h:g}")
+def study_dir(root, eps, n, size_c=None, remove_h=None, axis_pair=None):
+    tail = (("" if size_c is None else f"_c{size_c:g}") + ("" if remove_h is None else f"_rm{remove_h:g}")
+            + ("" if axis_pair is None else f"_{axis_pair}"))
     return os.path.join(root, f"eps{eps:g}_n{n:g}{tail}")
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h), names, args.only, args.sphjet, args.dry_run)
+    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair), names,
+                       args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -237,13 +246,14 @@ def md_table(header, rows):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair)
     if not os.path.isdir(sdir):
         raise StudyError(f"{sdir}: no study there (run `round_jet_study.py run --eps {args.eps:g} "
                          f"--d0-over-dx {args.d0_over_dx:g}` first)")
     os.makedirs(args.out, exist_ok=True)
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
-            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h)]
+            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h,
+                                             args.axis_pair)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "window samples",
               "err vs measured", "first breakup t [s], L/d0", "main drop d/d0",
@@ -342,6 +352,8 @@ def main(argv=None):
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
         p.add_argument("--remove-drops-below-h", dest="remove_h", type=float, default=None, metavar="D",
                        help="remove detached drops with d_eq < D h at the breakup checks (default: keep all)")
+        p.add_argument("--axis-pair", choices=("rings",), default=None,
+                       help="the rings pair (domain.axis_pair) in every run (default: the smoothed-radius pair)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

@@ -123,6 +123,12 @@ def main():
                            capture_output=True, text=True)
         check("breakup.remove_drops_below_h=2" in p.stdout and "eps0.01_n10_c8_rm2" in p.stdout,
               f"--remove-drops-below-h: {p.stdout}")
+        # --axis-pair rings: the key on every run, in a study directory of its own
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--axis-pair", "rings", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("domain.axis_pair=rings" in p.stdout and "eps0.01_n10_c8_rings" in p.stdout,
+              f"--axis-pair: {p.stdout}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
         check(p.returncode == 2 and "--size-c" in p.stderr, f"--size-c 0: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)
