@@ -204,7 +204,8 @@ def mode2(a):
             cross.append(t[i] + (t[i + 1] - t[i]) * dev[i] / (dev[i] - dev[i + 1]))
     om_th = math.sqrt(sphere_mode2_omega2(a.sigma, a.rho, radius))
     om_d = math.sqrt(max(om_th ** 2 - (5.0 * a.nu / radius ** 2) ** 2, 0.0))
-    intact = "nan" if intact_until is None else f"{intact_until:.4g}"
+    intact = ("nan intact=1" if intact_until is None else f"{intact_until:.4g} intact=0") + \
+        f" t_end={snaps[-1]['time']:.4g}"
     fit = damped_fit(t, dd, om_th) if len(t) > 8 else None
     fit_txt = "omega_fit=nan gamma_fit=nan" if fit is None else \
         (f"omega_fit={fit[0]:.4f} omega2_fit_error={(fit[0] / om_th) ** 2 - 1:.4f} "

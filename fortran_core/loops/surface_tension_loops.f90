@@ -67,7 +67,7 @@ module surface_tension_loops
   !> values are rejected by the C entry points (params_ok).
 
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3, &
-                        PASS_SURFACE_CURVATURE = 4
+                        PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5
 
   !> Flat-surface colour tables C(delta/h) of csf_depth_table, built once per kernel kind
   !> (indexed by the kind; KERNEL_WENDLAND is the largest) on first use.
@@ -85,6 +85,8 @@ module surface_tension_loops
     !> axisymmetric only: the colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab of the mode's
     !> density and its gradient, which decide where the free surface is (see below)
     real(rp), allocatable :: c2(:), n2x(:), n2z(:)
+    !> the rings pair only (surface_mean_pairs): each particle's own curvature and force weight
+    real(rp), allocatable :: kown(:), wt(:)
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -128,12 +130,12 @@ contains
     type(sorted_t), intent(inout), target :: s
     logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
-    real(rp) :: w0, eps
+    real(rp) :: w0, eps, ax, az
     real(rp), allocatable, target :: kappa(:)
     real(rp), allocatable :: hoop(:)
     type(csf_loops_t) :: loops
     integer :: n, k, i
-    logical :: colour_delta, axi, reuse
+    logical :: colour_delta, axi, reuse, surface_mean
 
     reuse = .false.
     if (present(kept)) reuse = kept
@@ -148,6 +150,9 @@ contains
     loops = csf_loops_t(prm=prm, kern=kern, s=s, wk=wk, kappa=kappa, w0=w0, eps=eps, &
                         colour_delta=colour_delta, axi=axi)
 
+    surface_mean = prm%geometry == GEOM_AXISYMMETRIC .and. prm%axis_pair == AXIS_PAIR_RINGS &
+                   .and. prm%st_delta /= ST_DELTA_COLOUR
+    if (surface_mean) allocate(wk%kown(n), wk%wt(n), source=0.0_rp)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
@@ -211,6 +216,36 @@ contains
       !$omp end critical (csf_depth_cache)
     end if
     call in_team(loops, FORCE)
+    if (surface_mean) then
+      ! the rings pair: the force of every weighted row with the weighted mean curvature of
+      ! its neighbours, kappa_a = sum_b w_b kappa_b V_b W_ab / sum_b w_b V_b W_ab (b = a
+      ! included; w the force weight, csf_surface_weight): the rows within 2h of the surface
+      ! (four at h = 2 dx) balance one pressure, the surface's, where each row's own curvature
+      ! from its own normals goes wrong next to a pole (cases/axisymmetric/README.md)
+      if (s%n > s%n_real) then
+        call copy_to_images(s, wk%kown, .false.)
+        call copy_to_images(s, wk%wt, .false.)
+      end if
+      !$omp parallel do schedule(static)
+      do k = 1, n
+        wk%num(k) = wk%wt(k) * wk%kown(k) * wk%v(k) * w0
+        wk%den(k) = wk%wt(k) * wk%v(k) * w0
+      end do
+      !$omp end parallel do
+      call sweep(PASS_SURFACE_MEAN, kern, s, wk, .true., axi)
+      !$omp parallel do schedule(static) private(ax, az)
+      do k = 1, n
+        if (wk%flag(k) == 0.0_rp .or. s%grid%order(k) > st%n) cycle
+        if (wk%den(k) > 0.0_rp) kappa(k) = wk%num(k) / wk%den(k)
+        if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
+          call csf_acceleration(prm%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%gx(k), &
+                                wk%wt(k) * wk%gz(k), ax, az)
+          s%ax(k) = s%ax(k) + ax
+          s%az(k) = s%az(k) + az
+        end if
+      end do
+      !$omp end parallel do
+    end if
 
     ! fields in particle order
     if (associated(st%colour) .and. associated(st%st_nx) .and. associated(st%st_nz) &
@@ -306,6 +341,11 @@ contains
                                         csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
           end if
           kappa(k) = kap
+          if (allocated(wk%kown)) then   ! the rings pair: force after surface_mean_pairs
+            wk%kown(k) = kap
+            wk%wt(k) = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%h)
+            cycle
+          end if
           if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
             if (colour_delta) then
               call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
@@ -326,6 +366,25 @@ contains
       end select
     end associate
   end subroutine csf_particle_loops
+
+  !> The sums of the weighted mean curvature of the fluid pairs of a list (the rings pair):
+  !> num += w_b kappa_b V_b W_ab, den += w_b V_b W_ab, and b's likewise.
+  pure subroutine surface_mean_pairs(np, pa, pb, w, mixed, v, wx, kx, num, den)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: w(*), v(*), wx(*), kx(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: num(*), den(*)
+    integer :: k, a, b
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      num(a) = num(a) + wx(b) * kx(b) * v(b) * w(k)
+      den(a) = den(a) + wx(b) * v(b) * w(k)
+      num(b) = num(b) + wx(a) * kx(a) * v(a) * w(k)
+      den(b) = den(b) + wx(a) * v(a) * w(k)
+    end do
+  end subroutine surface_mean_pairs
 
   !> A principal curvature k of a particle's row moved to the surface at depth delta:
   !> k / (1 - k delta), the factor kept >= DEPTH_FACTOR_MIN as in csf_surface_curvature (whose tangential
@@ -382,6 +441,9 @@ contains
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
                              wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
+      case (PASS_SURFACE_MEAN)   ! the rings pair's weighted mean curvature
+        call surface_mean_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%wt, wk%kown, wk%num, &
+                                wk%den)
       case default            ! PASS_SURFACE_CURVATURE: numerator, tangential denominator
         call curvature_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
                              wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)

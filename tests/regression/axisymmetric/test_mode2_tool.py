@@ -66,6 +66,7 @@ def main():
         v = dict(kv.split("=") for kv in line[0].split()[1:])
     checks = [
         ("intact_until", float(v["intact_until"]), T_OUT, 1e-9),
+        ("intact", float(v["intact"]), 0.0, 0.0),
         ("omega_fit", float(v["omega_fit"]), OMEGA, 0.005 * OMEGA),
         ("gamma_fit", float(v["gamma_fit"]), GAMMA, 0.05 * GAMMA),
         ("period", float(v["period"]), 2.0 * math.pi / OMEGA, 0.02 * 2.0 * math.pi / OMEGA),
