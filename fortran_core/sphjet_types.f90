@@ -49,6 +49,7 @@ module sphjet_types
     real(c_double) :: drive_half_width = 0.0_rp  !< plug half-width across the axis [m]
     real(c_double) :: axis_m1 = 0.0_rp       !< rings pair: a ring lighter is in the first column [kg]
     integer(c_int) :: axis_pair = 0          !< axisymmetric pair: 0 smoothed radius, 1 rings
+    integer(c_int) :: rings_curvature = 0    !< rings pair's surface rows: 0 neighbours' mean, 1 own
   end type sph_params_t
 
   !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in

@@ -4,11 +4,11 @@
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own]
       [--set-name mc paper] [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet]
       [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own]
       [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -19,7 +19,9 @@ k a = 0.697) is the one free parameter: the same for every run of a study direct
 --remove-drops-below-h D every run removes the detached drops thinner than D h at its breakup
 checks (breakup.remove_drops_below_h, cases/CASE_FORMAT.md), in a study directory of its own;
 with --axis-pair rings every run uses the rings pair (domain.axis_pair, cases/axisymmetric/
-README.md) instead of the default smoothed-radius pair, likewise in a directory of its own.
+README.md) instead of the default smoothed-radius pair, likewise in a directory of its own;
+--axis-pair rings_own the rings pair with each surface row's own curvature
+(surface_tension.rings_curvature = "own", cases/round_jet/README.md), in another.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -129,7 +131,8 @@ def sizing(u, d0, l_ref, n):
 def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
     """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
     = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length;
-    axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius pair)."""
+    axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius pair), or
+    "rings_own": the rings pair with surface_tension.rings_curvature = "own"."""
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
@@ -143,7 +146,9 @@ def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
         extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
-    if axis_pair is not None:
+    if axis_pair == "rings_own":
+        extra += ["domain.axis_pair=rings", "surface_tension.rings_curvature=own"]
+    elif axis_pair is not None:
         extra.append(f"domain.axis_pair={axis_pair}")
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
@@ -352,8 +357,9 @@ def main(argv=None):
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
         p.add_argument("--remove-drops-below-h", dest="remove_h", type=float, default=None, metavar="D",
                        help="remove detached drops with d_eq < D h at the breakup checks (default: keep all)")
-        p.add_argument("--axis-pair", choices=("rings",), default=None,
-                       help="the rings pair (domain.axis_pair) in every run (default: the smoothed-radius pair)")
+        p.add_argument("--axis-pair", choices=("rings", "rings_own"), default=None,
+                       help="the rings pair (domain.axis_pair) in every run, rings_own with its surface "
+                            "rows' own curvature (default: the smoothed-radius pair)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

@@ -124,6 +124,7 @@ constexpr KeySpec kKeys[] = {
     // [surface_tension]
     {"surface_tension.sigma", Kind::Float},
     {"surface_tension.delta", Kind::String},
+    {"surface_tension.rings_curvature", Kind::String},
     // [gravity]
     {"gravity.gx", Kind::Float},
     {"gravity.gz", Kind::Float},
@@ -1111,6 +1112,20 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                              "resolution.h_over_dx >= 2 with domain.axis_pair = \"rings\"",
                              "h = " + num(p.h / p.dx) + " dx");
     }
+    // after [domain]: the key belongs to the rings pair's pressure-consistent CSF
+    const Section st = top.sub("surface_tension");
+    if (auto f = st.string("rings_curvature")) {
+        if (p.axis_pair != AxisPair::Rings || p.st_delta != SurfaceTensionDelta::PressureConsistent)
+            throw InputError(ctx.where(st.key_path("rings_curvature")),
+                             "surface_tension.rings_curvature chooses the curvature of the rings pair's "
+                             "surface rows",
+                             "domain.axis_pair = \"rings\" with surface_tension.delta = \"pressure_consistent\"",
+                             p.axis_pair != AxisPair::Rings
+                                 ? "domain.axis_pair = \"" + to_string(p.axis_pair) + "\""
+                                 : "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
+        p.rings_curvature = choose<RingsCurvature>(
+            *f, {{"neighbour_mean", RingsCurvature::NeighbourMean}, {"own", RingsCurvature::Own}});
+    }
 
     // [time]
     const Section tim = top.sub("time");
@@ -1597,6 +1612,9 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += line("delta", str(to_string(p.st_delta)),
               "pressure_consistent (free surface, right Laplace jump) | colour_gradient "
               "(paper eq 24 as printed; about 0.13 of sigma at a free surface)");
+    if (p.axis_pair == AxisPair::Rings && p.st_delta == SurfaceTensionDelta::PressureConsistent)
+        s += line("rings_curvature", str(to_string(p.rings_curvature)),
+                  "neighbour_mean (holds a drop's pole) | own (holds more round jets)");
 
     s += "\n[gravity]\n";
     s += line("gx", num(p.gx), "m/s^2");

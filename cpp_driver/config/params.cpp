@@ -80,6 +80,14 @@ std::string to_string(Geometry g) {
     return "unknown";
 }
 
+std::string to_string(RingsCurvature c) {
+    switch (c) {
+        case RingsCurvature::NeighbourMean: return "neighbour_mean";
+        case RingsCurvature::Own: return "own";
+    }
+    return "unknown";
+}
+
 std::string to_string(AxisPair a) {
     switch (a) {
         case AxisPair::SmoothedRadius: return "smoothed_radius";

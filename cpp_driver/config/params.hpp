@@ -27,6 +27,10 @@ enum class Geometry : int { Planar = 0, Axisymmetric = 1 };
 // cases/axisymmetric/README.md): the smoothed-radius pair (the default) or the rings pair,
 // the 3D SPH density of the rings with the midpoint rule's end correction at the axis.
 enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
+// The curvature in the rings pair's CSF force of the rows below the surface (core:
+// sph_params_t::rings_curvature): their neighbours' weighted mean (the default; holds a
+// drop's pole) or each row's own (holds more round jets; cases/round_jet/README.md).
+enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 
 struct SimParams {
     // Numerics
@@ -95,6 +99,8 @@ struct SimParams {
     bool periodic_z = false;
     // The axisymmetric pair (case key domain.axis_pair; axisymmetric only).
     AxisPair axis_pair = AxisPair::SmoothedRadius;
+    // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
+    RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;
@@ -115,5 +121,6 @@ struct SimParams {
 [[nodiscard]] std::string to_string(SurfaceTensionDelta d);
 [[nodiscard]] std::string to_string(Geometry g);
 [[nodiscard]] std::string to_string(AxisPair a);
+[[nodiscard]] std::string to_string(RingsCurvature c);
 
 }  // namespace sphjet

@@ -686,6 +686,7 @@ void visit_params(P& p, F&& f) {
     f("geometry", p.geometry, nullptr);
     f("periodic_z", p.periodic_z, nullptr);
     f("axis_pair", p.axis_pair, nullptr);
+    f("rings_curvature", p.rings_curvature, nullptr);
 }
 
 std::string enum_name(KernelType v) { return to_string(v); }
@@ -695,6 +696,7 @@ std::string enum_name(BoundaryType v) { return to_string(v); }
 std::string enum_name(SurfaceTensionDelta v) { return to_string(v); }
 std::string enum_name(Geometry v) { return to_string(v); }
 std::string enum_name(AxisPair v) { return to_string(v); }
+std::string enum_name(RingsCurvature v) { return to_string(v); }
 std::string enum_name(Integrator v) {
     return v == Integrator::PredictorCorrector ? "predictor_corrector" : "unknown";
 }
@@ -737,12 +739,13 @@ SimParams read_params(hid_t loc) {
         // st_delta the pressure-consistent delta, the only model older builds had).
         // The gate_* fields likewise (no moving boundary particles before them).
         // The drive_* fields and domain_box likewise (no driven nozzle before them).
-        // geometry and periodic_z likewise (planar, not periodic before them), and axis_pair
-        // (the smoothed-radius pair, the only one before it).
+        // geometry and periodic_z likewise (planar, not periodic before them), axis_pair
+        // (the smoothed-radius pair, the only one before it) and rings_curvature (the
+        // neighbours' mean, the rings pair's since eb97aa7).
         if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_") ||
              std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box" ||
              std::string_view(name) == "geometry" || std::string_view(name) == "periodic_z" ||
-             std::string_view(name) == "axis_pair") &&
+             std::string_view(name) == "axis_pair" || std::string_view(name) == "rings_curvature") &&
             !has_attr(loc, name))
             return;
         if constexpr (std::is_enum_v<T>) {

@@ -66,6 +66,7 @@ typedef struct sph_params_t {
     double drive_half_width;  /* plug half-width across the axis [m] */
     double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
     int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
+    int rings_curvature;      /* rings pair's surface rows: 0 neighbours' mean, 1 own */
 } sph_params_t;
 
 typedef struct sph_arrays_t {

@@ -26,7 +26,8 @@
 !> colour in those too, a sphere at rest held 0.63-0.94 of its Laplace pressure, since that
 !> colour is 6% high on the lattice row next to the axis, where a sphere's poles are.
 module surface_tension_loops
-  use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC, AXIS_PAIR_RINGS
+  use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC, AXIS_PAIR_RINGS, &
+                          RINGS_CURVATURE_MEAN
   use axisymmetric, only: azimuthal_curvature, mass_per_radian, axis_detection_factor
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
@@ -85,7 +86,8 @@ module surface_tension_loops
     !> axisymmetric only: the colour (1/g_a) sum_b (m_b / (2 pi rho_b)) W_ab of the mode's
     !> density and its gradient, which decide where the free surface is (see below)
     real(rp), allocatable :: c2(:), n2x(:), n2z(:)
-    !> the rings pair only (surface_mean_pairs): each particle's own curvature and force weight
+    !> the rings pair with surface_tension.rings_curvature = "neighbour_mean" (the default) only
+    !> (surface_mean_pairs): each particle's own curvature and force weight
     real(rp), allocatable :: kown(:), wt(:)
   end type csf_work_t
 
@@ -151,7 +153,8 @@ contains
                         colour_delta=colour_delta, axi=axi)
 
     surface_mean = prm%geometry == GEOM_AXISYMMETRIC .and. prm%axis_pair == AXIS_PAIR_RINGS &
-                   .and. prm%st_delta /= ST_DELTA_COLOUR
+                   .and. prm%st_delta /= ST_DELTA_COLOUR &
+                   .and. prm%rings_curvature == RINGS_CURVATURE_MEAN
     if (surface_mean) allocate(wk%kown(n), wk%wt(n), source=0.0_rp)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))

@@ -127,8 +127,14 @@ def main():
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
                             "--size-c", "8", "--axis-pair", "rings", "--only", "mc_u0.7814"],
                            capture_output=True, text=True)
-        check("domain.axis_pair=rings" in p.stdout and "eps0.01_n10_c8_rings" in p.stdout,
-              f"--axis-pair: {p.stdout}")
+        check("domain.axis_pair=rings" in p.stdout and "eps0.01_n10_c8_rings" in p.stdout
+              and "rings_curvature" not in p.stdout, f"--axis-pair: {p.stdout}")
+        # --axis-pair rings_own: the rings pair with its surface rows' own curvature, apart again
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--axis-pair", "rings_own", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("domain.axis_pair=rings" in p.stdout and "surface_tension.rings_curvature=own" in p.stdout
+              and "eps0.01_n10_c8_rings_own" in p.stdout, f"--axis-pair rings_own: {p.stdout}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
         check(p.returncode == 2 and "--size-c" in p.stderr, f"--size-c 0: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)

@@ -127,6 +127,7 @@ SimParams unusual_params() {
     p.geometry = Geometry::Axisymmetric;  // not the default
     p.periodic_z = true;
     p.axis_pair = AxisPair::Rings;  // not the default
+    p.rings_curvature = RingsCurvature::Own;  // not the default
     return p;
 }
 
@@ -181,6 +182,7 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
     EXPECT_EQ(a.geometry, b.geometry);
     EXPECT_EQ(a.periodic_z, b.periodic_z);
     EXPECT_EQ(a.axis_pair, b.axis_pair);
+    EXPECT_EQ(a.rings_curvature, b.rings_curvature);
 }
 
 RunState unusual_state() {
@@ -224,7 +226,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // field to the checkpoint (visit_params in io/h5_util.cpp, visit_state in io/checkpoint.cpp)
 // and to this test, then update the sizes here.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(SimParams), 344u) << "SimParams changed: update the checkpoint";
+    EXPECT_EQ(sizeof(SimParams), 352u) << "SimParams changed: update the checkpoint";
     EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
 }
 
@@ -437,8 +439,10 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
         h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
         h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
         ASSERT_GE(H5Adelete(g, "axis_pair"), 0);
+        ASSERT_GE(H5Adelete(g, "rings_curvature"), 0);
     }
     EXPECT_EQ(read_checkpoint(dir).params.axis_pair, AxisPair::SmoothedRadius);
+    EXPECT_EQ(read_checkpoint(dir).params.rings_curvature, RingsCurvature::NeighbourMean);
     fs::remove_all(dir);
 }
 

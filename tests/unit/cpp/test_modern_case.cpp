@@ -159,6 +159,7 @@ void expect_same(const CaseSpec& a, const CaseSpec& b) {
     EXPECT_EQ(p.geometry, q.geometry);
     EXPECT_EQ(p.periodic_z, q.periodic_z);
     EXPECT_EQ(p.axis_pair, q.axis_pair);
+    EXPECT_EQ(p.rings_curvature, q.rings_curvature);
     EXPECT_EQ(p.integrator, q.integrator);
     EXPECT_EQ(p.density_filter, q.density_filter);
     EXPECT_EQ(p.filter_period, q.filter_period);
@@ -927,6 +928,36 @@ TEST(ModernCase, AxisPair) {
     bad.push_back("domain.axis_pair=\"ring\"");
     e = error_of(kMinimal, bad);
     EXPECT_NE(e.find("\"smoothed_radius\", \"rings\""), std::string::npos) << e;
+}
+
+// surface_tension.rings_curvature (cases/CASE_FORMAT.md): the neighbours' mean by default in the
+// rings pair; "own" read, written back and read again; refused with the smoothed-radius pair,
+// with the colour-gradient delta and for an unknown value, naming key, expected and found.
+TEST(ModernCase, RingsCurvature) {
+    const std::vector<std::string> rings = {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                            "numerics.lattice=\"sc\"", "resolution.h_over_dx=2.0",
+                                            "domain.axis_pair=\"rings\""};
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", rings).params.rings_curvature,
+              RingsCurvature::NeighbourMean);
+    std::vector<std::string> own = rings;
+    own.push_back("surface_tension.rings_curvature=\"own\"");
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", own);
+    EXPECT_EQ(s.params.rings_curvature, RingsCurvature::Own);
+    expect_round_trip(s);
+    std::vector<std::string> smoothed(rings.begin(), rings.end() - 1);
+    smoothed.push_back("surface_tension.rings_curvature=\"own\"");
+    std::string e = error_of(kMinimal, smoothed);
+    EXPECT_NE(e.find("surface_tension.rings_curvature"), std::string::npos) << e;
+    EXPECT_NE(e.find("domain.axis_pair = \"rings\""), std::string::npos) << e;
+    EXPECT_NE(e.find("found domain.axis_pair = \"smoothed_radius\""), std::string::npos) << e;
+    std::vector<std::string> colour = own;
+    colour.push_back("surface_tension.delta=\"colour_gradient\"");
+    e = error_of(kMinimal, colour);
+    EXPECT_NE(e.find("found surface_tension.delta = \"colour_gradient\""), std::string::npos) << e;
+    std::vector<std::string> bad = rings;
+    bad.push_back("surface_tension.rings_curvature=\"mean\"");
+    e = error_of(kMinimal, bad);
+    EXPECT_NE(e.find("\"neighbour_mean\", \"own\""), std::string::npos) << e;
 }
 
 // output.revolution_sectors (cases/CASE_FORMAT.md [output]): read in axisymmetric cases, off by
