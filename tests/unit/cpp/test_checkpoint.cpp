@@ -206,6 +206,14 @@ void write_sample(const fs::path& dir) {
                      std::vector<ExtraField>{{"rho_old", prev_rho, "kg/m^3"}});
 }
 
+// A sample checkpoint in dir without the named attributes of one group (an older or damaged file).
+void write_sample_without(const fs::path& dir, const char* group, std::initializer_list<const char*> names) {
+    write_sample(dir);
+    h5::File f(H5Fopen((dir / "checkpoint.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+    h5::Group g(H5Gopen2(f, group, H5P_DEFAULT));
+    for (const char* name : names) ASSERT_GE(H5Adelete(g, name), 0) << name;
+}
+
 // Reading must fail with an InputError that names the checkpoint file.
 void expect_input_error(const fs::path& dir, const std::string& also = {}) {
     try {
@@ -380,40 +388,19 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     }
     expect_input_error(dir, "/particles/wall_next");
 
-    write_sample(dir);
-    {
-        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        h5::Group g(H5Gopen2(f, "/run_state", H5P_DEFAULT));
-        ASSERT_GE(H5Adelete(g, "dbc_counter"), 0);
-    }
+    write_sample_without(dir, "/run_state", {"dbc_counter"});
     expect_input_error(dir, "dbc_counter");
 
-    write_sample(dir);
-    {
-        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
-        ASSERT_GE(H5Adelete(g, "sigma"), 0);
-    }
+    write_sample_without(dir, "/parameters", {"sigma"});
     expect_input_error(dir, "sigma");
 
     // st_delta came later: a file without it reads as the pressure-consistent delta, the only
     // surface-tension model of the builds that wrote such files.
-    write_sample(dir);
-    {
-        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
-        ASSERT_GE(H5Adelete(g, "st_delta"), 0);
-        ASSERT_GE(H5Adelete(g, "st_delta_name"), 0);
-    }
+    write_sample_without(dir, "/parameters", {"st_delta", "st_delta_name"});
     EXPECT_EQ(read_checkpoint(dir).params.st_delta, SurfaceTensionDelta::PressureConsistent);
 
     // So did the gate's motion: a file without it has no gate (all zero).
-    write_sample(dir);
-    {
-        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
-        for (const char* name : {"gate_vx", "gate_vz", "gate_t_start", "gate_z_cap"}) ASSERT_GE(H5Adelete(g, name), 0);
-    }
+    write_sample_without(dir, "/parameters", {"gate_vx", "gate_vz", "gate_t_start", "gate_z_cap"});
     const SimParams old = read_checkpoint(dir).params;
     EXPECT_EQ(old.gate_vx, 0.0);
     EXPECT_EQ(old.gate_vz, 0.0);
@@ -421,26 +408,14 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     EXPECT_EQ(old.gate_z_cap, 0.0);
 
     // And the driven nozzle and the box domain of the jets: without them, no nozzle.
-    write_sample(dir);
-    {
-        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
-        for (const char* name : {"drive_u", "drive_x0", "drive_z0", "drive_ex", "drive_ez", "drive_half_width",
-                                 "drive_eps", "drive_omega", "domain_box"})
-            ASSERT_GE(H5Adelete(g, name), 0);
-    }
+    write_sample_without(dir, "/parameters", {"drive_u", "drive_x0", "drive_z0", "drive_ex", "drive_ez",
+                                              "drive_half_width", "drive_eps", "drive_omega", "domain_box"});
     const SimParams pre_jet = read_checkpoint(dir).params;
     EXPECT_EQ(pre_jet.drive_u, 0.0);
     EXPECT_FALSE(pre_jet.domain_box);
 
     // And the axisymmetric pair: without it, the smoothed-radius pair (the only one before).
-    write_sample(dir);
-    {
-        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
-        h5::Group g(H5Gopen2(f, "/parameters", H5P_DEFAULT));
-        ASSERT_GE(H5Adelete(g, "axis_pair"), 0);
-        ASSERT_GE(H5Adelete(g, "rings_curvature"), 0);
-    }
+    write_sample_without(dir, "/parameters", {"axis_pair", "rings_curvature"});
     EXPECT_EQ(read_checkpoint(dir).params.axis_pair, AxisPair::SmoothedRadius);
     EXPECT_EQ(read_checkpoint(dir).params.rings_curvature, RingsCurvature::NeighbourMean);
     fs::remove_all(dir);
