@@ -236,7 +236,7 @@ contains
   pure subroutine ring_kernel_derivs(s2, p, h, gs, gp, fs, fp)
     real(rp), intent(in) :: s2, p, h, gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
     real(rp), intent(out) :: fs, fp
-    real(rp) :: u, v, pn, tu, tv, h5, a, b
+    real(rp) :: u, v, pn, tu, tv, h5, a, b, sq
     integer :: i, j
     h5 = h**5
     u = min(s2 / (4.0_rp * h * h), 1.0_rp) * (RING_NU - 1)
@@ -248,10 +248,11 @@ contains
     tv = v - (j - 1)
     a = (1.0_rp - tu) * gs(i, j) + tu * gs(i + 1, j)
     b = (1.0_rp - tu) * gs(i, j + 1) + tu * gs(i + 1, j + 1)
-    fs = ((1.0_rp - tv) * a + tv * b) / (sqrt(pn + 1.0_rp) * h5)
+    sq = sqrt(pn + 1.0_rp)
+    fs = ((1.0_rp - tv) * a + tv * b) / (sq * h5)
     a = (1.0_rp - tu) * gp(i, j) + tu * gp(i + 1, j)
     b = (1.0_rp - tu) * gp(i, j + 1) + tu * gp(i + 1, j + 1)
-    fp = ((1.0_rp - tv) * a + tv * b) / ((pn + 1.0_rp)**1.5_rp * h5)
+    fp = ((1.0_rp - tv) * a + tv * b) / ((pn + 1.0_rp) * sq * h5)
   end subroutine ring_kernel_derivs
 
 end module axisymmetric
