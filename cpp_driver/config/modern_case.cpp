@@ -1614,7 +1614,7 @@ std::string write_modern_case(const CaseSpec& spec) {
               "(paper eq 24 as printed; about 0.13 of sigma at a free surface)");
     if (p.axis_pair == AxisPair::Rings && p.st_delta == SurfaceTensionDelta::PressureConsistent)
         s += line("rings_curvature", str(to_string(p.rings_curvature)),
-                  "neighbour_mean (holds a drop's pole) | own (holds more round jets)");
+                  "neighbour_mean (holds a drop's pole) | own (longer round jets, pole lost)");
 
     s += "\n[gravity]\n";
     s += line("gx", num(p.gx), "m/s^2");

@@ -29,7 +29,7 @@ enum class Geometry : int { Planar = 0, Axisymmetric = 1 };
 enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
 // The curvature in the rings pair's CSF force of the rows below the surface (core:
 // sph_params_t::rings_curvature): their neighbours' weighted mean (the default; holds a
-// drop's pole) or each row's own (holds more round jets; cases/round_jet/README.md).
+// drop's pole) or each row's own (longer round jets; cases/round_jet/README.md).
 enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 
 struct SimParams {
