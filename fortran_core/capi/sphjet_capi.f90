@@ -12,7 +12,7 @@ module sphjet_capi
                           AXIS_PAIR_RINGS, RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
-  use sorted_state, only: sorted_t, gather_sorted
+  use sorted_state, only: sorted_t, gather_sorted, R_AX, R_AZ
   use traversal, only: pair_list_t, build_row_pairs, PAIRS_ALL
   use rates, only: compute_rates
   use predictor_corrector, only: pc_step, update_eos
@@ -258,8 +258,8 @@ contains
       az = 0.0_rp
       do k = 1, ws%sorted%n
         if (ws%sorted%grid%order(k) > st%n) cycle   ! an image slot
-        ax(ws%sorted%grid%order(k)) = ws%sorted%ax(k)
-        az(ws%sorted%grid%order(k)) = ws%sorted%az(k)
+        ax(ws%sorted%grid%order(k)) = ws%sorted%rate(R_AX, k)
+        az(ws%sorted%grid%order(k)) = ws%sorted%rate(R_AZ, k)
       end do
     end if
     status = SPH_OK

@@ -17,7 +17,7 @@ module axisymmetric_loops
   use sphjet_kinds, only: rp, pi, VISC_LAMINAR, KERNEL_WENDLAND, AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t
+  use sorted_state, only: sorted_t, R_AX, R_AZ, R_AR
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_FRESH, &
                        SWEEP_REUSE
   use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
@@ -68,10 +68,11 @@ module axisymmetric_loops
 
 contains
 
-  !> Sets s%ar and adds the pressure (and laminar hoop) accelerations to s%ax, s%az of the real
-  !> slots. kept (default .false.): visit the pairs the last sweep at these positions kept
-  !> (pair_sweep with SWEEP_KEEP, PAIRS_ANY_FLUID: the rates sweep's) instead of finding them
-  !> and evaluating the kernel again; the same pairs in the same order either way.
+  !> Sets the density rate and adds the pressure (and laminar hoop) accelerations in s%rate
+  !> of the real slots. kept (default .false.): visit the pairs the last sweep at these
+  !> positions kept (pair_sweep with SWEEP_KEEP, PAIRS_ANY_FLUID: the rates sweep's)
+  !> instead of finding them and evaluating the kernel again; the same pairs in the same
+  !> order either way.
   subroutine axisymmetric_rates(prm, kern, s, n_state, kept)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
@@ -98,7 +99,7 @@ contains
     !$omp parallel do schedule(static)
     do k = 1, n
       if (s%grid%order(k) > n_state) cycle
-      s%ar(k) = body%cont(k) * gi(k) - s%rho(k) * hoop(k) * s%u(k)
+      s%rate(R_AR, k) = body%cont(k) * gi(k) - s%rho(k) * hoop(k) * s%u(k)
       if (s%fluid(k)) call body%accelerate(prm, k, s%p(k) / s%rho(k) * hoop(k))
     end do
     !$omp end parallel do
@@ -156,7 +157,7 @@ contains
       call ring_kernel_derivs(0.0_rp, s%x(k)**2, prm%h, ring_gs(:, :, kern%kind), &
                               ring_gp(:, :, kern%kind), fs, fp)
       self = 2.0_rp * s%x(k) * fp
-      s%ar(k) = body%cont(k) + body%m(k) * s%u(k) * self
+      s%rate(R_AR, k) = body%cont(k) + body%m(k) * s%u(k) * self
       s%axi_dx(k) = body%ddx(k) + body%vr(k) * self
       s%axi_dz(k) = body%ddz(k)
       if (s%fluid(k)) call body%accelerate(prm, k, -(body%pg(k) * body%m(k) * self))
@@ -333,13 +334,13 @@ contains
     real(rp), intent(in) :: fx
     real(rp) :: hx, hz
     associate (s => self%s)
-      s%ax(k) = s%ax(k) + self%pax(k) + fx
-      s%az(k) = s%az(k) + self%paz(k)
+      s%rate(R_AX, k) = s%rate(R_AX, k) + self%pax(k) + fx
+      s%rate(R_AZ, k) = s%rate(R_AZ, k) + self%paz(k)
       if (self%laminar) then
         call viscous_hoop(prm%visc_value, s%u(k), self%dudr(k), self%dwdr(k), s%x(k), prm%h, &
                           hx, hz)
-        s%ax(k) = s%ax(k) + hx
-        s%az(k) = s%az(k) + hz
+        s%rate(R_AX, k) = s%rate(R_AX, k) + hx
+        s%rate(R_AZ, k) = s%rate(R_AZ, k) + hz
       end if
     end associate
   end subroutine sums_accelerate

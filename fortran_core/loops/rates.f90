@@ -14,7 +14,8 @@ module rates
                           VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
-  use sorted_state, only: sorted_t, gather_sorted, scatter_rates
+  use sorted_state, only: sorted_t, gather_sorted, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, &
+                          R_XU, R_XW
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_FRESH
   use viscosity, only: artificial_pi, laminar_factor
@@ -302,62 +303,53 @@ contains
       end do
       do j = 1, nw
         k = kw(j)
-        call accumulate_fluid(j0, k - 1, k0 - 1, b_%laminar, pl%a, pl%b, t, &
-                              s%ax, s%az, s%ar, s%xu, s%xw)
+        call accumulate_fluid(j0, k - 1, k0 - 1, b_%laminar, pl%a, pl%b, t, s%rate)
         call accumulate_wall(b_, s, pl%a(k), pl%b(k), pl%dx(k), pl%dz(k), pl%r2(k), pl%f(k))
         j0 = k + 1
       end do
     end if
-    call accumulate_fluid(j0, k1, k0 - 1, b_%laminar, pl%a, pl%b, t, &
-                          s%ax, s%az, s%ar, s%xu, s%xw)
+    call accumulate_fluid(j0, k1, k0 - 1, b_%laminar, pl%a, pl%b, t, s%rate)
   end subroutine rates_accumulate
 
-  !> Pressure (+ viscosity), continuity and XSPH sums of pairs j0..j1 (term row k - off).
-  !> The pairs of one particle a follow each other (list order: cell, a, partner cell, b),
-  !> and no pair of such a run has a as its b: a's sums are carried in registers along the
-  !> run, with the same additions in the same order as one pair at a time.
-  pure subroutine accumulate_fluid(j0, j1, off, laminar, pa, pb, t, ax, az, ar, xu, xw)
-    integer, intent(in) :: j0, j1, off, pa(:), pb(:)
+  !> Pressure (+ viscosity), continuity and XSPH sums of pairs j0..j1 (term row k - off) into
+  !> the sorted rates r(R_*, slot). The pairs of one particle a follow each other (list order:
+  !> cell, a, partner cell, b), and no pair of such a run has a as its b: a's sums are carried
+  !> in registers along the run, with the same additions in the same order as one pair at a
+  !> time.
+  pure subroutine accumulate_fluid(j0, j1, off, laminar, pa, pb, t, r)
+    integer, intent(in) :: j0, j1, off, pa(*), pb(*)
     logical, intent(in) :: laminar
     real(rp), intent(in) :: t(CHUNK, N_COLUMNS)
-    real(rp), intent(inout) :: ax(:), az(:), ar(:), xu(:), xw(:)
+    real(rp), intent(inout) :: r(N_RATE, *)
     integer :: k, a, b, i
-    real(rp) :: sx, sz, sr, su, sw
+    real(rp) :: sa(N_RATE)
     k = j0
     do while (k <= j1)
       a = pa(k)
-      sx = ax(a)
-      sz = az(a)
-      sr = ar(a)
-      su = xu(a)
-      sw = xw(a)
+      sa = r(:, a)
       do while (k <= j1)
         if (pa(k) /= a) exit
         b = pb(k)
         i = k - off
-        sx = sx - t(i, T_AX)
-        sz = sz - t(i, T_AZ)
-        ax(b) = ax(b) + t(i, T_BX)
-        az(b) = az(b) + t(i, T_BZ)
+        sa(R_AX) = sa(R_AX) - t(i, T_AX)
+        sa(R_AZ) = sa(R_AZ) - t(i, T_AZ)
+        r(R_AX, b) = r(R_AX, b) + t(i, T_BX)
+        r(R_AZ, b) = r(R_AZ, b) + t(i, T_BZ)
         if (laminar) then
-          sx = sx + t(i, T_LAX)
-          sz = sz + t(i, T_LAZ)
-          ax(b) = ax(b) - t(i, T_LBX)
-          az(b) = az(b) - t(i, T_LBZ)
+          sa(R_AX) = sa(R_AX) + t(i, T_LAX)
+          sa(R_AZ) = sa(R_AZ) + t(i, T_LAZ)
+          r(R_AX, b) = r(R_AX, b) - t(i, T_LBX)
+          r(R_AZ, b) = r(R_AZ, b) - t(i, T_LBZ)
         end if
-        sr = sr + t(i, T_AR)
-        ar(b) = ar(b) + t(i, T_BR)
-        su = su - t(i, T_AU)
-        sw = sw - t(i, T_AW)
-        xu(b) = xu(b) + t(i, T_BU)
-        xw(b) = xw(b) + t(i, T_BW)
+        sa(R_AR) = sa(R_AR) + t(i, T_AR)
+        r(R_AR, b) = r(R_AR, b) + t(i, T_BR)
+        sa(R_XU) = sa(R_XU) - t(i, T_AU)
+        sa(R_XW) = sa(R_XW) - t(i, T_AW)
+        r(R_XU, b) = r(R_XU, b) + t(i, T_BU)
+        r(R_XW, b) = r(R_XW, b) + t(i, T_BW)
         k = k + 1
       end do
-      ax(a) = sx
-      az(a) = sz
-      ar(a) = sr
-      xu(a) = su
-      xw(a) = sw
+      r(:, a) = sa
     end do
   end subroutine accumulate_fluid
 
@@ -381,8 +373,8 @@ contains
                          s%z(fl), s%z(wl), s%u(wl), s%w(wl), b_%h, b_%h_swl, b_%gz, &
                          b_%beta, fx, fz)
     vw = s%m(fl) / s%rho(fl) * b_%wall_viscosity * (f * r2) / (r2 + b_%eta2)
-    s%ax(fl) = s%ax(fl) + fx + vw * sgn * dux
-    s%az(fl) = s%az(fl) + fz + vw * sgn * duz
+    s%rate(R_AX, fl) = s%rate(R_AX, fl) + fx + vw * sgn * dux
+    s%rate(R_AZ, fl) = s%rate(R_AZ, fl) + fz + vw * sgn * duz
   end subroutine accumulate_wall
 
 end module rates

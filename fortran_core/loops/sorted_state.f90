@@ -54,6 +54,11 @@ module sorted_state
   private
   public :: sorted_t, gather_sorted, scatter_rates, copy_to_images, thread_lists, one_thread, &
             team_work_t, in_team, in_open_team, set_open_team, SKIN_PER_H
+  public :: N_RATE, R_AX, R_AZ, R_AR, R_XU, R_XW
+
+  !> Rows of sorted_t%rate, a slot's accumulated rates: acceleration x, z, density rate and
+  !> the XSPH sums u, w
+  integer, parameter :: R_AX = 1, R_AZ = 2, R_AR = 3, R_XU = 4, R_XW = 5, N_RATE = 5
 
   !> Whether this thread runs in a team that a caller has opened for several sets of loops
   !> (predictor_corrector.f90: one parallel region per step). Every thread of that team then
@@ -79,8 +84,9 @@ module sorted_state
     integer, allocatable :: src_slot(:)  !< the slot of that particle (k itself for a real slot)
     real(rp), allocatable :: usign(:)    !< -1 for a mirror image across the axis, else 1
     real(rp), allocatable :: zshift(:)   !< z shift of a periodic image (+-lz), else 0
-    ! accumulated rates (sorted order)
-    real(rp), allocatable :: ax(:), az(:), ar(:), xu(:), xw(:)
+    !> accumulated rates (sorted order), rate(R_*, k): one slot's sums side by side, so that
+    !> a pair's additions to its neighbour b touch one place in memory
+    real(rp), allocatable :: rate(:, :)
     !> The rings pair's truncation vector (loops/axisymmetric_loops.f90, ring_rates), set with
     !> the rates and read by the CSF force of the same evaluation
     real(rp), allocatable :: axi_dx(:), axi_dz(:)
@@ -488,18 +494,13 @@ contains
   pure subroutine clear_sums(s, k)
     type(sorted_t), intent(inout) :: s
     integer, intent(in) :: k
-    s%ax(k) = 0.0_rp
-    s%az(k) = 0.0_rp
-    s%ar(k) = 0.0_rp
-    s%xu(k) = 0.0_rp
-    s%xw(k) = 0.0_rp
+    s%rate(1:N_RATE, k) = 0.0_rp
   end subroutine clear_sums
 
   !> The accumulated rates of the sorted slots back to particle order: st%ax, az, ar and
-  !> xsph_eps times the XSPH sums; inactive particles get zero rates. One field per loop (as
-  !> gather_all). The sorted slots are exactly the active particles, so the loops write
-  !> disjoint entries and need no barrier between them (nowait). Image slots are not
-  !> scattered: their sums are discarded.
+  !> xsph_eps times the XSPH sums; inactive particles get zero rates. The sorted slots are
+  !> exactly the active particles, so the two loops write disjoint entries and need no
+  !> barrier between them (nowait). Image slots are not scattered: their sums are discarded.
   subroutine scatter_rates(s, st, xsph_eps)
     type(sorted_t), intent(in), target :: s
     type(state_t), intent(inout), target :: st
@@ -512,17 +513,15 @@ contains
   end subroutine scatter_rates
 
   !> The loops of scatter_rates (in_team's SCATTER): every thread its static share of the
-  !> slots, rates and XSPH back to particle order; inactive particles get zeros.
+  !> slots, a slot's five sums (side by side in rate) back to particle order in one pass;
+  !> inactive particles get zeros. Image slots (grid%order(k) > st%n) are skipped.
   subroutine scatter_all(s, st, xsph_eps)
     type(sorted_t), intent(in) :: s
     type(state_t), intent(inout) :: st
     real(rp), intent(in) :: xsph_eps
     integer :: i
-    call scatter_sorted(s, st%n, s%ax, st%ax)
-    call scatter_sorted(s, st%n, s%az, st%az)
-    call scatter_sorted(s, st%n, s%ar, st%ar)
-    call scatter_sorted(s, st%n, s%xu, st%xsph_u, xsph_eps)
-    call scatter_sorted(s, st%n, s%xw, st%xsph_w, xsph_eps)
+    call scatter_slots(s%n, s%grid%order, st%n, xsph_eps, s%rate, st%ax, st%az, st%ar, &
+                       st%xsph_u, st%xsph_w)
     !$omp do schedule(static)
     do i = 1, st%n
       if (st%active(i) /= 0) cycle
@@ -535,32 +534,26 @@ contains
     !$omp end do
   end subroutine scatter_all
 
-  !> dst(i) = src(k) (times factor) for the real slots k of particle i = grid%order(k) <=
-  !> n_state; called by every thread of a parallel region, which it does not wait for
-  !> (nowait). One field per call, as gather_all.
-  subroutine scatter_sorted(s, n_state, src, dst, factor)
-    type(sorted_t), intent(in) :: s
-    integer, intent(in) :: n_state
-    real(rp), intent(in) :: src(:)
-    real(rp), intent(inout) :: dst(:)
-    real(rp), intent(in), optional :: factor
+  !> scatter_all's pass over the slots k (plain arrays, so that the loop keeps their
+  !> addresses in registers): the sums of a real slot to particle i = order(k) <= n_state,
+  !> XSPH times xsph_eps. Called by every thread of a parallel region; no wait at the end.
+  subroutine scatter_slots(n, order, n_state, xsph_eps, r, ax, az, ar, xu, xw)
+    integer, intent(in) :: n, order(*), n_state
+    real(rp), intent(in) :: xsph_eps, r(N_RATE, *)
+    real(rp), intent(inout) :: ax(*), az(*), ar(*), xu(*), xw(*)
     integer :: k, i
-    if (present(factor)) then
-      !$omp do schedule(static)
-      do k = 1, s%n
-        i = s%grid%order(k)
-        if (i <= n_state) dst(i) = factor * src(k)
-      end do
-      !$omp end do nowait
-    else
-      !$omp do schedule(static)
-      do k = 1, s%n
-        i = s%grid%order(k)
-        if (i <= n_state) dst(i) = src(k)
-      end do
-      !$omp end do nowait
-    end if
-  end subroutine scatter_sorted
+    !$omp do schedule(static)
+    do k = 1, n
+      i = order(k)
+      if (i > n_state) cycle
+      ax(i) = r(R_AX, k)
+      az(i) = r(R_AZ, k)
+      ar(i) = r(R_AR, k)
+      xu(i) = xsph_eps * r(R_XU, k)
+      xw(i) = xsph_eps * r(R_XW, k)
+    end do
+    !$omp end do nowait
+  end subroutine scatter_slots
 
   !> Whether the caller's build positions are usable: finite for every active particle.
   logical function listed_positions(st)
@@ -803,11 +796,11 @@ contains
     if (allocated(s%x)) then
       if (size(s%x) >= n) return
       deallocate(s%x, s%z, s%u, s%w, s%rho, s%p, s%c, s%m, s%pr, s%fluid, s%real_slot, &
-                 s%ax, s%az, s%ar, s%xu, s%xw, s%src, s%usign, s%zshift, s%src_slot, &
+                 s%rate, s%src, s%usign, s%zshift, s%src_slot, &
                  s%tr, s%wnx, s%wnz, s%wdb, s%wdf)
     end if
     allocate(s%x(n), s%z(n), s%u(n), s%w(n), s%rho(n), s%p(n), s%c(n), s%m(n), s%pr(n), &
-             s%fluid(n), s%real_slot(n), s%ax(n), s%az(n), s%ar(n), s%xu(n), s%xw(n), s%src(n), s%usign(n), &
+             s%fluid(n), s%real_slot(n), s%rate(N_RATE, n), s%src(n), s%usign(n), &
              s%zshift(n), s%src_slot(n), s%tr(n), s%wnx(n), s%wnz(n), s%wdb(n), s%wdf(n))
   end subroutine ensure
 

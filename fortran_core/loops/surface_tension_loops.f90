@@ -32,7 +32,7 @@ module surface_tension_loops
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, copy_to_images, team_work_t, in_team
+  use sorted_state, only: sorted_t, copy_to_images, team_work_t, in_team, R_AX, R_AZ
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
@@ -118,13 +118,13 @@ module surface_tension_loops
 
 contains
 
-  !> Adds a_s (sorted order) to s%ax, s%az and stores colour, normal n (unnormalised) and
-  !> curvature in particle order in st%colour, st%st_nx, st%st_nz, st%kappa when those
-  !> arrays are present (0 for boundary and inactive particles). s must hold the gathered
-  !> state (gather_sorted). Nothing is done when sigma = 0 and no field array is present.
-  !> kept (default .false.): the pairs of the rates sweep at these positions are kept in s
-  !> (pair_sweep with SWEEP_KEEP, PAIRS_ANY_FLUID); the colour pass visits them instead of
-  !> finding the pairs and evaluating the kernel again.
+  !> Adds a_s (sorted order) to s%rate (rows R_AX, R_AZ) and stores colour, normal n
+  !> (unnormalised) and curvature in particle order in st%colour, st%st_nx, st%st_nz,
+  !> st%kappa when those arrays are present (0 for boundary and inactive particles). s must
+  !> hold the gathered state (gather_sorted). Nothing is done when sigma = 0 and no field
+  !> array is present. kept (default .false.): the pairs of the rates sweep at these
+  !> positions are kept in s (pair_sweep with SWEEP_KEEP, PAIRS_ANY_FLUID); the colour pass
+  !> visits them instead of finding the pairs and evaluating the kernel again.
   subroutine surface_tension_rates(prm, kern, st, s, kept)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
@@ -243,8 +243,8 @@ contains
         if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
           call csf_acceleration(prm%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%gx(k), &
                                 wk%wt(k) * wk%gz(k), ax, az)
-          s%ax(k) = s%ax(k) + ax
-          s%az(k) = s%az(k) + az
+          s%rate(R_AX, k) = s%rate(R_AX, k) + ax
+          s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
         end if
       end do
       !$omp end parallel do
@@ -361,8 +361,8 @@ contains
               end if
               call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
             end if
-            s%ax(k) = s%ax(k) + ax
-            s%az(k) = s%az(k) + az
+            s%rate(R_AX, k) = s%rate(R_AX, k) + ax
+            s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
           end if
         end do
         !$omp end do
