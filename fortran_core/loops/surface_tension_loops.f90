@@ -67,6 +67,10 @@ module surface_tension_loops
   !> (eq 23) of ST_DELTA_COLOUR; the fields written out are n and the curvature used. Other
   !> values are rejected by the C entry points (params_ok).
 
+  !> Rows of csf_work_t%ng, a slot's normal sums: the normal n (eq 18) x, z and the
+  !> free-surface delta's sum_b V_b (g_a + g_b) grad_a W_ab x, z
+  integer, parameter :: NG_NX = 1, NG_NZ = 2, NG_GX = 3, NG_GZ = 4, N_NG = 4
+
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3, &
                         PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5
 
@@ -77,8 +81,10 @@ module surface_tension_loops
 
   !> Per-particle fields in sorted order.
   type :: csf_work_t
-    real(rp), allocatable :: v(:), c(:), nx(:), nz(:), nhx(:), nhz(:), flag(:), num(:), den(:)
-    real(rp), allocatable :: gx(:), gz(:)  !< sum_b V_b grad_a W_ab (free-surface delta)
+    real(rp), allocatable :: v(:), c(:), nhx(:), nhz(:), flag(:), num(:), den(:)
+    !> the normal sums ng(NG_*, k) side by side (normal_pairs adds a pair's four to b's slot):
+    !> n and the free-surface delta's sum_b V_b (g_a + g_b) grad_a W_ab
+    real(rp), allocatable :: ng(:, :)
     real(rp), allocatable :: tden(:)       !< tangential denominator (free-surface curvature)
     !> axisymmetric only: the weights of the free-surface delta's pair sums (normal_pairs),
     !> 1/g with m / (2 pi rho) for V (the weights of its pressure pair; planar: 1/2 and m/rho)
@@ -143,8 +149,8 @@ contains
     if (present(kept)) reuse = kept
     n = s%n
     if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
-    allocate(wk%v(n), wk%c(n), wk%nx(n), wk%nz(n), wk%nhx(n), wk%nhz(n), wk%flag(n), &
-             wk%num(n), wk%den(n), wk%gx(n), wk%gz(n), wk%tden(n), kappa(n))
+    allocate(wk%v(n), wk%c(n), wk%ng(N_NG, n), wk%nhx(n), wk%nhz(n), wk%flag(n), &
+             wk%num(n), wk%den(n), wk%tden(n), kappa(n))
     w0 = kernel_w0(kern)
     eps = csf_threshold(prm%h)
     colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
@@ -176,17 +182,16 @@ contains
     ! normal (eq 18), then filter and unit normal (eqs 20-21)
     call sweep(PASS_NORMAL, kern, s, wk, .true., axi)
     if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
-      wk%gx = wk%gx - sign(1.0_rp, s%x(1:n)) * hoop
+      wk%ng(NG_GX, :) = wk%ng(NG_GX, :) - sign(1.0_rp, s%x(1:n)) * hoop
       if (prm%axis_pair == AXIS_PAIR_RINGS) then
         ! the rings pair's own, from the rates of this evaluation (axisymmetric_rates); the
         ! fields-only call of the initial state (sph_surface_tension_fields, no acceleration
         ! asked for) has no rates: no force
-        wk%gx = 0.0_rp
-        wk%gz = 0.0_rp
+        wk%ng(NG_GX:NG_GZ, :) = 0.0_rp
         if (allocated(s%axi_dx)) then
           if (size(s%axi_dx) >= n) then
-            wk%gx = s%axi_dx(1:n)
-            wk%gz = s%axi_dz(1:n)
+            wk%ng(NG_GX, :) = s%axi_dx(1:n)
+            wk%ng(NG_GZ, :) = s%axi_dz(1:n)
           end if
         end if
       end if
@@ -195,10 +200,10 @@ contains
       wk%n2z = wk%n2z * wk%gi
     end if
     if (s%n > s%n_real) then
-      call copy_to_images(s, wk%nx, .true.)
-      call copy_to_images(s, wk%nz, .false.)
-      call copy_to_images(s, wk%gx, .true.)
-      call copy_to_images(s, wk%gz, .false.)
+      call copy_to_images(s, wk%ng(NG_NX, :), .true.)
+      call copy_to_images(s, wk%ng(NG_NZ, :), .false.)
+      call copy_to_images(s, wk%ng(NG_GX, :), .true.)
+      call copy_to_images(s, wk%ng(NG_GZ, :), .false.)
       if (axi) then
         call copy_to_images(s, wk%n2x, .true.)
         call copy_to_images(s, wk%n2z, .false.)
@@ -241,8 +246,8 @@ contains
         if (wk%flag(k) == 0.0_rp .or. s%grid%order(k) > st%n) cycle
         if (wk%den(k) > 0.0_rp) kappa(k) = wk%num(k) / wk%den(k)
         if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
-          call csf_acceleration(prm%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%gx(k), &
-                                wk%wt(k) * wk%gz(k), ax, az)
+          call csf_acceleration(prm%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%ng(NG_GX, k), &
+                                wk%wt(k) * wk%ng(NG_GZ, k), ax, az)
           s%rate(R_AX, k) = s%rate(R_AX, k) + ax
           s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
         end if
@@ -266,8 +271,8 @@ contains
         i = s%grid%order(k)
         if (i > st%n) cycle   ! an image slot
         st%colour(i) = wk%c(k)
-        st%st_nx(i) = wk%nx(k)
-        st%st_nz(i) = wk%nz(k)
+        st%st_nx(i) = wk%ng(NG_NX, k)
+        st%st_nz(i) = wk%ng(NG_NZ, k)
         st%kappa(i) = kappa(k)
       end do
       !$omp end parallel do
@@ -290,10 +295,7 @@ contains
         do k = 1, n
           wk%v(k) = s%m(k) / s%rho(k)
           wk%c(k) = merge(wk%v(k) * w0, 0.0_rp, s%fluid(k))
-          wk%nx(k) = 0.0_rp
-          wk%nz(k) = 0.0_rp
-          wk%gx(k) = 0.0_rp
-          wk%gz(k) = 0.0_rp
+          wk%ng(1:N_NG, k) = 0.0_rp
           if (axi) then
             wk%c2(k) = merge(wk%vmu(k) * w0, 0.0_rp, s%fluid(k))
             wk%n2x(k) = 0.0_rp
@@ -307,9 +309,9 @@ contains
           if (s%fluid(k) .and. axi) then   ! filtered by n2, directed by n
             call csf_unit_normal(wk%n2x(k), wk%n2z(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
             if (wk%flag(k) > 0.0_rp) &
-              call csf_unit_normal(wk%nx(k), wk%nz(k), 0.0_rp, wk%nhx(k), wk%nhz(k), wt)
+              call csf_unit_normal(wk%ng(NG_NX, k), wk%ng(NG_NZ, k), 0.0_rp, wk%nhx(k), wk%nhz(k), wt)
           else if (s%fluid(k)) then
-            call csf_unit_normal(wk%nx(k), wk%nz(k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
+            call csf_unit_normal(wk%ng(NG_NX, k), wk%ng(NG_NZ, k), eps, wk%nhx(k), wk%nhz(k), wk%flag(k))
           else
             wk%nhx(k) = 0.0_rp; wk%nhz(k) = 0.0_rp; wk%flag(k) = 0.0_rp
           end if
@@ -351,15 +353,17 @@ contains
           end if
           if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
             if (colour_delta) then
-              call csf_acceleration(prm%sigma, s%rho(k), kap, wk%nx(k), wk%nz(k), ax, az)
+              call csf_acceleration(prm%sigma, s%rho(k), kap, wk%ng(NG_NX, k), wk%ng(NG_NZ, k), &
+                                    ax, az)
             else
               ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
               if (axi) then
                 wt = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%h)
               else
-                wt = 2.0_rp * csf_surface_weight(wk%nx(k), wk%nz(k), prm%h)
+                wt = 2.0_rp * csf_surface_weight(wk%ng(NG_NX, k), wk%ng(NG_NZ, k), prm%h)
               end if
-              call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%gx(k), wt * wk%gz(k), ax, az)
+              call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%ng(NG_GX, k), &
+                                  wt * wk%ng(NG_GZ, k), ax, az)
             end if
             s%rate(R_AX, k) = s%rate(R_AX, k) + ax
             s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
@@ -434,12 +438,10 @@ contains
       case (PASS_NORMAL)   ! axisymmetric: also the gradient of the mode's colour
         if (self%axi) then
           call normal_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
-                            wk%c, wk%vmu, wk%gi, wk%c2, wk%nx, wk%nz, wk%n2x, wk%n2z, &
-                            wk%gx, wk%gz)
+                            wk%c, wk%vmu, wk%gi, wk%c2, wk%ng, wk%n2x, wk%n2z)
         else   ! gi, c2, n2x, n2z not referenced (flag: an array no other argument is)
           call normal_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%v, &
-                            wk%c, wk%v, wk%v, wk%c, wk%nx, wk%nz, wk%flag, wk%flag, wk%gx, &
-                            wk%gz)
+                            wk%c, wk%v, wk%v, wk%c, wk%ng, wk%flag, wk%flag)
         end if
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
@@ -497,23 +499,21 @@ contains
   !> so the pair's gradient is the normal's); axisymmetric V = m/(2 pi rho) and g = 1/g(x)
   !> (the weights of its pressure pair). two (axisymmetric): also the gradient n2 of the
   !> second colour c2 with the weights vmu, in the same loop; otherwise gi, c2, n2x, n2z are
-  !> not referenced.
-  pure subroutine normal_pairs(two, np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, c2, nx, nz, &
-                               n2x, n2z, gxs, gzs)
+  !> not referenced. The normal and delta sums go to ng(NG_*, slot) (csf_work_t%ng).
+  pure subroutine normal_pairs(two, np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, c2, ng, &
+                               n2x, n2z)
     logical, intent(in) :: two
     integer, intent(in) :: np, pa(*), pb(*)
     real(rp), intent(in) :: dx(*), dz(*), f(*), v(*), c(*), vmu(*), gi(*), c2(*)
     logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: nx(*), nz(*), n2x(*), n2z(*), gxs(*), gzs(*)
+    real(rp), intent(inout) :: ng(N_NG, *), n2x(*), n2z(*)
     integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2, gsum, sx, sz, s2x, s2z, tx, tz
+    real(rp) :: gx, gz, da1, da2, db1, db2, gsum, s2x, s2z
+    real(rp) :: sa(N_NG)
     k = 1
     do while (k <= np)   ! a's sums carried along its run (colour_pairs)
       a = pa(k)
-      sx = nx(a)
-      sz = nz(a)
-      tx = gxs(a)
-      tz = gzs(a)
+      sa = ng(:, a)
       if (two) then
         s2x = n2x(a)
         s2z = n2z(a)
@@ -525,10 +525,10 @@ contains
           gx = f(k) * dx(k)
           gz = f(k) * dz(k)
           call csf_normal_pair(v(a), v(b), c(a), c(b), gx, gz, da1, da2, db1, db2)
-          sx = sx + da1
-          sz = sz + da2
-          nx(b) = nx(b) + db1
-          nz(b) = nz(b) + db2
+          sa(NG_NX) = sa(NG_NX) + da1
+          sa(NG_NZ) = sa(NG_NZ) + da2
+          ng(NG_NX, b) = ng(NG_NX, b) + db1
+          ng(NG_NZ, b) = ng(NG_NZ, b) + db2
           if (two) then
             call csf_normal_pair(vmu(a), vmu(b), c2(a), c2(b), gx, gz, da1, da2, db1, db2)
             s2x = s2x + da1
@@ -539,17 +539,14 @@ contains
             gx = gsum * dx(k)
             gz = gsum * dz(k)
           end if   ! planar: g_a + g_b = 1/2 + 1/2 = 1 exactly, and gx, gz are the normal's
-          tx = tx + vmu(b) * gx
-          tz = tz + vmu(b) * gz
-          gxs(b) = gxs(b) - vmu(a) * gx
-          gzs(b) = gzs(b) - vmu(a) * gz
+          sa(NG_GX) = sa(NG_GX) + vmu(b) * gx
+          sa(NG_GZ) = sa(NG_GZ) + vmu(b) * gz
+          ng(NG_GX, b) = ng(NG_GX, b) - vmu(a) * gx
+          ng(NG_GZ, b) = ng(NG_GZ, b) - vmu(a) * gz
         end if
         k = k + 1
       end do
-      nx(a) = sx
-      nz(a) = sz
-      gxs(a) = tx
-      gzs(a) = tz
+      ng(:, a) = sa
       if (two) then
         n2x(a) = s2x
         n2z(a) = s2z
