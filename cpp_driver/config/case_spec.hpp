@@ -123,6 +123,11 @@ struct BreakupSpec {
 };
 
 enum class OutputFormat { Legacy, Hdf5, Both };
+template <>
+struct EnumNames<OutputFormat> {
+    static constexpr NameTable<OutputFormat, 3> list{
+        {{"legacy", OutputFormat::Legacy}, {"hdf5", OutputFormat::Hdf5}, {"both", OutputFormat::Both}}};
+};
 
 struct OutputSpec {
     OutputFormat format = OutputFormat::Both;

@@ -462,8 +462,10 @@ private:
     std::string path_;
 };
 
-template <class E>
-E choose(const Field<std::string>& f, std::initializer_list<std::pair<std::string_view, E>> options) {
+// The value named f among options (pairs of a name and its value); an unknown name fails with
+// the names and the closest one.
+template <class E, class Options>
+E choose_from(const Field<std::string>& f, const Options& options) {
     std::vector<std::string> names;
     for (const auto& [name, e] : options) {
         if (f.value == name) return e;
@@ -474,6 +476,17 @@ E choose(const Field<std::string>& f, std::initializer_list<std::pair<std::strin
     std::vector<std::string> q;
     for (const auto& n : names) q.push_back(dquote(n));
     fail(f, problem, "one of " + list(q));
+}
+
+template <class E>
+E choose(const Field<std::string>& f, std::initializer_list<std::pair<std::string_view, E>> options) {
+    return choose_from<E>(f, options);
+}
+
+// An enum of the parameters, by the names of its table (EnumNames, params.hpp).
+template <NamedEnum E>
+E choose(const Field<std::string>& f) {
+    return choose_from<E>(f, EnumNames<E>::list);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -916,20 +929,14 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     // [numerics] (everything but the viscosity value, which needs h and c0)
     const Section num_s = top.sub("numerics");
     if (auto f = num_s.string("kernel"))
-        p.kernel = choose<KernelType>(*f, {{"gaussian", KernelType::Gaussian},
-                                           {"quadratic", KernelType::Quadratic},
-                                           {"cubic_spline", KernelType::CubicSpline},
-                                           {"wendland", KernelType::Wendland}});
+        p.kernel = choose<KernelType>(*f);
     if (auto f = num_s.string("integrator"))
-        p.integrator = choose<Integrator>(*f, {{"predictor_corrector", Integrator::PredictorCorrector}});
+        p.integrator = choose<Integrator>(*f);
     if (auto f = num_s.string("density_filter"))
-        p.density_filter = choose<DensityFilter>(*f, {{"none", DensityFilter::None},
-                                                      {"shepard", DensityFilter::Shepard},
-                                                      {"mls", DensityFilter::MLS}});
+        p.density_filter = choose<DensityFilter>(*f);
     if (auto f = num_s.integer("filter_period")) at_least(*f, 1), p.filter_period = to_int(*f);
     if (auto f = num_s.string("viscosity"))
-        p.viscosity = choose<ViscosityModel>(*f, {{"artificial", ViscosityModel::Artificial},
-                                                  {"laminar", ViscosityModel::Laminar}});
+        p.viscosity = choose<ViscosityModel>(*f);
     if (auto f = num_s.num("xsph_eps")) {
         if (!(f->value >= 0 && f->value <= 1)) fail(*f, "out of range", "a number in [0, 1]");
         p.xsph_eps = f->value;
@@ -937,12 +944,11 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     if (auto f = num_s.string("tensile_correction"))
         p.tensile_correction = choose<int>(*f, {{"auto", -1}, {"on", 1}, {"off", 0}});
     if (auto f = num_s.string("boundary"))
-        p.boundary = choose<BoundaryType>(*f, {{"repulsive", BoundaryType::Repulsive},
-                                               {"dynamic", BoundaryType::Dynamic}});
+        p.boundary = choose<BoundaryType>(*f);
     if (auto f = num_s.integer("dbc_period")) at_least(*f, 1), p.dbc_period = to_int(*f);
     if (auto f = num_s.num("wall_viscosity")) non_negative(*f), p.wall_viscosity = f->value;
     if (auto f = num_s.string("lattice"))
-        p.lattice = choose<Lattice>(*f, {{"sc", Lattice::SimpleCubic}, {"bcc", Lattice::BodyCentred}});
+        p.lattice = choose<Lattice>(*f);
 
     // [gravity]
     const Section grav = top.sub("gravity");
@@ -952,9 +958,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     // [surface_tension]
     if (auto f = top.sub("surface_tension").num("sigma")) non_negative(*f), p.sigma = f->value;
     if (auto f = top.sub("surface_tension").string("delta"))
-        p.st_delta = choose<SurfaceTensionDelta>(
-            *f, {{"pressure_consistent", SurfaceTensionDelta::PressureConsistent},
-                 {"colour_gradient", SurfaceTensionDelta::ColourGradient}});
+        p.st_delta = choose<SurfaceTensionDelta>(*f);
 
     // [fluid]: equation of state
     const Section fluid = top.sub("fluid");
@@ -1080,7 +1084,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     }
     const Box box{p.lx, p.lz};
     if (auto f = dom.string("geometry"))
-        p.geometry = choose<Geometry>(*f, {{"planar", Geometry::Planar}, {"axisymmetric", Geometry::Axisymmetric}});
+        p.geometry = choose<Geometry>(*f);
     const bool axi = p.geometry == Geometry::Axisymmetric;
     dom.get("periodic_z", p.periodic_z);
     if (axi && spec.wall_left)
@@ -1103,7 +1107,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                              "domain.axis_pair chooses the pressure pair of the axisymmetric geometry",
                              "no domain.axis_pair, or domain.geometry = \"axisymmetric\"",
                              "domain.geometry = \"planar\" (the default)");
-        p.axis_pair = choose<AxisPair>(*f, {{"smoothed_radius", AxisPair::SmoothedRadius}, {"rings", AxisPair::Rings}});
+        p.axis_pair = choose<AxisPair>(*f);
         // the rings pair's lattice error at the axis is too large at h = 1.3 dx (the R/dx 10
         // sphere 0.91 of its Laplace pressure, ka 1.2 grows; cases/axisymmetric/README.md)
         if (p.axis_pair == AxisPair::Rings && p.h < 2.0 * p.dx * (1.0 - 1e-9))
@@ -1123,8 +1127,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                              p.axis_pair != AxisPair::Rings
                                  ? "domain.axis_pair = \"" + to_string(p.axis_pair) + "\""
                                  : "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
-        p.rings_curvature = choose<RingsCurvature>(
-            *f, {{"neighbour_mean", RingsCurvature::NeighbourMean}, {"own", RingsCurvature::Own}});
+        p.rings_curvature = choose<RingsCurvature>(*f);
     }
 
     // [time]
@@ -1368,9 +1371,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     const Section out = top.sub("output");
     OutputSpec& o = spec.output;
     if (auto f = out.string("format"))
-        o.format = choose<OutputFormat>(*f, {{"legacy", OutputFormat::Legacy},
-                                             {"hdf5", OutputFormat::Hdf5},
-                                             {"both", OutputFormat::Both}});
+        o.format = choose<OutputFormat>(*f);
     if (auto f = out.integer("checkpoint_every_steps"))
         at_least(*f, 0), o.checkpoint_every_steps = static_cast<long>(f->value);
     if (auto f = out.num("checkpoint_every_minutes")) non_negative(*f), o.checkpoint_every_minutes = f->value;
@@ -1491,16 +1492,6 @@ std::string line(const std::string& key, const std::string& value, const std::st
 std::string str(std::string_view s) { return dquote(s); }
 std::string boolean(bool b) { return b ? "true" : "false"; }
 
-std::string kernel_name(KernelType k) { return to_string(k); }
-std::string lattice_name(Lattice l) { return l == Lattice::SimpleCubic ? "sc" : "bcc"; }
-std::string format_name(OutputFormat f) {
-    switch (f) {
-        case OutputFormat::Legacy: return "legacy";
-        case OutputFormat::Hdf5: return "hdf5";
-        case OutputFormat::Both: return "both";
-    }
-    return "both";
-}
 std::string tensile_name(int t) { return t < 0 ? "auto" : (t == 0 ? "off" : "on"); }
 
 std::string sanitize_comment(std::string s) {
@@ -1540,11 +1531,11 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += line("format_version", "1", "");
 
     s += "\n[numerics]\n";
-    s += line("kernel", str(kernel_name(p.kernel)), "gaussian | quadratic | cubic_spline | wendland");
-    s += line("integrator", str("predictor_corrector"), "predictor_corrector");
-    s += line("density_filter", str(to_string(p.density_filter)), "none | shepard | mls");
+    s += line("kernel", str(to_string(p.kernel)), choices<KernelType>());
+    s += line("integrator", str(to_string(p.integrator)), choices<Integrator>());
+    s += line("density_filter", str(to_string(p.density_filter)), choices<DensityFilter>());
     s += line("filter_period", std::to_string(p.filter_period), "steps between density filters");
-    s += line("viscosity", str(to_string(p.viscosity)), "artificial | laminar");
+    s += line("viscosity", str(to_string(p.viscosity)), choices<ViscosityModel>());
     if (p.viscosity == ViscosityModel::Artificial) {
         const double nu_eq = p.visc_value * p.h * c0 / 8.0;
         s += line("alpha", num(p.visc_value),
@@ -1553,10 +1544,10 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += line("xsph_eps", num(p.xsph_eps), "XSPH velocity correction, 0 = off");
     s += line("tensile_correction", str(tensile_name(p.tensile_correction)),
               "auto (legacy: on for gaussian, cubic_spline) | on | off");
-    s += line("boundary", str(to_string(p.boundary)), "repulsive (Monaghan-Kos/Rogers) | dynamic");
+    s += line("boundary", str(to_string(p.boundary)), choices<BoundaryType>() + " (repulsive: Monaghan-Kos/Rogers)");
     s += line("dbc_period", std::to_string(p.dbc_period), "steps between dynamic-boundary density updates");
     s += line("wall_viscosity", num(p.wall_viscosity), "m^2/s, repulsive walls only");
-    s += line("lattice", str(lattice_name(p.lattice)), "sc | bcc");
+    s += line("lattice", str(to_string(p.lattice)), choices<Lattice>());
 
     s += "\n[fluid]\n";
     s += line("rho0", num(p.rho0), "reference density [kg/m^3]");
@@ -1610,11 +1601,13 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += "\n[surface_tension]\n";
     s += line("sigma", num(p.sigma), "N/m, CSF (Morris 2000); 0 = off");
     s += line("delta", str(to_string(p.st_delta)),
-              "pressure_consistent (free surface, right Laplace jump) | colour_gradient "
-              "(paper eq 24 as printed; about 0.13 of sigma at a free surface)");
+              choices<SurfaceTensionDelta>() +
+                  " (pressure_consistent: free surface, right Laplace jump; colour_gradient: paper "
+                  "eq 24 as printed, about 0.13 of sigma at a free surface)");
     if (p.axis_pair == AxisPair::Rings && p.st_delta == SurfaceTensionDelta::PressureConsistent)
         s += line("rings_curvature", str(to_string(p.rings_curvature)),
-                  "neighbour_mean (holds a drop's pole) | own (longer round jets, pole lost)");
+                  choices<RingsCurvature>() +
+                      " (neighbour_mean: holds a drop's pole; own: longer round jets, pole lost)");
 
     s += "\n[gravity]\n";
     s += line("gx", num(p.gx), "m/s^2");
@@ -1628,10 +1621,10 @@ std::string write_modern_case(const CaseSpec& spec) {
     s += line("wall_bottom", boolean(spec.wall_bottom), "");
     s += line("wall_top", boolean(spec.wall_top), "");
     s += line("floor_inclination_deg", num(spec.floor_beta_deg), "only 0 is supported");
-    s += line("geometry", str(to_string(p.geometry)), "planar | axisymmetric (x = r >= 0, axis x = 0)");
+    s += line("geometry", str(to_string(p.geometry)), choices<Geometry>() + " (axisymmetric: x = r >= 0, axis x = 0)");
     s += line("periodic_z", boolean(p.periodic_z), "periodic in z with period lz");
     if (p.geometry == Geometry::Axisymmetric)
-        s += line("axis_pair", str(to_string(p.axis_pair)), "smoothed_radius | rings (cases/axisymmetric/README.md)");
+        s += line("axis_pair", str(to_string(p.axis_pair)), choices<AxisPair>() + " (cases/axisymmetric/README.md)");
 
     s += "\n[resolution]\n";
     s += line("dx", num(p.dx), "particle spacing [m]");
@@ -1724,7 +1717,7 @@ std::string write_modern_case(const CaseSpec& spec) {
     }
 
     s += "\n[output]\n";
-    s += line("format", str(format_name(spec.output.format)), "legacy | hdf5 | both");
+    s += line("format", str(to_string(spec.output.format)), choices<OutputFormat>());
     s += line("checkpoint_every_steps", std::to_string(spec.output.checkpoint_every_steps), "0 = off");
     s += line("checkpoint_every_minutes", num(spec.output.checkpoint_every_minutes), "wall-clock minutes, 0 = off");
     s += line("remove_out_of_domain", boolean(spec.output.remove_out_of_domain),

@@ -2,7 +2,10 @@
 // One struct travels from the case readers (legacy and modern) to the core.
 #pragma once
 
+#include <array>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace sphjet {
 
@@ -31,6 +34,89 @@ enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
 // sph_params_t::rings_curvature): their neighbours' weighted mean (the default; holds a
 // drop's pole) or each row's own (longer round jets; cases/round_jet/README.md).
 enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
+
+// The case file's name of each value of an enum, written once: the modern reader accepts these
+// (modern_case.cpp, choose), and to_string, the case echo, the HDF5 attributes and the
+// messages write them. One specialisation per enum that a case names.
+template <class E>
+struct EnumNames;
+
+template <class E, std::size_t N>
+using NameTable = std::array<std::pair<std::string_view, E>, N>;
+
+template <>
+struct EnumNames<KernelType> {
+    static constexpr NameTable<KernelType, 4> list{{{"gaussian", KernelType::Gaussian},
+                                                    {"quadratic", KernelType::Quadratic},
+                                                    {"cubic_spline", KernelType::CubicSpline},
+                                                    {"wendland", KernelType::Wendland}}};
+};
+template <>
+struct EnumNames<Integrator> {
+    static constexpr NameTable<Integrator, 1> list{{{"predictor_corrector", Integrator::PredictorCorrector}}};
+};
+template <>
+struct EnumNames<DensityFilter> {
+    static constexpr NameTable<DensityFilter, 3> list{
+        {{"none", DensityFilter::None}, {"shepard", DensityFilter::Shepard}, {"mls", DensityFilter::MLS}}};
+};
+template <>
+struct EnumNames<ViscosityModel> {
+    static constexpr NameTable<ViscosityModel, 2> list{
+        {{"artificial", ViscosityModel::Artificial}, {"laminar", ViscosityModel::Laminar}}};
+};
+template <>
+struct EnumNames<BoundaryType> {
+    static constexpr NameTable<BoundaryType, 2> list{
+        {{"repulsive", BoundaryType::Repulsive}, {"dynamic", BoundaryType::Dynamic}}};
+};
+template <>
+struct EnumNames<Lattice> {
+    static constexpr NameTable<Lattice, 2> list{{{"sc", Lattice::SimpleCubic}, {"bcc", Lattice::BodyCentred}}};
+};
+template <>
+struct EnumNames<SurfaceTensionDelta> {
+    static constexpr NameTable<SurfaceTensionDelta, 2> list{
+        {{"pressure_consistent", SurfaceTensionDelta::PressureConsistent},
+         {"colour_gradient", SurfaceTensionDelta::ColourGradient}}};
+};
+template <>
+struct EnumNames<Geometry> {
+    static constexpr NameTable<Geometry, 2> list{
+        {{"planar", Geometry::Planar}, {"axisymmetric", Geometry::Axisymmetric}}};
+};
+template <>
+struct EnumNames<AxisPair> {
+    static constexpr NameTable<AxisPair, 2> list{
+        {{"smoothed_radius", AxisPair::SmoothedRadius}, {"rings", AxisPair::Rings}}};
+};
+template <>
+struct EnumNames<RingsCurvature> {
+    static constexpr NameTable<RingsCurvature, 2> list{
+        {{"neighbour_mean", RingsCurvature::NeighbourMean}, {"own", RingsCurvature::Own}}};
+};
+
+template <class E>
+concept NamedEnum = requires { EnumNames<E>::list; };
+
+// The case file's name of e ("unknown" for a value outside the table).
+template <NamedEnum E>
+[[nodiscard]] std::string to_string(E e) {
+    for (const auto& [name, value] : EnumNames<E>::list)
+        if (value == e) return std::string(name);
+    return "unknown";
+}
+
+// The names of E's values as the case echo lists them: "a | b | c".
+template <NamedEnum E>
+[[nodiscard]] std::string choices() {
+    std::string s;
+    for (const auto& [name, value] : EnumNames<E>::list) {
+        if (!s.empty()) s += " | ";
+        s += name;
+    }
+    return s;
+}
 
 struct SimParams {
     // Numerics
@@ -113,14 +199,5 @@ struct SimParams {
 // the first step takes time.dt all the same, as in legacy SPHysics: the particles get a kick,
 // and a case refined from a coarser one without scaling its time.dt gets a large one.
 [[nodiscard]] std::string initial_step_note(const SimParams& p);
-
-[[nodiscard]] std::string to_string(KernelType k);
-[[nodiscard]] std::string to_string(DensityFilter f);
-[[nodiscard]] std::string to_string(ViscosityModel v);
-[[nodiscard]] std::string to_string(BoundaryType b);
-[[nodiscard]] std::string to_string(SurfaceTensionDelta d);
-[[nodiscard]] std::string to_string(Geometry g);
-[[nodiscard]] std::string to_string(AxisPair a);
-[[nodiscard]] std::string to_string(RingsCurvature c);
 
 }  // namespace sphjet

@@ -689,16 +689,11 @@ void visit_params(P& p, F&& f) {
     f("rings_curvature", p.rings_curvature, nullptr);
 }
 
-std::string enum_name(KernelType v) { return to_string(v); }
-std::string enum_name(DensityFilter v) { return to_string(v); }
-std::string enum_name(ViscosityModel v) { return to_string(v); }
-std::string enum_name(BoundaryType v) { return to_string(v); }
-std::string enum_name(SurfaceTensionDelta v) { return to_string(v); }
-std::string enum_name(Geometry v) { return to_string(v); }
-std::string enum_name(AxisPair v) { return to_string(v); }
-std::string enum_name(RingsCurvature v) { return to_string(v); }
-std::string enum_name(Integrator v) {
-    return v == Integrator::PredictorCorrector ? "predictor_corrector" : "unknown";
+// The "<name>_name" attribute of an enum parameter: its case-file name (EnumNames), "unknown"
+// for a value outside the table; the lattice keeps the long names its files have carried.
+template <NamedEnum E>
+std::string enum_name(E v) {
+    return to_string(v);
 }
 std::string enum_name(Lattice v) {
     switch (v) {

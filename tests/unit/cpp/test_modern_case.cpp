@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -341,6 +342,48 @@ TEST(ModernCase, DefaultsOfTheMinimalCase) {
     EXPECT_EQ(s.params.dz, s.params.dx);  // dz defaults to dx
     EXPECT_NEAR(s.params.h, 1.3 * 0.002, 1e-15);
     EXPECT_EQ(s.output.format, OutputFormat::Both);
+}
+
+// Every name of an enum's table (EnumNames, params.hpp) is read by its key and written back by
+// to_string, and no two values share a name. extra: the overrides a value needs besides.
+template <class E, class Get>
+void expect_every_name_read(const std::string& key, Get get, std::vector<std::string> extra = {}) {
+    std::set<std::string_view> seen;
+    for (const auto& [name, value] : EnumNames<E>::list) {
+        EXPECT_TRUE(seen.insert(name).second) << key << ": \"" << name << "\" twice";
+        EXPECT_EQ(to_string(value), name);
+        std::vector<std::string> overrides = extra;
+        overrides.push_back(key + "=" + std::string(name));
+        const CaseSpec s = parse_modern_case(kMinimal, "n.toml", overrides);
+        EXPECT_EQ(get(s), value) << key << " = " << name;
+    }
+}
+
+TEST(ModernCase, EveryEnumNameIsReadAndWritten) {
+    expect_every_name_read<KernelType>("numerics.kernel", [](const CaseSpec& s) { return s.params.kernel; });
+    expect_every_name_read<Integrator>("numerics.integrator",
+                                       [](const CaseSpec& s) { return s.params.integrator; });
+    expect_every_name_read<DensityFilter>("numerics.density_filter",
+                                          [](const CaseSpec& s) { return s.params.density_filter; });
+    expect_every_name_read<ViscosityModel>("numerics.viscosity",
+                                           [](const CaseSpec& s) { return s.params.viscosity; },
+                                           {"fluid.nu=1e-6"});
+    expect_every_name_read<BoundaryType>("numerics.boundary",
+                                         [](const CaseSpec& s) { return s.params.boundary; });
+    expect_every_name_read<Lattice>("numerics.lattice", [](const CaseSpec& s) { return s.params.lattice; });
+    expect_every_name_read<SurfaceTensionDelta>("surface_tension.delta",
+                                                [](const CaseSpec& s) { return s.params.st_delta; });
+    expect_every_name_read<OutputFormat>("output.format", [](const CaseSpec& s) { return s.output.format; });
+    expect_every_name_read<Geometry>("domain.geometry", [](const CaseSpec& s) { return s.params.geometry; },
+                                     {"domain.wall_left=false", "numerics.lattice=sc"});
+    const std::vector<std::string> axi{"domain.geometry=axisymmetric", "domain.wall_left=false",
+                                       "numerics.lattice=sc", "resolution.h_over_dx=2"};
+    expect_every_name_read<AxisPair>("domain.axis_pair", [](const CaseSpec& s) { return s.params.axis_pair; },
+                                     axi);
+    std::vector<std::string> rings = axi;
+    rings.push_back("domain.axis_pair=rings");
+    expect_every_name_read<RingsCurvature>("surface_tension.rings_curvature",
+                                           [](const CaseSpec& s) { return s.params.rings_curvature; }, rings);
 }
 
 TEST(ModernCase, ReadsFromFileAndRejectsMissingFile) {
