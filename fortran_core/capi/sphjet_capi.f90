@@ -29,10 +29,12 @@ module sphjet_capi
             sph_kernel_eval, sph_neighbour_pairs, sph_eos, sph_surface_tension_fields
 
   !> A step or filter call uses at most one thread per this many particles: a step of a small
-  !> case (the 1321-particle Laplace disc: about 1 ms, with some ten parallel regions whose
-  !> passive wake-ups cost tens of microseconds each) is not worth sharing. Results do not
-  !> depend on the thread count, so this changes the speed only.
-  integer, parameter :: PARTICLES_PER_THREAD = 1000
+  !> case is not worth sharing (some ten parallel regions a step, whose passive wake-ups cost
+  !> tens of microseconds each). Measured on 2 cores (Laplace disc, 2 threads against 1,
+  !> alternated whole-process timings, with / without surface tension): 573 particles 1.01
+  !> (not worth it), 856 particles 0.89 / 0.82, 1076 particles 0.83 / 0.74, 1321 particles
+  !> 0.79 / 0.71. Results do not depend on the thread count, so this changes the speed only.
+  integer, parameter :: PARTICLES_PER_THREAD = 400
 
   !> Scratch memory of the core, kept between calls (opaque to C++).
   type :: workspace_t
