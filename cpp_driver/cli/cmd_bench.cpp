@@ -85,11 +85,17 @@ void register_bench(CLI::App& app) {
                               static_cast<double>(args->steps);
             // The predictor-corrector evaluates the forces (the rates pair loop) twice a step.
             constexpr double force_evals_per_step = 2.0;
+            // a small case runs on fewer threads than asked (Solver::threads_for): say so
+            const int used = Solver::threads_for(lc.particles.size());
             std::cout << fmt::format(
                 "threads {}: {:.4g} particle-steps/s, {:.4g} force evaluations/s ({:.3f} s "
-                "wall, {:.3f} s cpu, {:.1f} steps/s)\n",
+                "wall, {:.3f} s cpu, {:.1f} steps/s){}\n",
                 nt, ps / wall, force_evals_per_step * ps / wall, wall, cpu,
-                static_cast<double>(args->steps) / wall);
+                static_cast<double>(args->steps) / wall,
+                used == nt ? std::string()
+                           : fmt::format("; ran on {} (a step of {} particles)",
+                                         used == 1 ? "1 thread" : fmt::format("{} threads", used),
+                                         lc.particles.size()));
         }
     });
 }

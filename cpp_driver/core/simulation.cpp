@@ -289,10 +289,14 @@ RunSummary run_simulation(const RunOptions& opts) {
                          opts.resume ? "resuming" : "starting"));
     log.line(fmt::format("command: {}", opts.command_line), false);
     log.line(fmt::format("case: {} | particles {} (boundary {}, fluid {}) | h = {:.6g} m, "
-                         "c0 = {:.6g} m/s | kernel {} | threads {} (waits: {})",
+                         "c0 = {:.6g} m/s | kernel {} | threads {}{} (waits: {})",
                          opts.resume ? (dir / "case.toml").string() : opts.case_path.string(), np,
                          solver.particles().nb, nfluid, prm.h, prm.c0(), to_string(prm.kernel),
-                         Solver::threads(), Solver::openmp_waits()));
+                         Solver::threads(),
+                         Solver::threads_for(np) == Solver::threads()
+                             ? std::string()
+                             : fmt::format(", a step of {} particles uses {}", np, Solver::threads_for(np)),
+                         Solver::openmp_waits()));
     if (opts.resume)
         log.line(fmt::format("resuming at step {} t = {:.6g} s from {}", st.step, st.time,
                              checkpoint_path(dir).string()));

@@ -301,6 +301,9 @@ void Solver::set_wall_geometry(const std::vector<const std::vector<double>*>& nx
 
 void Solver::set_threads(int n) { sph_set_threads(n); }
 int Solver::threads() { return sph_get_threads(); }
+int Solver::threads_for(std::size_t n) {
+    return sph_threads_for(static_cast<int>(std::min<std::size_t>(n, std::numeric_limits<int>::max())));
+}
 
 std::string Solver::openmp_waits() {
     const char* policy = std::getenv("OMP_WAIT_POLICY");

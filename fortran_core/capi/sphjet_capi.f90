@@ -25,6 +25,7 @@ module sphjet_capi
   implicit none
   private
   public :: sph_workspace_create, sph_workspace_destroy, sph_set_threads, sph_get_threads, &
+            sph_threads_for, &
             sph_prepare, sph_step, sph_density_filter, sph_check_state, sph_compute_rates, &
             sph_kernel_eval, sph_neighbour_pairs, sph_eos, sph_surface_tension_fields
 
@@ -68,12 +69,20 @@ contains
     n = omp_get_max_threads()
   end function sph_get_threads
 
-  !> Sets the threads of the next parallel regions to at most one per PARTICLES_PER_THREAD
-  !> of n particles (at least one); returns the count to restore afterwards.
+  !> The threads a step or filter call of n particles runs on: the count set
+  !> (sph_set_threads), at most one per PARTICLES_PER_THREAD particles, at least one.
+  function sph_threads_for(n) result(nt) bind(C, name="sph_threads_for")
+    integer(c_int), value :: n
+    integer(c_int) :: nt
+    nt = max(1, min(omp_get_max_threads(), n / PARTICLES_PER_THREAD))
+  end function sph_threads_for
+
+  !> Sets the threads of the next parallel regions to sph_threads_for(n); returns the count
+  !> to restore afterwards.
   integer function share_threads(n) result(nt_caller)
     integer, intent(in) :: n
     nt_caller = omp_get_max_threads()
-    call omp_set_num_threads(max(1, min(nt_caller, n / PARTICLES_PER_THREAD)))
+    call omp_set_num_threads(sph_threads_for(n))
   end function share_threads
 
   !> Checks the options and values every routine relies on.

@@ -125,6 +125,9 @@ void* sph_workspace_create(void);
 void sph_workspace_destroy(void* handle);
 void sph_set_threads(int n);
 int sph_get_threads(void);
+/* The threads a step or filter call of n particles runs on: the count set, at most one per
+   PARTICLES_PER_THREAD (sphjet_capi.f90) particles, at least one. */
+int sph_threads_for(int n);
 int sph_prepare(const sph_params_t* prm, const sph_arrays_t* arr);
 int sph_step(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
              sph_step_info_t* info);

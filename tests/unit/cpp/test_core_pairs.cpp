@@ -59,6 +59,20 @@ INSTANTIATE_TEST_SUITE_P(KernelsAndViscosity, CorePairs,
                          ::testing::Combine(::testing::Values(1, 2, 3, 5), ::testing::Values(1, 2),
                                             ::testing::Values(0, 1)));
 
+// A step of a small case runs on fewer threads than set: one per 400 particles, at least one,
+// never more than set (sph_threads_for, what the run log and the bench report).
+TEST(CorePairsThreads, SmallCasesUseFewerThreads) {
+    const int old = sph_get_threads();
+    sph_set_threads(2);
+    EXPECT_EQ(sph_threads_for(0), 1);
+    EXPECT_EQ(sph_threads_for(799), 1);
+    EXPECT_EQ(sph_threads_for(800), 2);
+    EXPECT_EQ(sph_threads_for(1000000), 2);
+    sph_set_threads(1);
+    EXPECT_EQ(sph_threads_for(1000000), 1);
+    sph_set_threads(old);
+}
+
 // The traversal gives each particle its contributions in a fixed order: rates are bitwise the
 // same with 1 and 2 threads.
 TEST(CorePairsThreads, RatesIndependentOfThreadCount) {
