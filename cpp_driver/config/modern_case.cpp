@@ -478,10 +478,17 @@ E choose_from(const Field<std::string>& f, const Options& options) {
     fail(f, problem, "one of " + list(q));
 }
 
-template <class E>
-E choose(const Field<std::string>& f, std::initializer_list<std::pair<std::string_view, E>> options) {
-    return choose_from<E>(f, options);
-}
+// The names of the choices the case codes as numbers or flags, read (choose_from) and echoed
+// (name_in, write_modern_case) from the same table.
+constexpr NameTable<int, 2> kPrecisionNames{{{"single", 1}, {"double", 2}}};
+constexpr NameTable<int, 3> kTensileNames{{{"auto", -1}, {"on", 1}, {"off", 0}}};
+constexpr NameTable<int, 1> kObstacleShapes{{{"rectangle", 1}}};
+constexpr NameTable<int, 2> kObstacleKinds{{{"solid", 1}, {"walls", 2}}};
+constexpr NameTable<int, 2> kGateFacings{{{"left", -1}, {"right", 1}}};
+constexpr NameTable<bool, 2> kDiscLattices{{{"case", false}, {"rings", true}}};
+// the nozzle's jet direction (ex, ez)
+constexpr NameTable<std::pair<double, double>, 4> kNozzleAxes{
+    {{"down", {0.0, -1.0}}, {"up", {0.0, 1.0}}, {"left", {-1.0, 0.0}}, {"right", {1.0, 0.0}}}};
 
 // An enum of the parameters, by the names of its table (EnumNames, params.hpp).
 template <NamedEnum E>
@@ -922,7 +929,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         info.compiler = to_int(*f);
     }
     if (auto f = leg.string("xz_precision"))
-        info.xz_precision = choose<int>(*f, {{"single", 1}, {"double", 2}});
+        info.xz_precision = choose_from<int>(*f, kPrecisionNames);
     const auto legacy_h_coef = leg.num("h_coefficient");
     if (legacy_h_coef) positive(*legacy_h_coef), info.h_coefficient = legacy_h_coef->value;
 
@@ -942,7 +949,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         p.xsph_eps = f->value;
     }
     if (auto f = num_s.string("tensile_correction"))
-        p.tensile_correction = choose<int>(*f, {{"auto", -1}, {"on", 1}, {"off", 0}});
+        p.tensile_correction = choose_from<int>(*f, kTensileNames);
     if (auto f = num_s.string("boundary"))
         p.boundary = choose<BoundaryType>(*f);
     if (auto f = num_s.integer("dbc_period")) at_least(*f, 1), p.dbc_period = to_int(*f);
@@ -1146,9 +1153,9 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     for (const Section& s : top.array_of_tables("obstacle")) {
         ObstacleSpec o;
         if (auto f = s.string("shape"))
-            o.shape = choose<int>(*f, {{"rectangle", 1}});
+            o.shape = choose_from<int>(*f, kObstacleShapes);
         if (auto f = s.string("kind"))
-            o.kind = choose<int>(*f, {{"solid", 1}, {"walls", 2}});
+            o.kind = choose_from<int>(*f, kObstacleKinds);
         if (auto f = s.integer("density")) at_least(*f, 1), o.density = to_int(*f);
         o.r = read_rect(s, box, "obstacle");
         if (auto f = s.num("beta_deg")) {
@@ -1195,7 +1202,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         s.get("vx", g.vx);
         s.get("vz", g.vz);
         if (auto f = s.num("t_start")) non_negative(*f), g.t_start = f->value;
-        if (auto f = s.string("facing")) g.facing = choose<int>(*f, {{"left", -1}, {"right", 1}});
+        if (auto f = s.string("facing")) g.facing = choose_from<int>(*f, kGateFacings);
         spec.gates.push_back(g);
     }
 
@@ -1214,8 +1221,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         if (auto f = s.num("length_over_d0")) positive(*f), len_over_d0 = f->value;
         nz.length_over_d0 = len_over_d0;
         if (auto f = s.string("axis")) {
-            const auto dir = choose<std::pair<double, double>>(
-                *f, {{"down", {0.0, -1.0}}, {"up", {0.0, 1.0}}, {"left", {-1.0, 0.0}}, {"right", {1.0, 0.0}}});
+            const auto dir = choose_from<std::pair<double, double>>(*f, kNozzleAxes);
             nz.ex = dir.first, nz.ez = dir.second;
         }
         s.get("walls", nz.walls);
@@ -1311,7 +1317,7 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         s.get("u0", d.u0);
         s.get("w0", d.w0);
         if (auto f = s.string("lattice"))
-            d.rings = choose<bool>(*f, {{"case", false}, {"rings", true}});
+            d.rings = choose_from<bool>(*f, kDiscLattices);
         if (auto f = s.num("elongation")) {
             if (!(f->value > -0.5 && f->value < 0.5)) fail(*f, "out of range", "a number in (-0.5, 0.5)");
             d.elongation = f->value;
@@ -1492,7 +1498,6 @@ std::string line(const std::string& key, const std::string& value, const std::st
 std::string str(std::string_view s) { return dquote(s); }
 std::string boolean(bool b) { return b ? "true" : "false"; }
 
-std::string tensile_name(int t) { return t < 0 ? "auto" : (t == 0 ? "off" : "on"); }
 
 std::string sanitize_comment(std::string s) {
     for (char& c : s)
@@ -1542,7 +1547,7 @@ std::string write_modern_case(const CaseSpec& spec) {
                   "artificial viscosity; same as nu = alpha h c0 / 8 = " + num(nu_eq) + " m^2/s");
     }
     s += line("xsph_eps", num(p.xsph_eps), "XSPH velocity correction, 0 = off");
-    s += line("tensile_correction", str(tensile_name(p.tensile_correction)),
+    s += line("tensile_correction", str(name_in(kTensileNames, p.tensile_correction)),
               "auto (legacy: on for gaussian, cubic_spline) | on | off");
     s += line("boundary", str(to_string(p.boundary)), choices<BoundaryType>() + " (repulsive: Monaghan-Kos/Rogers)");
     s += line("dbc_period", std::to_string(p.dbc_period), "steps between dynamic-boundary density updates");
@@ -1574,7 +1579,7 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("xc", num(d.xc), "centre [m]");
         s += line("zc", num(d.zc), "m");
         s += line("radius", num(d.radius), "m");
-        s += line("lattice", str(d.rings ? "rings" : "case"),
+        s += line("lattice", str(name_in(kDiscLattices, d.rings)),
                   "case (numerics.lattice points inside) | rings (concentric rings, smooth edge)");
         s += line("elongation", num(d.elongation),
                   "e: stretched to semi-axes R(1+e) (x), R/(1+e) (z), area kept; 0 = round");
@@ -1647,8 +1652,8 @@ std::string write_modern_case(const CaseSpec& spec) {
 
     for (const auto& o : spec.obstacles) {
         s += "\n[[obstacle]]\n";
-        s += line("shape", str("rectangle"), "");
-        s += line("kind", str(o.kind == 2 ? "walls" : "solid"), "solid | walls (outline only)");
+        s += line("shape", str(name_in(kObstacleShapes, o.shape)), "");
+        s += line("kind", str(name_in(kObstacleKinds, o.kind)), choices_in(kObstacleKinds) + " (walls: outline only)");
         s += line("density", std::to_string(o.density), "boundary points every dx / density");
         s += line("xmin", num(o.r.xmin), "m");
         s += line("xmax", num(o.r.xmax), "m");
@@ -1665,16 +1670,17 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("vx", num(g.vx), "velocity from t_start [m/s]");
         s += line("vz", num(g.vz), "m/s; each particle stops at the top of the initial particles + 0.1 h");
         s += line("t_start", num(g.t_start), "s");
-        s += line("facing", str(g.facing > 0 ? "right" : "left"), "side of the fluid (repulsive walls): left | right");
+        s += line("facing", str(name_in(kGateFacings, g.facing)),
+                  "side of the fluid (repulsive walls): " + choices_in(kGateFacings));
     }
 
     if (spec.nozzle) {
         const NozzleSpec& nz = *spec.nozzle;
-        const char* axis = nz.ex > 0 ? "right" : nz.ex < 0 ? "left" : nz.ez > 0 ? "up" : "down";
         s += "\n[nozzle]                        # a driven nozzle: the fluid in it moves out at u0 as a plug\n";
         s += line("x0", num(nz.x0), "orifice centre [m]");
         s += line("z0", num(nz.z0), "m");
-        s += line("axis", str(axis), "jet direction: down | up | left | right");
+        s += line("axis", str(name_in(kNozzleAxes, std::pair{nz.ex, nz.ez})),
+                  "jet direction: " + choices_in(kNozzleAxes));
         s += line("d0", num(nz.d0), "orifice width D0 [m]");
         s += line("length_over_d0", num(nz.length_over_d0), "nozzle length upstream of the orifice / D0");
         s += line("u0", num(nz.u0), "jet speed [m/s]");
@@ -1713,7 +1719,7 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("detail_end", num(info.detail_end), "s");
         s += line("vorticity", boolean(info.vorticity != 0), "vorticity printing (INDAT only)");
         s += line("compiler", std::to_string(info.compiler), "1 gfortran, 2 ifort, 3 win_ifort, 4 FTN95 (INDAT only)");
-        s += line("xz_precision", str(info.xz_precision == 1 ? "single" : "double"), "legacy solver's x/z precision");
+        s += line("xz_precision", str(name_in(kPrecisionNames, info.xz_precision)), "legacy solver's x/z precision");
     }
 
     s += "\n[output]\n";

@@ -99,23 +99,35 @@ struct EnumNames<RingsCurvature> {
 template <class E>
 concept NamedEnum = requires { EnumNames<E>::list; };
 
-// The case file's name of e ("unknown" for a value outside the table).
-template <NamedEnum E>
-[[nodiscard]] std::string to_string(E e) {
-    for (const auto& [name, value] : EnumNames<E>::list)
-        if (value == e) return std::string(name);
+// The name of v in a table ("unknown" for a value outside it).
+template <class E, std::size_t N>
+[[nodiscard]] std::string name_in(const NameTable<E, N>& table, E v) {
+    for (const auto& [name, value] : table)
+        if (value == v) return std::string(name);
     return "unknown";
 }
 
-// The names of E's values as the case echo lists them: "a | b | c".
-template <NamedEnum E>
-[[nodiscard]] std::string choices() {
+// A table's names as the case echo lists them: "a | b | c".
+template <class E, std::size_t N>
+[[nodiscard]] std::string choices_in(const NameTable<E, N>& table) {
     std::string s;
-    for (const auto& [name, value] : EnumNames<E>::list) {
+    for (const auto& [name, value] : table) {
         if (!s.empty()) s += " | ";
         s += name;
     }
     return s;
+}
+
+// The case file's name of e ("unknown" for a value outside the table).
+template <NamedEnum E>
+[[nodiscard]] std::string to_string(E e) {
+    return name_in(EnumNames<E>::list, e);
+}
+
+// The names of E's values as the case echo lists them.
+template <NamedEnum E>
+[[nodiscard]] std::string choices() {
+    return choices_in(EnumNames<E>::list);
 }
 
 struct SimParams {

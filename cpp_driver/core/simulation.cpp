@@ -285,6 +285,7 @@ RunSummary run_simulation(const RunOptions& opts) {
     }
     const std::size_t np = solver.particles().size();
     const std::size_t nfluid = solver.particles().n_fluid();
+    const int used_threads = Solver::threads_for(np);   // fewer than asked for a small case
     log.line(fmt::format("sphjet {} ({}) {}", SPHJET_VERSION, h5::git_hash(),
                          opts.resume ? "resuming" : "starting"));
     log.line(fmt::format("command: {}", opts.command_line), false);
@@ -293,9 +294,9 @@ RunSummary run_simulation(const RunOptions& opts) {
                          opts.resume ? (dir / "case.toml").string() : opts.case_path.string(), np,
                          solver.particles().nb, nfluid, prm.h, prm.c0(), to_string(prm.kernel),
                          Solver::threads(),
-                         Solver::threads_for(np) == Solver::threads()
+                         used_threads == Solver::threads()
                              ? std::string()
-                             : fmt::format(", a step of {} particles uses {}", np, Solver::threads_for(np)),
+                             : fmt::format(", a step of {} particles uses {}", np, used_threads),
                          Solver::openmp_waits()));
     if (opts.resume)
         log.line(fmt::format("resuming at step {} t = {:.6g} s from {}", st.step, st.time,

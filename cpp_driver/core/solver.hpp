@@ -83,8 +83,8 @@ public:
 
     static void set_threads(int n);
     static int threads();
-    // The threads a step of n particles runs on: threads(), at most one per 400 particles
-    // (the core's PARTICLES_PER_THREAD), at least one.
+    // The threads a step of n particles runs on: threads(), fewer for a small case (the
+    // core's sph_threads_for).
     static int threads_for(std::size_t n);
     // How OpenMP threads wait at barriers, from the environment libgomp read at start-up
     // (cli/main.cpp sets it unless the user did): e.g. "spin 5000, then sleep".
