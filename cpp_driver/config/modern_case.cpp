@@ -125,6 +125,7 @@ constexpr KeySpec kKeys[] = {
     {"surface_tension.sigma", Kind::Float},
     {"surface_tension.delta", Kind::String},
     {"surface_tension.rings_curvature", Kind::String},
+    {"surface_tension.curvature_normals", Kind::String},
     // [gravity]
     {"gravity.gx", Kind::Float},
     {"gravity.gz", Kind::Float},
@@ -1136,6 +1137,15 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                                  : "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
         p.rings_curvature = choose<RingsCurvature>(*f);
     }
+    if (auto f = st.string("curvature_normals")) {
+        if (p.st_delta != SurfaceTensionDelta::PressureConsistent)
+            throw InputError(ctx.where(st.key_path("curvature_normals")),
+                             "surface_tension.curvature_normals chooses the normals of the free-surface "
+                             "curvature",
+                             "surface_tension.delta = \"pressure_consistent\"",
+                             "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
+        p.curvature_normals = choose<CurvatureNormals>(*f);
+    }
 
     // [time]
     const Section tim = top.sub("time");
@@ -1613,6 +1623,10 @@ std::string write_modern_case(const CaseSpec& spec) {
         s += line("rings_curvature", str(to_string(p.rings_curvature)),
                   choices<RingsCurvature>() +
                       " (neighbour_mean: holds a drop's pole; own: longer round jets, pole lost)");
+    if (p.curvature_normals != CurvatureNormals::All)
+        s += line("curvature_normals", str(to_string(p.curvature_normals)),
+                  choices<CurvatureNormals>() +
+                      " (surface_band: only the normals within h of the surface enter the curvature)");
 
     s += "\n[gravity]\n";
     s += line("gx", num(p.gx), "m/s^2");

@@ -687,6 +687,7 @@ void visit_params(P& p, F&& f) {
     f("periodic_z", p.periodic_z, nullptr);
     f("axis_pair", p.axis_pair, nullptr);
     f("rings_curvature", p.rings_curvature, nullptr);
+    f("curvature_normals", p.curvature_normals, nullptr);
 }
 
 // The "<name>_name" attribute of an enum parameter: its case-file name (EnumNames), "unknown"
@@ -736,11 +737,12 @@ SimParams read_params(hid_t loc) {
         // The drive_* fields and domain_box likewise (no driven nozzle before them).
         // geometry and periodic_z likewise (planar, not periodic before them), axis_pair
         // (the smoothed-radius pair, the only one before it) and rings_curvature (the
-        // neighbours' mean, the rings pair's since eb97aa7).
+        // neighbours' mean, the rings pair's since eb97aa7), curvature_normals (all of them).
         if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_") ||
              std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box" ||
              std::string_view(name) == "geometry" || std::string_view(name) == "periodic_z" ||
-             std::string_view(name) == "axis_pair" || std::string_view(name) == "rings_curvature") &&
+             std::string_view(name) == "axis_pair" || std::string_view(name) == "rings_curvature" ||
+             std::string_view(name) == "curvature_normals") &&
             !has_attr(loc, name))
             return;
         if constexpr (std::is_enum_v<T>) {
