@@ -8,9 +8,9 @@ run from WORK_DIR/repo, a stand-in for the checkout: `cases` links to SOURCE_DIR
 `tools` is a copy of SOURCE_DIR/tools (the tools find the checkout from their own place, so
 their default outputs land under WORK_DIR), `build/cpp_driver/sphjet` links to SPHJET and
 `../shared` to SOURCE_DIR/../shared when that exists. Only the end time changes:
-- `sphjet run` of a case in the checkout gets `--tmax 0.03` (3 outputs of the jet; the
+- `sphjet run` of a case in the checkout gets `--tmax 0.02` (3 snapshots of the jet; the
   README's run goes to the first breakup, about 0.15 s);
-- `tools/jet_study.py run` gets `--tmax 0.004 -j 1` (each of the 16 runs a few dozen steps);
+- `tools/jet_study.py run` gets `--tmax 0.002 -j 1` (each of the 16 runs 100-200 steps);
 - `paraview FILE` is not started (no display here): FILE must exist. ParaView itself is
   checked by interface.paraview_opens_xdmf where it is installed.
 Lines that read ../shared (legacy SPHysics runs) form the part `legacy`, the rest `main`;
@@ -27,8 +27,8 @@ import shutil
 import subprocess
 import sys
 
-MAIN_TMAX = "0.03"
-STUDY_ARGS = ["--tmax", "0.004", "-j", "1"]
+MAIN_TMAX = "0.02"
+STUDY_ARGS = ["--tmax", "0.002", "-j", "1"]
 
 
 def tour_lines(readme):
