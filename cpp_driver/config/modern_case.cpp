@@ -576,7 +576,7 @@ void check_keys(const Ctx& ctx, const toml::table& t, const std::string& pattern
 //  - a non-ASCII character where toml++ tests for whitespace (after a key, in the text it
 //    scans ahead of a bare value, after a backslash in a multi-line string) reaches
 //    TOML_UNREACHABLE in its Unicode tables: undefined behaviour in every build;
-//    marzer/tomlplusplus issues 190 and 295, fixed by pull 305.
+//    marzer/tomlplusplus reports 190 and 295, fixed by pull 305.
 
 // The first line that starts (after blanks) with '[' or '[[' not followed by a key, ']' or
 // another '[' toml++ reports itself: its byte offset. Line by line, without regard to
