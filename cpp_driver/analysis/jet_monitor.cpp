@@ -149,11 +149,19 @@ void JetMonitor::neck(const std::vector<double>& s, const std::vector<double>& l
         const auto i = static_cast<std::size_t>(s[k] / ds_);
         reach[i] = std::max(reach[i], l[k]);
     }
+    // The surface profile: the largest reach over the slice and its two neighbours. A slice one
+    // spacing wide holds one row of rings or two, or none of the outer ring's when the rows are
+    // a little stretched (the radius then reads one ring short); three slices always hold one.
     r.surface.assign(slices, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = 0; i < slices; ++i) {
+        double widest = reach[i];
+        if (i > 0) widest = std::max(widest, reach[i - 1]);
+        if (i + 1 < slices) widest = std::max(widest, reach[i + 1]);
+        if (widest >= 0) r.surface[i] = widest + 0.5 * ds_;
+    }
     for (std::size_t i = 0; i < slices; ++i) {
         if (reach[i] < 0) continue;  // an empty slice: a gap the link bridged across
         const double radius = reach[i] + 0.5 * ds_;
-        r.surface[i] = radius;
         if (!r.neck_r || radius < *r.neck_r) {
             r.neck_r = radius;
             r.neck_s = (static_cast<double>(i) + 0.5) * ds_;

@@ -29,8 +29,10 @@
 //     short of its tip (the tip itself is the round cap); a slice's radius is the largest
 //     |l| of its particles plus ds / 2 (the particle's half-spacing: the plug gives d0 / 2
 //     at the orifice). The neck is the thinnest slice: its radius and where it is. The
-//     slices' radii are kept as the sample's surface profile r_s(s), the record from which
-//     the disturbance's growth along the jet is read (tools/jet_noise.py).
+//     surface profile r_s(s), from which the disturbance's growth along the jet is read
+//     (tools/jet_noise.py), takes per slice the largest |l| over it and its two neighbours,
+//     plus ds / 2: a single slice misses the outer ring wherever the rows are a little
+//     stretched and would read one ring short.
 //   - exit noise: over the jet's own particles within 2 d0 of the orifice (0 <= s < 2 d0),
 //     the mean and standard deviation of the pressure and the rms of the velocity across the
 //     axis (radial for a round jet). A quiet jet holds p = sigma/a there (round; a = d0/2)
