@@ -15,6 +15,7 @@
 
 #include <toml++/toml.h>
 
+#include "config/case_params.hpp"
 #include "config/errors.hpp"
 
 namespace sphjet {
@@ -63,163 +64,16 @@ bool looks_like_modern_case(const std::filesystem::path& path) {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// The schema: every key the format knows, with its TOML type. Sections are the prefixes;
-// "name[]" is an array of tables ([[name]] in the file).
-// ---------------------------------------------------------------------------------------
+// The schema: every key the format knows (config/case_params.hpp). Sections are the
+// prefixes; "name[]" is an array of tables ([[name]] in the file).
 
-enum class Kind { Float, Int, Bool, String };
-
-struct KeySpec {
-    std::string_view path;
-    Kind kind;
-};
-
-constexpr KeySpec kKeys[] = {
-    {"format_version", Kind::Int},
-    // [numerics]
-    {"numerics.kernel", Kind::String},
-    {"numerics.integrator", Kind::String},
-    {"numerics.density_filter", Kind::String},
-    {"numerics.filter_period", Kind::Int},
-    {"numerics.viscosity", Kind::String},
-    {"numerics.alpha", Kind::Float},
-    {"numerics.xsph_eps", Kind::Float},
-    {"numerics.tensile_correction", Kind::String},
-    {"numerics.boundary", Kind::String},
-    {"numerics.dbc_period", Kind::Int},
-    {"numerics.wall_viscosity", Kind::Float},
-    {"numerics.lattice", Kind::String},
-    // [fluid]
-    {"fluid.rho0", Kind::Float},
-    {"fluid.gamma", Kind::Float},
-    {"fluid.c0", Kind::Float},
-    {"fluid.coef", Kind::Float},
-    {"fluid.h_swl", Kind::Float},
-    {"fluid.mu", Kind::Float},
-    {"fluid.nu", Kind::Float},
-    {"fluid.block[].xmin", Kind::Float},
-    {"fluid.block[].xmax", Kind::Float},
-    {"fluid.block[].zmin", Kind::Float},
-    {"fluid.block[].zmax", Kind::Float},
-    {"fluid.block[].u0", Kind::Float},
-    {"fluid.block[].w0", Kind::Float},
-    {"fluid.disc[].xc", Kind::Float},
-    {"fluid.disc[].zc", Kind::Float},
-    {"fluid.disc[].radius", Kind::Float},
-    {"fluid.disc[].u0", Kind::Float},
-    {"fluid.disc[].w0", Kind::Float},
-    {"fluid.disc[].lattice", Kind::String},
-    {"fluid.disc[].elongation", Kind::Float},
-    {"fluid.cylinder[].radius", Kind::Float},
-    {"fluid.cylinder[].eps", Kind::Float},
-    {"fluid.cylinder[].wavelength", Kind::Float},
-    {"fluid.cylinder[].zmin", Kind::Float},
-    {"fluid.cylinder[].zmax", Kind::Float},
-    {"fluid.square[].xc", Kind::Float},
-    {"fluid.square[].zc", Kind::Float},
-    {"fluid.square[].side", Kind::Float},
-    {"fluid.square[].u0", Kind::Float},
-    {"fluid.square[].w0", Kind::Float},
-    // [surface_tension]
-    {"surface_tension.sigma", Kind::Float},
-    {"surface_tension.delta", Kind::String},
-    {"surface_tension.rings_curvature", Kind::String},
-    // [gravity]
-    {"gravity.gx", Kind::Float},
-    {"gravity.gz", Kind::Float},
-    // [domain]
-    {"domain.lx", Kind::Float},
-    {"domain.lz", Kind::Float},
-    {"domain.wall_left", Kind::Bool},
-    {"domain.wall_right", Kind::Bool},
-    {"domain.wall_bottom", Kind::Bool},
-    {"domain.wall_top", Kind::Bool},
-    {"domain.floor_inclination_deg", Kind::Float},
-    {"domain.geometry", Kind::String},
-    {"domain.periodic_z", Kind::Bool},
-    {"domain.axis_pair", Kind::String},
-    // [resolution]
-    {"resolution.dx", Kind::Float},
-    {"resolution.dz", Kind::Float},
-    {"resolution.h", Kind::Float},
-    {"resolution.h_coefficient", Kind::Float},
-    {"resolution.h_over_dx", Kind::Float},
-    // [time]
-    {"time.tmax", Kind::Float},
-    {"time.dt", Kind::Float},
-    {"time.variable_dt", Kind::Bool},
-    {"time.cfl", Kind::Float},
-    {"time.out", Kind::Float},
-    {"time.trec_ini", Kind::Float},
-    // [[obstacle]]
-    {"obstacle[].shape", Kind::String},
-    {"obstacle[].kind", Kind::String},
-    {"obstacle[].density", Kind::Int},
-    {"obstacle[].xmin", Kind::Float},
-    {"obstacle[].xmax", Kind::Float},
-    {"obstacle[].zmin", Kind::Float},
-    {"obstacle[].zmax", Kind::Float},
-    {"obstacle[].beta_deg", Kind::Float},
-    // [gate]: legacy "Add gate"
-    {"gate.x", Kind::Float},
-    {"gate.zmin", Kind::Float},
-    {"gate.zmax", Kind::Float},
-    {"gate.vx", Kind::Float},
-    {"gate.vz", Kind::Float},
-    {"gate.t_start", Kind::Float},
-    {"gate.facing", Kind::String},
-    // [nozzle]: a driven nozzle (the jets)
-    {"nozzle.x0", Kind::Float},
-    {"nozzle.z0", Kind::Float},
-    {"nozzle.axis", Kind::String},
-    {"nozzle.d0", Kind::Float},
-    {"nozzle.length_over_d0", Kind::Float},
-    {"nozzle.u0", Kind::Float},
-    {"nozzle.walls", Kind::Bool},
-    {"nozzle.disturbance", Kind::Float},
-    {"nozzle.disturbance_ka", Kind::Float},
-    // [breakup]: breakup detection while the run goes
-    {"breakup.link_over_h", Kind::Float},
-    {"breakup.band_over_d0", Kind::Float},
-    {"breakup.check_every", Kind::Float},
-    {"breakup.stop_after", Kind::Float},
-    {"breakup.remove_drops_below_h", Kind::Float},
-    // [[wall]]: legacy "Add wall"
-    {"wall[].x", Kind::Float},
-    {"wall[].height", Kind::Float},
-    // [legacy]: what a converted legacy case carries
-    {"legacy.fill", Kind::Bool},
-    {"legacy.single_precision", Kind::Bool},
-    {"legacy.h_coefficient", Kind::Float},
-    {"legacy.detail_out", Kind::Float},
-    {"legacy.detail_start", Kind::Float},
-    {"legacy.detail_end", Kind::Float},
-    {"legacy.vorticity", Kind::Bool},
-    {"legacy.compiler", Kind::Int},
-    {"legacy.xz_precision", Kind::String},
-    // [output]
-    {"output.format", Kind::String},
-    {"output.checkpoint_every_steps", Kind::Int},
-    {"output.checkpoint_every_minutes", Kind::Float},
-    {"output.remove_out_of_domain", Kind::Bool},
-    {"output.rho_min_factor", Kind::Float},
-    {"output.rho_max_factor", Kind::Float},
-    {"output.dt_min", Kind::Float},
-    {"output.revolution_sectors", Kind::Int},
-};
-
-const KeySpec* find_key(std::string_view pattern) {
-    for (const auto& k : kKeys)
-        if (k.path == pattern) return &k;
-    return nullptr;
-}
+const Param* find_key(std::string_view pattern) { return find_param(pattern); }
 
 const std::set<std::string>& sections() {
     static const std::set<std::string> s = [] {
         std::set<std::string> out;
-        for (const auto& k : kKeys) {
-            std::string_view p = k.path;
+        for (const auto& k : case_params()) {
+            std::string_view p = k.key;
             for (std::size_t i = 0; i < p.size(); ++i)
                 if (p[i] == '.') out.emplace(p.substr(0, i));
         }
@@ -239,8 +93,9 @@ std::string join(const std::string& prefix, std::string_view key) {
 std::vector<std::string> children(const std::string& prefix) {
     std::set<std::string> out;
     const std::string lead = prefix.empty() ? "" : prefix + ".";
-    for (const auto& k : kKeys) {
-        std::string_view p = k.path;
+    for (const auto& k : case_params()) {
+        std::string_view p = k.key;
+        if (p.empty()) continue;
         if (p.substr(0, lead.size()) != lead) continue;
         std::string_view rest = p.substr(lead.size());
         rest = rest.substr(0, rest.find('.'));
@@ -375,10 +230,12 @@ template <class T>
 // A view of one table of the file with its key path ("fluid.block[2]").
 class Section {
 public:
-    Section(const Ctx& ctx, const toml::table* t, std::string path)
-        : ctx_(ctx), t_(t), path_(std::move(path)) {}
+    Section(const Ctx& ctx, const toml::table* t, std::string path, std::string pattern)
+        : ctx_(ctx), t_(t), path_(std::move(path)), pattern_(std::move(pattern)) {}
 
     [[nodiscard]] const std::string& path() const { return path_; }
+    // The section's name in the schema: "fluid.block[]" for "fluid.block[2]".
+    [[nodiscard]] const std::string& pattern() const { return pattern_; }
     [[nodiscard]] std::string key_path(std::string_view key) const { return join(path_, key); }
     [[nodiscard]] bool has(std::string_view key) const {
         return t_ != nullptr && t_->get(key) != nullptr;
@@ -420,6 +277,8 @@ public:
         return Field<std::string>{*s, ctx_.where(key_path(key), n)};
     }
 
+    [[nodiscard]] std::string where(std::string_view key) const { return ctx_.where(key_path(key)); }
+
     [[nodiscard]] Field<double> required_num(std::string_view key, const std::string& expected) const {
         if (auto f = num(key)) return *f;
         throw InputError(ctx_.where(key_path(key)), "missing required key", expected, "nothing");
@@ -439,13 +298,13 @@ public:
         if (n == nullptr) return out;
         const toml::array* arr = n->as_array();
         for (std::size_t i = 0; i < arr->size(); ++i)
-            out.emplace_back(ctx_, arr->get(i)->as_table(),
-                             key_path(key) + "[" + std::to_string(i) + "]");
+            out.emplace_back(ctx_, arr->get(i)->as_table(), key_path(key) + "[" + std::to_string(i) + "]",
+                             join(pattern_, key) + "[]");
         return out;
     }
     [[nodiscard]] Section sub(std::string_view key) const {
         const toml::node* n = node(key);
-        return {ctx_, n != nullptr ? n->as_table() : nullptr, key_path(key)};
+        return {ctx_, n != nullptr ? n->as_table() : nullptr, key_path(key), join(pattern_, key)};
     }
 
 private:
@@ -460,6 +319,7 @@ private:
     const Ctx& ctx_;
     const toml::table* t_;
     std::string path_;
+    std::string pattern_;
 };
 
 // The value named f among options (pairs of a name and its value); an unknown name fails with
@@ -478,23 +338,8 @@ E choose_from(const Field<std::string>& f, const Options& options) {
     fail(f, problem, "one of " + list(q));
 }
 
-// The names of the choices the case codes as numbers or flags, read (choose_from) and echoed
-// (name_in, write_modern_case) from the same table.
-constexpr NameTable<int, 2> kPrecisionNames{{{"single", 1}, {"double", 2}}};
-constexpr NameTable<int, 3> kTensileNames{{{"auto", -1}, {"on", 1}, {"off", 0}}};
-constexpr NameTable<int, 1> kObstacleShapes{{{"rectangle", 1}}};
-constexpr NameTable<int, 2> kObstacleKinds{{{"solid", 1}, {"walls", 2}}};
-constexpr NameTable<int, 2> kGateFacings{{{"left", -1}, {"right", 1}}};
-constexpr NameTable<bool, 2> kDiscLattices{{{"case", false}, {"rings", true}}};
-// the nozzle's jet direction (ex, ez)
-constexpr NameTable<std::pair<double, double>, 4> kNozzleAxes{
-    {{"down", {0.0, -1.0}}, {"up", {0.0, 1.0}}, {"left", {-1.0, 0.0}}, {"right", {1.0, 0.0}}}};
-
-// An enum of the parameters, by the names of its table (EnumNames, params.hpp).
-template <NamedEnum E>
-E choose(const Field<std::string>& f) {
-    return choose_from<E>(f, EnumNames<E>::list);
-}
+// The jet direction (ex, ez) of each of nozzle.axis's choices, by their numbers.
+constexpr std::pair<double, double> kNozzleDirections[] = {{0.0, -1.0}, {0.0, 1.0}, {-1.0, 0.0}, {1.0, 0.0}};
 
 // ---------------------------------------------------------------------------------------
 // Unknown keys: walk the whole tree against the schema.
@@ -517,8 +362,9 @@ std::string section_name(const std::string& pattern) {
         problem += " (did you mean '" + join(pattern_prefix, *c) + "'?)";
     } else {
         // The right name in the wrong section?
-        for (const auto& k : kKeys) {
-            const std::string p(k.path);
+        for (const auto& k : case_params()) {
+            const std::string p(k.key);
+            if (p.empty()) continue;
             const auto dot = p.rfind('.');
             const std::string leaf = dot == std::string::npos ? p : p.substr(dot + 1);
             if (leaf == key) {
@@ -787,13 +633,14 @@ void apply_override(Ctx& ctx, toml::table& root, const std::string& text) {
             problem += " (did you mean '" + join(pattern_prefix, *c) + "'?)";
         } else {
             // "fluid.block.u0" for "fluid.block[0].u0"?
-            for (const auto& k : kKeys) {
-                std::string p(k.path);
+            for (const auto& k : case_params()) {
+                if (k.key.empty()) continue;
+                std::string p(k.key);
                 p.erase(std::remove(p.begin(), p.end(), '['), p.end());
                 p.erase(std::remove(p.begin(), p.end(), ']'), p.end());
                 if (p == pattern) {
                     problem += " (elements of an array of tables are named with an index, e.g. '" +
-                               std::string(k.path).replace(std::string(k.path).find("[]"), 2, "[0]") +
+                               std::string(k.key).replace(std::string(k.key).find("[]"), 2, "[0]") +
                                "')";
                     break;
                 }
@@ -858,12 +705,72 @@ void positive(const Field<double>& f) {
 void non_negative(const Field<double>& f) {
     if (!(f.value >= 0)) fail(f, "must not be negative", "a number >= 0");
 }
-void at_least(const Field<std::int64_t>& f, std::int64_t lo) {
-    if (f.value < lo) fail(f, "out of range", "an integer >= " + std::to_string(lo));
+// "a number in [0, 1]", "an integer >= 1": what a range allows.
+std::string range_expected(const Range& g, bool integer) {
+    const std::string text = range_text(g);
+    const std::string a = integer ? "an integer " : "a number ";
+    return g.kind == Range::Kind::Between && g.hi < kNoLimit ? a + "in " + text : a + text;
 }
-int to_int(const Field<std::int64_t>& f) {
-    if (f.value > 1000000000) fail(f, "out of range", "an integer <= 1000000000");
-    return static_cast<int>(f.value);
+
+template <class T>
+void check_range(const Field<T>& f, const Range& g) {
+    const double v = static_cast<double>(f.value);
+    const bool integer = std::is_integral_v<T>;
+    switch (g.kind) {
+        case Range::Kind::Any: return;
+        case Range::Kind::Positive:
+            if (!(v > 0)) fail(f, "must be positive", range_expected(g, integer));
+            return;
+        case Range::Kind::NonNegative:
+            if (!(v >= 0)) fail(f, "must not be negative", range_expected(g, integer));
+            return;
+        case Range::Kind::Between: {
+            const bool above = g.lo_open ? v > g.lo : v >= g.lo;
+            const bool below = g.hi >= kNoLimit || (g.hi_open ? v < g.hi : v <= g.hi);
+            if (!(above && below)) fail(f, "out of range", range_expected(g, integer));
+            return;
+        }
+    }
+}
+
+// Reads the keys of section s whose member lives in owner (a struct of type tag), as their
+// rows say: type, range or choices, required; rows read by hand are left to the caller.
+void read_members(const Section& s, void* owner, const void* tag) {
+    for (const Param& r : case_params()) {
+        if (r.key.empty() || section_of(r.key) != s.pattern() || r.member.owner != tag || (r.hand & kHandRead))
+            continue;
+        const std::string_view key = leaf_of(r.key);
+        const Member& m = r.member;
+        if (r.required && !s.has(key)) {
+            std::string expected(r.doc);
+            if (!r.unit.empty()) expected += " [" + std::string(r.unit) + "]";
+            throw InputError(s.where(key), "missing required key", expected, "nothing");
+        }
+        switch (r.type) {
+            case KeyType::Float:
+                if (auto f = s.num(key)) check_range(*f, r.range), m.set_f(owner, f->value);
+                break;
+            case KeyType::Int:
+                if (auto f = s.integer(key)) {
+                    check_range(*f, r.range);
+                    if (f->value > m.max_i)
+                        fail(*f, "out of range", "an integer <= " + std::to_string(m.max_i));
+                    m.set_i(owner, f->value);
+                }
+                break;
+            case KeyType::Bool:
+                if (auto f = s.boolean(key)) m.set_i(owner, f->value ? 1 : 0);
+                break;
+            case KeyType::String:
+                if (auto f = s.string(key)) m.set_i(owner, choose_from<std::int64_t>(*f, r.choices));
+                break;
+        }
+    }
+}
+
+template <class S>
+void read_members(const Section& s, S& owner) {
+    read_members(s, &owner, &owner_tag<S>);
 }
 
 struct Box {
@@ -905,72 +812,25 @@ void centred_inside(const Field<double>& xc, const Field<double>& zc, const Fiel
     (void)size;
 }
 
-CaseSpec build(const Ctx& ctx, const toml::table& root) {
-    CaseSpec spec;
-    spec.source = ctx.file;
-    SimParams& p = spec.params;
-    const Section top(ctx, &root, "");
-
-    if (auto v = top.integer("format_version"); v && v->value != 1)
-        fail(*v, "unsupported format version", "1");
-
-    // [legacy]: read first, single_precision changes how B and h are derived.
-    const Section leg = top.sub("legacy");
+// [legacy]: read first, single_precision changes how B and h are derived.
+struct LegacyRead {
     bool single = false;
-    leg.get("fill", spec.legacy_fill);
-    leg.get("single_precision", single);
-    LegacyRunInfo& info = spec.legacy;
-    leg.get("detail_out", info.detail_out);
-    leg.get("detail_start", info.detail_start);
-    leg.get("detail_end", info.detail_end);
-    if (auto f = leg.boolean("vorticity")) info.vorticity = f->value ? 1 : 0;
-    if (auto f = leg.integer("compiler")) {
-        if (f->value < 1 || f->value > 4) fail(*f, "out of range", "1 (gfortran), 2 (ifort), 3 (win_ifort) or 4 (FTN95)");
-        info.compiler = to_int(*f);
-    }
-    if (auto f = leg.string("xz_precision"))
-        info.xz_precision = choose_from<int>(*f, kPrecisionNames);
-    const auto legacy_h_coef = leg.num("h_coefficient");
-    if (legacy_h_coef) positive(*legacy_h_coef), info.h_coefficient = legacy_h_coef->value;
+    std::optional<Field<double>> h_coef;
+};
 
-    // [numerics] (everything but the viscosity value, which needs h and c0)
-    const Section num_s = top.sub("numerics");
-    if (auto f = num_s.string("kernel"))
-        p.kernel = choose<KernelType>(*f);
-    if (auto f = num_s.string("integrator"))
-        p.integrator = choose<Integrator>(*f);
-    if (auto f = num_s.string("density_filter"))
-        p.density_filter = choose<DensityFilter>(*f);
-    if (auto f = num_s.integer("filter_period")) at_least(*f, 1), p.filter_period = to_int(*f);
-    if (auto f = num_s.string("viscosity"))
-        p.viscosity = choose<ViscosityModel>(*f);
-    if (auto f = num_s.num("xsph_eps")) {
-        if (!(f->value >= 0 && f->value <= 1)) fail(*f, "out of range", "a number in [0, 1]");
-        p.xsph_eps = f->value;
-    }
-    if (auto f = num_s.string("tensile_correction"))
-        p.tensile_correction = choose_from<int>(*f, kTensileNames);
-    if (auto f = num_s.string("boundary"))
-        p.boundary = choose<BoundaryType>(*f);
-    if (auto f = num_s.integer("dbc_period")) at_least(*f, 1), p.dbc_period = to_int(*f);
-    if (auto f = num_s.num("wall_viscosity")) non_negative(*f), p.wall_viscosity = f->value;
-    if (auto f = num_s.string("lattice"))
-        p.lattice = choose<Lattice>(*f);
+LegacyRead read_legacy(const Section& top, CaseSpec& spec) {
+    const Section leg = top.sub("legacy");
+    read_members(leg, spec);
+    read_members(leg, spec.legacy);
+    LegacyRead out;
+    leg.get("single_precision", out.single);
+    out.h_coef = leg.num("h_coefficient");
+    if (out.h_coef) positive(*out.h_coef), spec.legacy.h_coefficient = out.h_coef->value;
+    return out;
+}
 
-    // [gravity]
-    const Section grav = top.sub("gravity");
-    grav.get("gx", p.gx);
-    grav.get("gz", p.gz);
-
-    // [surface_tension]
-    if (auto f = top.sub("surface_tension").num("sigma")) non_negative(*f), p.sigma = f->value;
-    if (auto f = top.sub("surface_tension").string("delta"))
-        p.st_delta = choose<SurfaceTensionDelta>(*f);
-
-    // [fluid]: equation of state
-    const Section fluid = top.sub("fluid");
-    if (auto f = fluid.num("rho0")) positive(*f), p.rho0 = f->value;
-    if (auto f = fluid.num("gamma")) positive(*f), p.gamma = f->value;
+// [fluid]: the equation of state, B from c0 or from coef and h_swl.
+void read_sound_speed(const Ctx& ctx, const Section& fluid, SimParams& p, bool single) {
     const auto c0 = fluid.num("c0");
     const auto coef = fluid.num("coef");
     const auto h_swl = fluid.num("h_swl");
@@ -1007,8 +867,10 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     if (!(std::isfinite(p.B) && p.B > 0))
         fail(c0 ? *c0 : *coef, "gives a Tait constant B that is not a finite number > 0 (B = " + num(p.B) + " Pa)",
              c0 ? "B = rho0 c0^2 / gamma finite and > 0" : "B = coef^2 rho0 |gz| h_swl / gamma finite and > 0");
+}
 
-    // [resolution]
+// [resolution]: dx, dz and h given one of three ways.
+void read_resolution(const Ctx& ctx, const Section& top, SimParams& p, LegacyRunInfo& info, const LegacyRead& leg) {
     const Section res = top.sub("resolution");
     const auto dx = res.required_num("dx", "the particle spacing in x [m]");
     positive(dx);
@@ -1031,18 +893,20 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
     if (h) positive(*h), p.h = h->value;
     if (h_coef) {
         positive(*h_coef);
-        if (legacy_h_coef)
-            fail(*legacy_h_coef, "the h coefficient is given twice",
+        if (leg.h_coef)
+            fail(*leg.h_coef, "the h coefficient is given twice",
                  "resolution.h_coefficient alone (legacy.h_coefficient only records it beside resolution.h)");
-        p.h = h_from_coefficient(h_coef->value, p.dx, p.dz, single);
+        p.h = h_from_coefficient(h_coef->value, p.dx, p.dz, leg.single);
         info.h_coefficient = h_coef->value;
     }
     if (h_over) positive(*h_over), p.h = h_over->value * p.dx;
     if (!(std::isfinite(p.h) && p.h > 0))  // h_over_dx = 1e300 with dx = 1, dx = 1e-200 (dx^2 = 0)
         fail(h ? *h : h_coef ? *h_coef : *h_over, "gives a smoothing length that is not a finite number > 0 (h = " +
                  num(p.h) + " m)", "h finite and > 0");
+}
 
-    // Viscosity: numerics.alpha, fluid.nu or fluid.mu (at most one).
+// Viscosity: numerics.alpha, fluid.nu or fluid.mu (at most one); needs h and c0.
+void read_viscosity(const Ctx& ctx, const Section& num_s, const Section& fluid, SimParams& p) {
     const auto alpha = num_s.num("alpha");
     const auto nu = fluid.num("nu");
     const auto mu = fluid.num("mu");
@@ -1072,28 +936,19 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
             fail(nu ? *nu : *mu, "gives a kinematic viscosity that is not finite (nu = " + num(p.visc_value) + ")",
                  "mu / rho0 finite");
     }
+}
 
-    // [domain]
+// [domain], and the surface-tension key that depends on its pair.
+void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
+    SimParams& p = spec.params;
     const Section dom = top.sub("domain");
-    const auto lx = dom.required_num("lx", "the box width [m]");
-    const auto lz = dom.required_num("lz", "the box height [m]");
-    positive(lx);
-    positive(lz);
-    p.lx = lx.value;
-    p.lz = lz.value;
-    dom.get("wall_left", spec.wall_left);
-    dom.get("wall_right", spec.wall_right);
-    dom.get("wall_bottom", spec.wall_bottom);
-    dom.get("wall_top", spec.wall_top);
+    read_members(dom, p);
+    read_members(dom, spec);
     if (auto f = dom.num("floor_inclination_deg")) {
         if (f->value != 0) fail(*f, "an inclined floor is not supported", "0");
         spec.floor_beta_deg = f->value;
     }
-    const Box box{p.lx, p.lz};
-    if (auto f = dom.string("geometry"))
-        p.geometry = choose<Geometry>(*f);
     const bool axi = p.geometry == Geometry::Axisymmetric;
-    dom.get("periodic_z", p.periodic_z);
     if (axi && spec.wall_left)
         throw InputError(ctx.where(dom.key_path("wall_left")),
                          "domain.geometry = \"axisymmetric\" has its symmetry axis at x = 0, not a wall",
@@ -1108,13 +963,14 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                          "domain.wall_bottom = false and domain.wall_top = false with periodic_z = true",
                          spec.wall_bottom ? "wall_bottom = true (the default)" : "wall_top = true");
     if (p.periodic_z) p.domain_box = true;  // the box [0, lx] x [0, lz]; z in [0, lz) is the period
+    const Param& pair_row = *find_param("domain.axis_pair");
     if (auto f = dom.string("axis_pair")) {
         if (!axi)
             throw InputError(ctx.where(dom.key_path("axis_pair")),
                              "domain.axis_pair chooses the pressure pair of the axisymmetric geometry",
                              "no domain.axis_pair, or domain.geometry = \"axisymmetric\"",
                              "domain.geometry = \"planar\" (the default)");
-        p.axis_pair = choose<AxisPair>(*f);
+        p.axis_pair = static_cast<AxisPair>(choose_from<std::int64_t>(*f, pair_row.choices));
         // the rings pair's lattice error at the axis is too large at h = 1.3 dx (the R/dx 10
         // sphere 0.91 of its Laplace pressure, ka 1.2 grows; cases/axisymmetric/README.md)
         if (p.axis_pair == AxisPair::Rings && p.h < 2.0 * p.dx * (1.0 - 1e-9))
@@ -1134,45 +990,28 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                              p.axis_pair != AxisPair::Rings
                                  ? "domain.axis_pair = \"" + to_string(p.axis_pair) + "\""
                                  : "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
-        p.rings_curvature = choose<RingsCurvature>(*f);
+        p.rings_curvature = static_cast<RingsCurvature>(
+            choose_from<std::int64_t>(*f, find_param("surface_tension.rings_curvature")->choices));
     }
+}
 
-    // [time]
-    const Section tim = top.sub("time");
-    if (auto f = tim.num("tmax")) positive(*f), p.tmax = f->value;
-    if (auto f = tim.num("dt")) positive(*f), p.dt = f->value;
-    tim.get("variable_dt", p.variable_dt);
-    if (auto f = tim.num("cfl")) {
-        if (!(f->value > 0 && f->value <= 1)) fail(*f, "out of range", "a number in (0, 1]");
-        p.cfl = f->value;
-    }
-    if (auto f = tim.num("out")) positive(*f), p.out = f->value;
-    if (auto f = tim.num("trec_ini")) non_negative(*f), p.trec_ini = f->value;
-
-    // [[obstacle]]
+// [[obstacle]], [[wall]] and [gate]: boundary particles in the box.
+void read_structures(const Section& top, CaseSpec& spec, const Box& box) {
     for (const Section& s : top.array_of_tables("obstacle")) {
         ObstacleSpec o;
-        if (auto f = s.string("shape"))
-            o.shape = choose_from<int>(*f, kObstacleShapes);
-        if (auto f = s.string("kind"))
-            o.kind = choose_from<int>(*f, kObstacleKinds);
-        if (auto f = s.integer("density")) at_least(*f, 1), o.density = to_int(*f);
+        read_members(s, o);
         o.r = read_rect(s, box, "obstacle");
-        if (auto f = s.num("beta_deg")) {
-            if (!(f->value > 0 && f->value < 180)) fail(*f, "out of range", "an angle in (0, 180) degrees");
-            o.beta_deg = f->value;
-            if (o.beta_deg != 90) {  // the inclined sides shift the top by height / tan(beta)
-                const double shift =
-                    (o.r.zmax - std::max(o.r.zmin, 0.0)) / std::tan(o.beta_deg * 3.14159265358979323846 / 180);
-                if (!(o.r.xmin + std::min(shift, 0.0) >= 0 && o.r.xmax + std::max(shift, 0.0) <= box.lx))
-                    fail(*f, "inclined sides reach outside the box (the top shifted by " + num(shift) + " m)",
-                         "an angle whose sides stay in 0 <= x <= domain.lx = " + num(box.lx));
-            }
+        if (auto f = s.num("beta_deg"); f && o.beta_deg != 90) {
+            // the inclined sides shift the top by height / tan(beta)
+            const double shift =
+                (o.r.zmax - std::max(o.r.zmin, 0.0)) / std::tan(o.beta_deg * 3.14159265358979323846 / 180);
+            if (!(o.r.xmin + std::min(shift, 0.0) >= 0 && o.r.xmax + std::max(shift, 0.0) <= box.lx))
+                fail(*f, "inclined sides reach outside the box (the top shifted by " + num(shift) + " m)",
+                     "an angle whose sides stay in 0 <= x <= domain.lx = " + num(box.lx));
         }
         spec.obstacles.push_back(o);
     }
 
-    // [[wall]]
     for (const Section& s : top.array_of_tables("wall")) {
         WallSpec w;
         const auto x = s.required_num("x", "the wall position [m]");
@@ -1180,14 +1019,13 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         inside(x, box.lx, "x", "wall");
         if (!(height.value > 0 && height.value <= box.lz))
             fail(height, "out of range", "0 < height <= domain.lz = " + num(box.lz));
-        if (p.boundary != BoundaryType::Dynamic)
+        if (spec.params.boundary != BoundaryType::Dynamic)
             fail(x, "a [[wall]] needs dynamic boundaries (as legacy \"Add wall\")",
                  "numerics.boundary = \"dynamic\"");
         w.x = x.value, w.height = height.value;
         spec.walls.push_back(w);
     }
 
-    // [gate]
     if (top.has("gate")) {
         const Section s = top.sub("gate");
         GateSpec g;
@@ -1199,103 +1037,92 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         inside(zmax, box.lz, "z", "gate");
         if (!(zmax.value >= zmin.value)) fail(zmax, "empty gate", "zmax >= zmin = " + num(zmin.value));
         g.x = x.value, g.zmin = zmin.value, g.zmax = zmax.value;
-        s.get("vx", g.vx);
-        s.get("vz", g.vz);
-        if (auto f = s.num("t_start")) non_negative(*f), g.t_start = f->value;
-        if (auto f = s.string("facing")) g.facing = choose_from<int>(*f, kGateFacings);
+        read_members(s, g);
         spec.gates.push_back(g);
     }
+}
 
-    // [nozzle] and [breakup]: a jet
-    if (top.has("nozzle")) {
-        const Section s = top.sub("nozzle");
-        NozzleSpec nz;
-        const auto x0 = s.required_num("x0", "the orifice centre x [m]");
-        const auto z0 = s.required_num("z0", "the orifice centre z [m]");
-        const auto d0 = s.required_num("d0", "the orifice width D0 [m]");
-        const auto u0 = s.required_num("u0", "the jet speed u0 [m/s]");
-        positive(d0);
-        if (!(u0.value > 0)) fail(u0, "the jet speed must be positive (the plug moves out of the nozzle)", "u0 > 0");
-        nz.x0 = x0.value, nz.z0 = z0.value, nz.d0 = d0.value, nz.u0 = u0.value;
-        double len_over_d0 = 15.0;
-        if (auto f = s.num("length_over_d0")) positive(*f), len_over_d0 = f->value;
-        nz.length_over_d0 = len_over_d0;
-        if (auto f = s.string("axis")) {
-            const auto dir = choose_from<std::pair<double, double>>(*f, kNozzleAxes);
-            nz.ex = dir.first, nz.ez = dir.second;
-        }
-        s.get("walls", nz.walls);
-        if (auto f = s.num("disturbance")) {
-            if (!(f->value >= 0 && f->value < 1))
-                fail(*f, "the disturbance is a relative amplitude of the plug speed", "0 <= disturbance < 1");
-            nz.disturbance = f->value;
-        }
-        if (auto f = s.num("disturbance_ka")) positive(*f), nz.disturbance_ka = f->value;
-        const bool axisymmetric = p.geometry == Geometry::Axisymmetric;
-        if (axisymmetric) {
-            // A round jet: the nozzle is a pipe around the symmetry axis x = 0.
-            if (nz.ex != 0.0)
-                throw InputError(s.string("axis")->where, "a round jet runs along the symmetry axis",
-                                 "axis = \"down\" or \"up\" with domain.geometry = \"axisymmetric\"",
-                                 nz.ex > 0 ? "\"right\"" : "\"left\"");
-            if (x0.value != 0.0)
-                fail(x0, "a round jet's orifice is centred on the symmetry axis", "x0 = 0 with domain.geometry = \"axisymmetric\"");
-        }
-        // The nozzle, its walls (half a spacing outside the fluid) and the orifice in the box.
-        const double across = 0.5 * nz.d0 + (nz.walls ? std::max(p.dx, p.dz) : 0.0);
-        const double back_x = nz.x0 - nz.ex * nz.length(), back_z = nz.z0 - nz.ez * nz.length();
-        const double xlo = axisymmetric ? 0.0 : std::min(nz.x0, back_x) - std::abs(nz.ez) * across;
-        const double xhi = std::max(nz.x0, back_x) + std::abs(nz.ez) * across;
-        const double zlo = std::min(nz.z0, back_z) - std::abs(nz.ex) * across;
-        const double zhi = std::max(nz.z0, back_z) + std::abs(nz.ex) * across;
-        const double tol = 1e-9 * std::max({box.lx, box.lz, 1.0});
-        if (xlo < -tol || xhi > box.lx + tol)
-            fail(x0, "nozzle outside the box",
-                 "the nozzle (from the orifice " + num(nz.length()) + " m back against the axis, " + num(2 * across) +
-                     " m wide with its walls) within x in [0, domain.lx = " + num(box.lx) + "]: x from " + num(xlo) +
-                     " to " + num(xhi));
-        if (zlo < -tol || zhi > box.lz + tol)
-            fail(z0, "nozzle outside the box",
-                 "the nozzle (from the orifice " + num(nz.length()) + " m back against the axis, " + num(2 * across) +
-                     " m wide with its walls) within z in [0, domain.lz = " + num(box.lz) + "]: z from " + num(zlo) +
-                     " to " + num(zhi));
-        // The breakup axis runs from the orifice along e to the box edge; it must stay in the
-        // box for a jet to be followed (at least 2 d0 of it).
-        const double room = nz.ex > 0 ? box.lx - nz.x0 : nz.ex < 0 ? nz.x0 : nz.ez > 0 ? box.lz - nz.z0 : nz.z0;
-        if (!(room >= 2 * nz.d0))
-            throw InputError(s.string("axis") ? s.string("axis")->where : x0.where,
-                 "the breakup axis leaves the domain at once",
-                 "at least 2 d0 = " + num(2 * nz.d0) + " m of axis from the orifice to the box edge along the jet",
-                 num(room) + " m");
-        spec.nozzle = nz;
-        p.drive_u = nz.u0;
-        p.drive_x0 = nz.x0, p.drive_z0 = nz.z0, p.drive_ex = nz.ex, p.drive_ez = nz.ez;
-        // Half a spacing beyond the outer fluid rows, so that every plug particle is driven
-        // and the walls (a spacing out) are not.
-        p.drive_half_width = 0.5 * nz.d0 + 0.25 * std::max(p.dx, p.dz);
-        p.drive_eps = nz.disturbance;
-        p.drive_omega = nz.disturbance > 0 ? nz.disturbance_omega() : 0.0;
-        p.domain_box = true;
-
-        BreakupSpec bk;
-        const Section b = top.sub("breakup");
-        if (auto f = b.num("link_over_h")) positive(*f), bk.link_over_h = f->value;
-        if (auto f = b.num("band_over_d0")) positive(*f), bk.band_over_d0 = f->value;
-        if (auto f = b.num("check_every")) non_negative(*f), bk.check_every = f->value;
-        if (auto f = b.num("stop_after")) non_negative(*f), bk.stop_after = f->value;
-        if (auto f = b.num("remove_drops_below_h")) non_negative(*f), bk.remove_drops_below_h = f->value;
-        spec.breakup = bk;
-    } else if (top.has("breakup")) {
-        throw InputError(ctx.where("breakup"), "[breakup] needs a jet",
-                         "a [nozzle] table (the breakup axis starts at its orifice)", "no [nozzle]");
+// [nozzle] and [breakup]: a jet.
+void read_jet(const Ctx& ctx, const Section& top, CaseSpec& spec, const Box& box) {
+    SimParams& p = spec.params;
+    if (!top.has("nozzle")) {
+        if (top.has("breakup"))
+            throw InputError(ctx.where("breakup"), "[breakup] needs a jet",
+                             "a [nozzle] table (the breakup axis starts at its orifice)", "no [nozzle]");
+        return;
     }
+    const Section s = top.sub("nozzle");
+    NozzleSpec nz;
+    const auto x0 = s.required_num("x0", "the orifice centre x [m]");
+    const auto z0 = s.required_num("z0", "the orifice centre z [m]");
+    const auto d0 = s.required_num("d0", "the orifice width D0 [m]");
+    const auto u0 = s.required_num("u0", "the jet speed u0 [m/s]");
+    positive(d0);
+    if (!(u0.value > 0)) fail(u0, "the jet speed must be positive (the plug moves out of the nozzle)", "u0 > 0");
+    nz.x0 = x0.value, nz.z0 = z0.value, nz.d0 = d0.value, nz.u0 = u0.value;
+    read_members(s, nz);
+    if (auto f = s.string("axis")) {
+        const auto dir = kNozzleDirections[choose_from<std::int64_t>(*f, find_param("nozzle.axis")->choices)];
+        nz.ex = dir.first, nz.ez = dir.second;
+    }
+    const bool axisymmetric = p.geometry == Geometry::Axisymmetric;
+    if (axisymmetric) {
+        // A round jet: the nozzle is a pipe around the symmetry axis x = 0.
+        if (nz.ex != 0.0)
+            throw InputError(s.string("axis")->where, "a round jet runs along the symmetry axis",
+                             "axis = \"down\" or \"up\" with domain.geometry = \"axisymmetric\"",
+                             nz.ex > 0 ? "\"right\"" : "\"left\"");
+        if (x0.value != 0.0)
+            fail(x0, "a round jet's orifice is centred on the symmetry axis", "x0 = 0 with domain.geometry = \"axisymmetric\"");
+    }
+    // The nozzle, its walls (half a spacing outside the fluid) and the orifice in the box.
+    const double across = 0.5 * nz.d0 + (nz.walls ? std::max(p.dx, p.dz) : 0.0);
+    const double back_x = nz.x0 - nz.ex * nz.length(), back_z = nz.z0 - nz.ez * nz.length();
+    const double xlo = axisymmetric ? 0.0 : std::min(nz.x0, back_x) - std::abs(nz.ez) * across;
+    const double xhi = std::max(nz.x0, back_x) + std::abs(nz.ez) * across;
+    const double zlo = std::min(nz.z0, back_z) - std::abs(nz.ex) * across;
+    const double zhi = std::max(nz.z0, back_z) + std::abs(nz.ex) * across;
+    const double tol = 1e-9 * std::max({box.lx, box.lz, 1.0});
+    if (xlo < -tol || xhi > box.lx + tol)
+        fail(x0, "nozzle outside the box",
+             "the nozzle (from the orifice " + num(nz.length()) + " m back against the axis, " + num(2 * across) +
+                 " m wide with its walls) within x in [0, domain.lx = " + num(box.lx) + "]: x from " + num(xlo) +
+                 " to " + num(xhi));
+    if (zlo < -tol || zhi > box.lz + tol)
+        fail(z0, "nozzle outside the box",
+             "the nozzle (from the orifice " + num(nz.length()) + " m back against the axis, " + num(2 * across) +
+                 " m wide with its walls) within z in [0, domain.lz = " + num(box.lz) + "]: z from " + num(zlo) +
+                 " to " + num(zhi));
+    // The breakup axis runs from the orifice along e to the box edge; it must stay in the
+    // box for a jet to be followed (at least 2 d0 of it).
+    const double room = nz.ex > 0 ? box.lx - nz.x0 : nz.ex < 0 ? nz.x0 : nz.ez > 0 ? box.lz - nz.z0 : nz.z0;
+    if (!(room >= 2 * nz.d0))
+        throw InputError(s.string("axis") ? s.string("axis")->where : x0.where,
+             "the breakup axis leaves the domain at once",
+             "at least 2 d0 = " + num(2 * nz.d0) + " m of axis from the orifice to the box edge along the jet",
+             num(room) + " m");
+    spec.nozzle = nz;
+    p.drive_u = nz.u0;
+    p.drive_x0 = nz.x0, p.drive_z0 = nz.z0, p.drive_ex = nz.ex, p.drive_ez = nz.ez;
+    // Half a spacing beyond the outer fluid rows, so that every plug particle is driven
+    // and the walls (a spacing out) are not.
+    p.drive_half_width = 0.5 * nz.d0 + 0.25 * std::max(p.dx, p.dz);
+    p.drive_eps = nz.disturbance;
+    p.drive_omega = nz.disturbance > 0 ? nz.disturbance_omega() : 0.0;
+    p.domain_box = true;
 
-    // Fluid regions
+    BreakupSpec bk;
+    read_members(top.sub("breakup"), bk);
+    spec.breakup = bk;
+}
+
+// [[fluid.block]], [[fluid.disc]], [[fluid.cylinder]], [[fluid.square]]
+void read_fluid_shapes(const Ctx& ctx, const Section& fluid, CaseSpec& spec, const Box& box) {
+    const bool axi = spec.params.geometry == Geometry::Axisymmetric;
     for (const Section& s : fluid.array_of_tables("block")) {
         FluidBlock b;
         b.r = read_rect(s, box, "fluid region");
-        s.get("u0", b.u0);
-        s.get("w0", b.w0);
+        read_members(s, b);
         spec.fluid_blocks.push_back(b);
     }
     for (const Section& s : fluid.array_of_tables("disc")) {
@@ -1314,14 +1141,9 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         const Box dbox = sphere ? Box{2 * box.lx, box.lz} : box;
         centred_inside(sphere ? Field<double>{box.lx, xc.where} : xc, zc, r, r.value, dbox, "fluid disc");
         d.xc = xc.value, d.zc = zc.value, d.radius = r.value;
-        s.get("u0", d.u0);
-        s.get("w0", d.w0);
-        if (auto f = s.string("lattice"))
-            d.rings = choose_from<bool>(*f, kDiscLattices);
-        if (auto f = s.num("elongation")) {
-            if (!(f->value > -0.5 && f->value < 0.5)) fail(*f, "out of range", "a number in (-0.5, 0.5)");
-            d.elongation = f->value;
-            const double a = r.value * (1 + std::abs(f->value));
+        read_members(s, d);
+        if (d.elongation != 0.0) {
+            const double a = r.value * (1 + std::abs(d.elongation));
             centred_inside(sphere ? Field<double>{box.lx, xc.where} : xc, zc, r, a, dbox, "fluid disc (stretched)");
         }
         spec.fluid_discs.push_back(d);
@@ -1339,12 +1161,8 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         if (auto f = s.num("zmin")) inside(*f, box.lz, "z", "fluid cylinder"), c.zmin = f->value;
         if (auto f = s.num("zmax")) inside(*f, box.lz, "z", "fluid cylinder"), c.zmax = f->value;
         if (!(c.zmax > c.zmin)) fail(r, "empty cylinder", "zmax > zmin = " + num(c.zmin));
-        if (auto f = s.num("eps")) {
-            if (!(f->value > -0.5 && f->value < 0.5)) fail(*f, "out of range", "a number in (-0.5, 0.5)");
-            c.eps = f->value;
-        }
-        if (auto f = s.num("wavelength")) positive(*f), c.wavelength = f->value;
-        else if (c.eps != 0.0)
+        read_members(s, c);
+        if (!s.has("wavelength") && c.eps != 0.0)
             throw InputError(ctx.where(s.key_path("wavelength")), "missing required key",
                              "fluid.cylinder.wavelength [m] with eps != 0", "nothing");
         if (!(c.radius * (1 + std::abs(c.eps)) <= box.lx))
@@ -1359,10 +1177,36 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
         positive(side);
         centred_inside(xc, zc, side, side.value / 2, box, "fluid square");
         q.xc = xc.value, q.zc = zc.value, q.side = side.value;
-        s.get("u0", q.u0);
-        s.get("w0", q.w0);
+        read_members(s, q);
         spec.fluid_squares.push_back(q);
     }
+}
+
+CaseSpec build(const Ctx& ctx, const toml::table& root) {
+    CaseSpec spec;
+    spec.source = ctx.file;
+    SimParams& p = spec.params;
+    const Section top(ctx, &root, "", "");
+
+    if (auto v = top.integer("format_version"); v && v->value != 1)
+        fail(*v, "unsupported format version", "1");
+
+    const LegacyRead leg = read_legacy(top, spec);
+    const Section num_s = top.sub("numerics");
+    read_members(num_s, p);  // everything but the viscosity value, which needs h and c0
+    read_members(top.sub("gravity"), p);
+    read_members(top.sub("surface_tension"), p);
+    const Section fluid = top.sub("fluid");
+    read_members(fluid, p);
+    read_sound_speed(ctx, fluid, p, leg.single);
+    read_resolution(ctx, top, p, spec.legacy, leg);
+    read_viscosity(ctx, num_s, fluid, p);
+    read_domain(ctx, top, spec);
+    read_members(top.sub("time"), p);
+    const Box box{p.lx, p.lz};
+    read_structures(top, spec, box);
+    read_jet(ctx, top, spec, box);
+    read_fluid_shapes(ctx, fluid, spec, box);
     if (spec.legacy_fill && p.h_swl <= 0)
         throw InputError(ctx.where(fluid.key_path("h_swl")), "missing required key",
                          "fluid.coef and fluid.h_swl with legacy.fill = true (the legacy fill stops at h_swl)",
@@ -1373,35 +1217,12 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
                          "at least one [[fluid.block]], [[fluid.disc]], [[fluid.square]] or [[fluid.cylinder]], or a [nozzle]",
                          "none");
 
-    // [output]
     const Section out = top.sub("output");
-    OutputSpec& o = spec.output;
-    if (auto f = out.string("format"))
-        o.format = choose<OutputFormat>(*f);
-    if (auto f = out.integer("checkpoint_every_steps"))
-        at_least(*f, 0), o.checkpoint_every_steps = static_cast<long>(f->value);
-    if (auto f = out.num("checkpoint_every_minutes")) non_negative(*f), o.checkpoint_every_minutes = f->value;
-    out.get("remove_out_of_domain", o.remove_out_of_domain);
-    if (auto f = out.num("rho_min_factor")) {
-        if (!(f->value >= 0 && f->value < 1)) fail(*f, "out of range", "a number in [0, 1)");
-        o.rho_min_factor = f->value;
-    }
-    if (auto f = out.num("rho_max_factor")) {
-        if (!(f->value > 1)) fail(*f, "out of range", "a number > 1");
-        o.rho_max_factor = f->value;
-    }
-    if (auto f = out.num("dt_min")) non_negative(*f), o.dt_min = f->value;
-    if (auto f = out.integer("revolution_sectors")) {
-        if (f->value < 0 || f->value > kMaxRevolutionSectors)
-            fail(*f, "out of range",
-                 "an integer in [0, " + std::to_string(kMaxRevolutionSectors) + "] (0 = off)");
-        if (!axi)
-            fail(*f, "only an axisymmetric case has rings to revolve about the axis",
-                 "no output.revolution_sectors with domain.geometry = \"planar\" (the default), "
-                 "or domain.geometry = \"axisymmetric\"");
-        o.revolution_sectors = static_cast<int>(f->value);
-    }
-
+    read_members(out, spec.output);
+    if (auto f = out.integer("revolution_sectors"); f && p.geometry != Geometry::Axisymmetric)
+        fail(*f, "only an axisymmetric case has rings to revolve about the axis",
+             "no output.revolution_sectors with domain.geometry = \"planar\" (the default), "
+             "or domain.geometry = \"axisymmetric\"");
     return spec;
 }
 
@@ -1409,7 +1230,8 @@ CaseSpec build(const Ctx& ctx, const toml::table& root) {
 
 std::vector<std::string> modern_case_keys() {
     std::vector<std::string> out;
-    for (const auto& k : kKeys) out.emplace_back(k.path);
+    for (const auto& k : case_params())
+        if (!k.key.empty()) out.emplace_back(k.key);
     return out;
 }
 
@@ -1505,15 +1327,71 @@ std::string sanitize_comment(std::string s) {
     return s;
 }
 
-}  // namespace
+// A row's comment in the echo: its echo text, else its choices or its doc; "{choices}" is
+// replaced by the names.
+std::string comment_of(const Param& r) {
+    std::string c(r.echo.empty() ? (r.choices.empty() ? r.doc : "{choices}") : r.echo);
+    if (c == "-") return "";
+    if (const auto at = c.find("{choices}"); at != std::string::npos) c.replace(at, 9, choice_list(r.choices));
+    return c;
+}
 
-std::string write_modern_case(const CaseSpec& spec) {
+// A member's value as the case file writes it.
+std::string value_of(const Param& r, const void* owner) {
+    const Member& m = r.member;
+    if (m.store == Member::Store::Float) return num(m.get_f(owner));
+    const std::int64_t v = m.get_i(owner);
+    if (r.type == KeyType::String) return str(choice_name(r.choices, v));
+    if (r.type == KeyType::Bool) return boolean(v != 0);
+    return std::to_string(v);
+}
+
+// The structs a section's rows live in.
+struct Owner {
+    const void* tag;
+    const void* object;
+};
+
+// The lines of one section: the rows whose member lives in one of owners, in the table's
+// order; a row echoed by hand gets the line custom(row) makes ("" for none).
+template <class Custom>
+std::string echo_section(std::string_view section, std::initializer_list<Owner> owners, Custom&& custom) {
+    std::string s;
+    for (const Param& r : case_params()) {
+        if (r.key.empty() || section_of(r.key) != section) continue;
+        if (r.hand & kHandEcho) {
+            s += custom(r);
+            continue;
+        }
+        for (const Owner& o : owners)
+            if (o.tag == r.member.owner) s += line(std::string(leaf_of(r.key)), value_of(r, o.object), comment_of(r));
+    }
+    return s;
+}
+
+template <class S>
+Owner owner(const S& s) {
+    return {&owner_tag<S>, &s};
+}
+
+// A section whose every row is echoed from one struct.
+template <class S>
+std::string echo_section(std::string_view section, const S& s) {
+    return echo_section(section, {owner(s)}, [](const Param&) { return std::string(); });
+}
+
+// The flags of the derived numbers of a legacy case, made in single precision: written
+// so that they read back to the bit.
+struct EchoFlags {
+    bool single = false;
+    bool h_by_coefficient = false;
+    bool legacy_section = false;
+};
+
+EchoFlags echo_flags(const CaseSpec& spec) {
     const SimParams& p = spec.params;
-    const double c0 = p.c0();
     const LegacyRunInfo& info = spec.legacy;
     const LegacyRunInfo info_default;
-    // Derived numbers made in single precision (a legacy case): say so, so that they read
-    // back to the bit.
     const double g = std::abs(p.gz);
     const bool b_single = p.h_swl > 0 &&
                           tait_B_from_coef(p.coef, p.rho0, g, p.h_swl, p.gamma) != p.B &&
@@ -1521,219 +1399,117 @@ std::string write_modern_case(const CaseSpec& spec) {
     const bool h_single = info.h_coefficient > 0 &&
                           h_from_coefficient(info.h_coefficient, p.dx, p.dz, false) != p.h &&
                           h_from_coefficient(info.h_coefficient, p.dx, p.dz, true) == p.h;
-    const bool single = b_single || h_single;
-    const bool h_by_coefficient =
-        info.h_coefficient > 0 && h_from_coefficient(info.h_coefficient, p.dx, p.dz, single) == p.h;
-    const bool legacy_section =
-        spec.legacy_fill || single || (info.h_coefficient > 0 && !h_by_coefficient) ||
+    EchoFlags e;
+    e.single = b_single || h_single;
+    e.h_by_coefficient =
+        info.h_coefficient > 0 && h_from_coefficient(info.h_coefficient, p.dx, p.dz, e.single) == p.h;
+    e.legacy_section =
+        spec.legacy_fill || e.single || (info.h_coefficient > 0 && !e.h_by_coefficient) ||
         info.detail_out != info_default.detail_out || info.detail_start != info_default.detail_start ||
         info.detail_end != info_default.detail_end || info.vorticity != info_default.vorticity ||
         info.compiler != info_default.compiler || info.xz_precision != info_default.xz_precision;
+    return e;
+}
+
+// The lines of the keys the writer makes by hand (kHandEcho): derived numbers and keys shown
+// only in some cases.
+std::string custom_line(const Param& r, const CaseSpec& spec, const EchoFlags& e) {
+    const SimParams& p = spec.params;
+    const std::string key(leaf_of(r.key));
+    const std::string_view k = r.key;
+    const double c0 = p.c0();
+    if (k == "numerics.alpha" && p.viscosity == ViscosityModel::Artificial)
+        return line(key, num(p.visc_value),
+                    "artificial viscosity; same as nu = alpha h c0 / 8 = " + num(p.visc_value * p.h * c0 / 8.0) +
+                        " m^2/s");
+    if (k == "fluid.c0" && p.h_swl <= 0)
+        return line(key, num(c0_for_B(p)), "sound speed at rest [m/s]; B = rho0 c0^2 / gamma = " + num(p.B) + " Pa");
+    if (k == "fluid.coef" && p.h_swl > 0)
+        return line(key, num(p.coef), "c0 = coef sqrt(|gz| h_swl) = " + num(c0) + " m/s");
+    if (k == "fluid.h_swl" && p.h_swl > 0)
+        return line(key, num(p.h_swl), "still-water depth [m]; B = " + num(p.B) + " Pa");
+    if (k == "fluid.nu" && p.viscosity == ViscosityModel::Laminar)
+        return line(key, num(p.visc_value), "kinematic viscosity [m^2/s] (mu = " + num(p.visc_value * p.rho0) + " Pa s)");
+    if (k == "surface_tension.rings_curvature" && p.axis_pair == AxisPair::Rings &&
+        p.st_delta == SurfaceTensionDelta::PressureConsistent)
+        return line(key, value_of(r, &p), comment_of(r));
+    if (k == "domain.axis_pair" && p.geometry == Geometry::Axisymmetric) return line(key, value_of(r, &p), comment_of(r));
+    if (k == "resolution.h") {
+        const double diag = std::sqrt(p.dx * p.dx + p.dz * p.dz);
+        if (e.h_by_coefficient)
+            return line("h_coefficient", num(spec.legacy.h_coefficient),
+                        "h = coefficient sqrt(dx^2 + dz^2) = " + num(p.h) + " m = " + num(p.h / p.dx) + " dx");
+        return line(key, num(p.h), "smoothing length [m] = " + num(p.h / p.dx) + " dx = " + num(p.h / diag) +
+                                       " sqrt(dx^2 + dz^2)");
+    }
+    if (k == "legacy.single_precision") return line(key, boolean(e.single), std::string(r.doc));
+    if (k == "legacy.h_coefficient" && spec.legacy.h_coefficient > 0 && !e.h_by_coefficient)
+        return line(key, num(spec.legacy.h_coefficient), std::string(r.doc));
+    if (k == "output.revolution_sectors" && spec.output.revolution_sectors > 0)
+        return line(key, value_of(r, &spec.output), comment_of(r));
+    if (spec.nozzle && k == "nozzle.axis") {
+        const NozzleSpec& nz = *spec.nozzle;
+        std::int64_t axis = 0;
+        for (std::size_t i = 0; i < std::size(kNozzleDirections); ++i)
+            if (kNozzleDirections[i] == std::pair{nz.ex, nz.ez}) axis = static_cast<std::int64_t>(i);
+        return line(key, str(choice_name(r.choices, axis)), comment_of(r));
+    }
+    if (spec.nozzle && spec.nozzle->disturbance > 0 &&
+        (k == "nozzle.disturbance" || k == "nozzle.disturbance_ka"))
+        return line(key, value_of(r, &*spec.nozzle), comment_of(r));
+    if (spec.breakup && ((k == "breakup.stop_after" && spec.breakup->stop_after >= 0) ||
+                         (k == "breakup.remove_drops_below_h" && spec.breakup->remove_drops_below_h > 0)))
+        return line(key, value_of(r, &*spec.breakup), comment_of(r));
+    return "";
+}
+
+}  // namespace
+
+std::string write_modern_case(const CaseSpec& spec) {
+    const SimParams& p = spec.params;
+    const EchoFlags e = echo_flags(spec);
+    const auto custom = [&](const Param& r) { return custom_line(r, spec, e); };
     std::string s;
     s += "# sphjet case file (modern format, reference: cases/CASE_FORMAT.md).\n";
     if (!spec.source.empty()) s += "# Written from: " + sanitize_comment(spec.source) + "\n";
     s += "# Units: SI (m, s, kg). Coordinates: x horizontal, z vertical, box [0, lx] x [0, lz].\n\n";
     s += line("format_version", "1", "");
 
-    s += "\n[numerics]\n";
-    s += line("kernel", str(to_string(p.kernel)), choices<KernelType>());
-    s += line("integrator", str(to_string(p.integrator)), choices<Integrator>());
-    s += line("density_filter", str(to_string(p.density_filter)), choices<DensityFilter>());
-    s += line("filter_period", std::to_string(p.filter_period), "steps between density filters");
-    s += line("viscosity", str(to_string(p.viscosity)), choices<ViscosityModel>());
-    if (p.viscosity == ViscosityModel::Artificial) {
-        const double nu_eq = p.visc_value * p.h * c0 / 8.0;
-        s += line("alpha", num(p.visc_value),
-                  "artificial viscosity; same as nu = alpha h c0 / 8 = " + num(nu_eq) + " m^2/s");
-    }
-    s += line("xsph_eps", num(p.xsph_eps), "XSPH velocity correction, 0 = off");
-    s += line("tensile_correction", str(name_in(kTensileNames, p.tensile_correction)),
-              "auto (legacy: on for gaussian, cubic_spline) | on | off");
-    s += line("boundary", str(to_string(p.boundary)), choices<BoundaryType>() + " (repulsive: Monaghan-Kos/Rogers)");
-    s += line("dbc_period", std::to_string(p.dbc_period), "steps between dynamic-boundary density updates");
-    s += line("wall_viscosity", num(p.wall_viscosity), "m^2/s, repulsive walls only");
-    s += line("lattice", str(to_string(p.lattice)), choices<Lattice>());
-
-    s += "\n[fluid]\n";
-    s += line("rho0", num(p.rho0), "reference density [kg/m^3]");
-    s += line("gamma", num(p.gamma), "Tait exponent");
-    if (p.h_swl > 0) {
-        s += line("coef", num(p.coef), "c0 = coef sqrt(|gz| h_swl) = " + num(c0) + " m/s");
-        s += line("h_swl", num(p.h_swl), "still-water depth [m]; B = " + num(p.B) + " Pa");
-    } else {
-        s += line("c0", num(c0_for_B(p)), "sound speed at rest [m/s]; B = rho0 c0^2 / gamma = " + num(p.B) + " Pa");
-    }
-    if (p.viscosity == ViscosityModel::Laminar)
-        s += line("nu", num(p.visc_value), "kinematic viscosity [m^2/s] (mu = " + num(p.visc_value * p.rho0) + " Pa s)");
-    for (const auto& b : spec.fluid_blocks) {
-        s += "\n[[fluid.block]]                  # rectangle filled on the lattice\n";
-        s += line("xmin", num(b.r.xmin), "m");
-        s += line("xmax", num(b.r.xmax), "m");
-        s += line("zmin", num(b.r.zmin), "m");
-        s += line("zmax", num(b.r.zmax), "m");
-        s += line("u0", num(b.u0), "initial velocity [m/s]");
-        s += line("w0", num(b.w0), "m/s");
-    }
-    for (const auto& d : spec.fluid_discs) {
-        s += "\n[[fluid.disc]]\n";
-        s += line("xc", num(d.xc), "centre [m]");
-        s += line("zc", num(d.zc), "m");
-        s += line("radius", num(d.radius), "m");
-        s += line("lattice", str(name_in(kDiscLattices, d.rings)),
-                  "case (numerics.lattice points inside) | rings (concentric rings, smooth edge)");
-        s += line("elongation", num(d.elongation),
-                  "e: stretched to semi-axes R(1+e) (x), R/(1+e) (z), area kept; 0 = round");
-        s += line("u0", num(d.u0), "initial velocity [m/s]");
-        s += line("w0", num(d.w0), "m/s");
-    }
+    s += "\n[numerics]\n" + echo_section("numerics", {owner(p)}, custom);
+    s += "\n[fluid]\n" + echo_section("fluid", {owner(p)}, custom);
+    for (const auto& b : spec.fluid_blocks)
+        s += "\n[[fluid.block]]                  # rectangle filled on the lattice\n" +
+             echo_section("fluid.block[]", b);
+    for (const auto& d : spec.fluid_discs) s += "\n[[fluid.disc]]\n" + echo_section("fluid.disc[]", d);
     for (const auto& c : spec.fluid_cylinders) {
         s += "\n[[fluid.cylinder]]               # axisymmetric: r(z) = a (1 + eps cos(2 pi (z - zmin) / wavelength))\n";
-        s += line("radius", num(c.radius), "a [m]");
-        s += line("eps", num(c.eps), "relative amplitude of the perturbation");
-        if (c.wavelength > 0) s += line("wavelength", num(c.wavelength), "m");
-        s += line("zmin", num(c.zmin), "m");
-        s += line("zmax", num(c.zmax), "m");
+        s += echo_section("fluid.cylinder[]", {owner(c)}, [&c](const Param& r) {
+            return c.wavelength > 0 ? line(std::string(leaf_of(r.key)), num(c.wavelength), comment_of(r)) : "";
+        });
     }
-    for (const auto& q : spec.fluid_squares) {
-        s += "\n[[fluid.square]]\n";
-        s += line("xc", num(q.xc), "centre [m]");
-        s += line("zc", num(q.zc), "m");
-        s += line("side", num(q.side), "m");
-        s += line("u0", num(q.u0), "initial velocity [m/s]");
-        s += line("w0", num(q.w0), "m/s");
-    }
-
-    s += "\n[surface_tension]\n";
-    s += line("sigma", num(p.sigma), "N/m, CSF (Morris 2000); 0 = off");
-    s += line("delta", str(to_string(p.st_delta)),
-              choices<SurfaceTensionDelta>() +
-                  " (pressure_consistent: free surface, right Laplace jump; colour_gradient: paper "
-                  "eq 24 as printed, about 0.13 of sigma at a free surface)");
-    if (p.axis_pair == AxisPair::Rings && p.st_delta == SurfaceTensionDelta::PressureConsistent)
-        s += line("rings_curvature", str(to_string(p.rings_curvature)),
-                  choices<RingsCurvature>() +
-                      " (neighbour_mean: holds a drop's pole; own: longer round jets, pole lost)");
-
-    s += "\n[gravity]\n";
-    s += line("gx", num(p.gx), "m/s^2");
-    s += line("gz", num(p.gz), "m/s^2");
-
-    s += "\n[domain]\n";
-    s += line("lx", num(p.lx), "box width [m]");
-    s += line("lz", num(p.lz), "box height [m]");
-    s += line("wall_left", boolean(spec.wall_left), "");
-    s += line("wall_right", boolean(spec.wall_right), "");
-    s += line("wall_bottom", boolean(spec.wall_bottom), "");
-    s += line("wall_top", boolean(spec.wall_top), "");
-    s += line("floor_inclination_deg", num(spec.floor_beta_deg), "only 0 is supported");
-    s += line("geometry", str(to_string(p.geometry)), choices<Geometry>() + " (axisymmetric: x = r >= 0, axis x = 0)");
-    s += line("periodic_z", boolean(p.periodic_z), "periodic in z with period lz");
-    if (p.geometry == Geometry::Axisymmetric)
-        s += line("axis_pair", str(to_string(p.axis_pair)), choices<AxisPair>() + " (cases/axisymmetric/README.md)");
-
-    s += "\n[resolution]\n";
-    s += line("dx", num(p.dx), "particle spacing [m]");
-    s += line("dz", num(p.dz), "m");
-    const double diag = std::sqrt(p.dx * p.dx + p.dz * p.dz);
-    if (h_by_coefficient)
-        s += line("h_coefficient", num(info.h_coefficient),
-                  "h = coefficient sqrt(dx^2 + dz^2) = " + num(p.h) + " m = " + num(p.h / p.dx) + " dx");
-    else
-        s += line("h", num(p.h), "smoothing length [m] = " + num(p.h / p.dx) + " dx = " +
-                                     num(p.h / diag) + " sqrt(dx^2 + dz^2)");
-
-    s += "\n[time]\n";
-    s += line("tmax", num(p.tmax), "end time [s]");
-    s += line("dt", num(p.dt), "initial (or fixed) step [s]");
-    s += line("variable_dt", boolean(p.variable_dt), "");
-    s += line("cfl", num(p.cfl), "Courant number");
-    s += line("out", num(p.out), "output interval [s]");
-    s += line("trec_ini", num(p.trec_ini), "time of the first output [s]");
-
-    for (const auto& o : spec.obstacles) {
-        s += "\n[[obstacle]]\n";
-        s += line("shape", str(name_in(kObstacleShapes, o.shape)), "");
-        s += line("kind", str(name_in(kObstacleKinds, o.kind)), choices_in(kObstacleKinds) + " (walls: outline only)");
-        s += line("density", std::to_string(o.density), "boundary points every dx / density");
-        s += line("xmin", num(o.r.xmin), "m");
-        s += line("xmax", num(o.r.xmax), "m");
-        s += line("zmin", num(o.r.zmin), "m");
-        s += line("zmax", num(o.r.zmax), "m");
-        s += line("beta_deg", num(o.beta_deg), "inclination of the side walls");
-    }
-
-    for (const auto& g : spec.gates) {
-        s += "\n[gate]                          # legacy \"Add gate\": a column of moving boundary particles\n";
-        s += line("x", num(g.x), "position [m]");
-        s += line("zmin", num(g.zmin), "bottom [m]");
-        s += line("zmax", num(g.zmax), "top [m]");
-        s += line("vx", num(g.vx), "velocity from t_start [m/s]");
-        s += line("vz", num(g.vz), "m/s; each particle stops at the top of the initial particles + 0.1 h");
-        s += line("t_start", num(g.t_start), "s");
-        s += line("facing", str(name_in(kGateFacings, g.facing)),
-                  "side of the fluid (repulsive walls): " + choices_in(kGateFacings));
-    }
-
-    if (spec.nozzle) {
-        const NozzleSpec& nz = *spec.nozzle;
-        s += "\n[nozzle]                        # a driven nozzle: the fluid in it moves out at u0 as a plug\n";
-        s += line("x0", num(nz.x0), "orifice centre [m]");
-        s += line("z0", num(nz.z0), "m");
-        s += line("axis", str(name_in(kNozzleAxes, std::pair{nz.ex, nz.ez})),
-                  "jet direction: " + choices_in(kNozzleAxes));
-        s += line("d0", num(nz.d0), "orifice width D0 [m]");
-        s += line("length_over_d0", num(nz.length_over_d0), "nozzle length upstream of the orifice / D0");
-        s += line("u0", num(nz.u0), "jet speed [m/s]");
-        s += line("walls", boolean(nz.walls), "boundary lines along the nozzle sides");
-        if (nz.disturbance > 0) {
-            s += line("disturbance", num(nz.disturbance), "plug speed u0 (1 + disturbance sin(omega t))");
-            s += line("disturbance_ka", num(nz.disturbance_ka), "omega = u0 ka / (d0 / 2)");
-        }
-    }
-    if (spec.breakup) {
-        const BreakupSpec& b = *spec.breakup;
-        s += "\n[breakup]                       # breakup detection while the run goes\n";
-        s += line("link_over_h", num(b.link_over_h), "broken where two particles along the axis are more than this x h apart");
-        s += line("band_over_d0", num(b.band_over_d0), "particles within this x D0 of the axis count");
-        s += line("check_every", num(b.check_every), "s between checks; 0 = every output");
-        if (b.stop_after >= 0) s += line("stop_after", num(b.stop_after), "s after the first breakup the run stops");
-        if (b.remove_drops_below_h > 0)
-            s += line("remove_drops_below_h", num(b.remove_drops_below_h),
-                      "drops with d_eq below this x h are removed at the checks");
-    }
-
-    for (const auto& w : spec.walls) {
-        s += "\n[[wall]]                        # legacy \"Add wall\": two layers of boundary particles\n";
-        s += line("x", num(w.x), "position [m]");
-        s += line("height", num(w.height), "from the floor [m]");
-    }
-
-    if (legacy_section) {
-        s += "\n[legacy]                        # carried over from a legacy SPHysics case file\n";
-        s += line("fill", boolean(spec.legacy_fill), "fill blocks as SPHYSICSgen_2D (from the floor, up to h_swl)");
-        s += line("single_precision", boolean(single), "derive B and h in single precision as SPHYSICSgen_2D");
-        if (info.h_coefficient > 0 && !h_by_coefficient)
-            s += line("h_coefficient", num(info.h_coefficient), "recorded only; resolution.h rules");
-        s += line("detail_out", num(info.detail_out), "detailed-recording interval [s] (INDAT only)");
-        s += line("detail_start", num(info.detail_start), "s");
-        s += line("detail_end", num(info.detail_end), "s");
-        s += line("vorticity", boolean(info.vorticity != 0), "vorticity printing (INDAT only)");
-        s += line("compiler", std::to_string(info.compiler), "1 gfortran, 2 ifort, 3 win_ifort, 4 FTN95 (INDAT only)");
-        s += line("xz_precision", str(name_in(kPrecisionNames, info.xz_precision)), "legacy solver's x/z precision");
-    }
-
-    s += "\n[output]\n";
-    s += line("format", str(to_string(spec.output.format)), choices<OutputFormat>());
-    s += line("checkpoint_every_steps", std::to_string(spec.output.checkpoint_every_steps), "0 = off");
-    s += line("checkpoint_every_minutes", num(spec.output.checkpoint_every_minutes), "wall-clock minutes, 0 = off");
-    s += line("remove_out_of_domain", boolean(spec.output.remove_out_of_domain),
-              "false = stop when a particle leaves");
-    s += line("rho_min_factor", num(spec.output.rho_min_factor), "stop if rho < factor rho0");
-    s += line("rho_max_factor", num(spec.output.rho_max_factor), "stop if rho > factor rho0");
-    s += line("dt_min", num(spec.output.dt_min), "stop if dt falls below [s]");
-    if (spec.output.revolution_sectors > 0)
-        s += line("revolution_sectors", std::to_string(spec.output.revolution_sectors),
-                  "HDF5 snapshots also hold the rings revolved into this many copies");
+    for (const auto& q : spec.fluid_squares) s += "\n[[fluid.square]]\n" + echo_section("fluid.square[]", q);
+    s += "\n[surface_tension]\n" + echo_section("surface_tension", {owner(p)}, custom);
+    s += "\n[gravity]\n" + echo_section("gravity", p);
+    s += "\n[domain]\n" + echo_section("domain", {owner(p), owner(spec)}, custom);
+    s += "\n[resolution]\n" + echo_section("resolution", {owner(p)}, custom);
+    s += "\n[time]\n" + echo_section("time", p);
+    for (const auto& o : spec.obstacles) s += "\n[[obstacle]]\n" + echo_section("obstacle[]", o);
+    for (const auto& g : spec.gates)
+        s += "\n[gate]                          # legacy \"Add gate\": a column of moving boundary particles\n" +
+             echo_section("gate", g);
+    if (spec.nozzle)
+        s += "\n[nozzle]                        # a driven nozzle: the fluid in it moves out at u0 as a plug\n" +
+             echo_section("nozzle", {owner(*spec.nozzle)}, custom);
+    if (spec.breakup)
+        s += "\n[breakup]                       # breakup detection while the run goes\n" +
+             echo_section("breakup", {owner(*spec.breakup)}, custom);
+    for (const auto& w : spec.walls)
+        s += "\n[[wall]]                        # legacy \"Add wall\": two layers of boundary particles\n" +
+             echo_section("wall[]", w);
+    if (e.legacy_section)
+        s += "\n[legacy]                        # carried over from a legacy SPHysics case file\n" +
+             echo_section("legacy", {owner(spec), owner(spec.legacy)}, custom);
+    s += "\n[output]\n" + echo_section("output", {owner(spec.output)}, custom);
     return s;
 }
 
