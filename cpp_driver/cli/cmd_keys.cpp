@@ -1,5 +1,5 @@
 // sphjet keys [--update PAGE]: the key tables of the case format, made from the description
-// of every case parameter (config/case_params.hpp). Without --update they go to stdout, one
+// of every case parameter (model/case_params.hpp). Without --update they go to stdout, one
 // per section; with it, the tables of PAGE (cases/CASE_FORMAT.md) between their markers are
 // written anew and the rest of the page is left as it is.
 #include <filesystem>
@@ -11,9 +11,9 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "config/case_params.hpp"
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
+#include "model/case_params.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

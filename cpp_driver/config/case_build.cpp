@@ -1,13 +1,13 @@
 // From a checked tree to a CaseSpec (config/case_toml.hpp): the plain keys through their
-// rows (config/case_params.hpp), the derived and cross-checked ones by hand, one function a
+// rows (model/case_params.hpp), the derived and cross-checked ones by hand, one function a
 // section.
 #include <algorithm>
 #include <cmath>
 
 #include "config/case_derived.hpp"
-#include "config/case_params.hpp"
 #include "config/case_toml.hpp"
 #include "config/modern_case.hpp"
+#include "model/case_params.hpp"
 
 namespace sphjet::casefile {
 

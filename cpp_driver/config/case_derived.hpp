@@ -13,7 +13,7 @@ namespace sphjet {
 [[nodiscard]] double h_from_coefficient(double coefficient, double dx, double dz, bool single);
 
 // The jet direction (ex, ez) of each of nozzle.axis's choices, by their numbers
-// (config/case_params.cpp).
+// (model/case_params.cpp).
 inline constexpr std::pair<double, double> kNozzleDirections[] = {
     {0.0, -1.0}, {0.0, 1.0}, {-1.0, 0.0}, {1.0, 0.0}};
 

@@ -1,9 +1,9 @@
 // Overrides: key.path=value, applied to the case's tree before it is checked
-// (config/case_toml.hpp; the keys are those of config/case_params.hpp).
+// (config/case_toml.hpp; the keys are those of model/case_params.hpp).
 #include <algorithm>
 
-#include "config/case_params.hpp"
 #include "config/case_toml.hpp"
+#include "model/case_params.hpp"
 
 namespace sphjet::casefile {
 

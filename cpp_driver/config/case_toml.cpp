@@ -9,7 +9,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "config/case_params.hpp"
+#include "model/case_params.hpp"
 
 namespace sphjet::casefile {
 

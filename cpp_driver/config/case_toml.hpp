@@ -1,6 +1,6 @@
 // Reading a case file's TOML tree (the modern case format, config/modern_case.hpp): the text
 // helpers, where a key is in the file (Ctx, Field, Section), the walk of the tree against the
-// keys of config/case_params.hpp with spelling suggestions, the overrides, the toml++ guard
+// keys of model/case_params.hpp with spelling suggestions, the overrides, the toml++ guard
 // and the build of the CaseSpec. The pieces live in case_toml.cpp, case_override.cpp,
 // toml_guard.cpp and case_build.cpp; only those and the writer include this header.
 #pragma once
@@ -16,8 +16,8 @@
 
 #include <toml++/toml.h>
 
-#include "config/case_spec.hpp"
-#include "config/errors.hpp"
+#include "model/case_spec.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::casefile {
 

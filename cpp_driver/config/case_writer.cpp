@@ -1,12 +1,12 @@
 // The case writer: a complete, commented case file for a CaseSpec (config/modern_case.hpp),
-// the plain keys from their rows (config/case_params.hpp), derived numbers by hand.
+// the plain keys from their rows (model/case_params.hpp), derived numbers by hand.
 #include <cmath>
 #include <initializer_list>
 
 #include "config/case_derived.hpp"
-#include "config/case_params.hpp"
 #include "config/case_toml.hpp"
 #include "config/modern_case.hpp"
+#include "model/case_params.hpp"
 
 namespace sphjet {
 

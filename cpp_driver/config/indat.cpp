@@ -15,8 +15,8 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace {

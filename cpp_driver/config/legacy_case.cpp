@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "config/errors.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace {

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "config/case_params.hpp"
 #include "config/case_toml.hpp"
-#include "config/errors.hpp"
+#include "model/case_params.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 

@@ -10,9 +10,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "config/case_params.hpp"
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
+#include "model/case_params.hpp"
+#include "model/errors.hpp"
 
 #ifndef SPHJET_VERSION
 #define SPHJET_VERSION "unknown"
@@ -634,7 +634,7 @@ namespace sphjet::h5 {
 
 namespace {
 
-// The rows of SimParams' members (config/case_params.hpp), in the order of its declaration:
+// The rows of SimParams' members (model/case_params.hpp), in the order of its declaration:
 // the order of the attributes in the files.
 const std::vector<const Param*>& param_rows() {
     static const std::vector<const Param*> rows = [] {

@@ -1,4 +1,4 @@
-// The description of the case parameters (config/case_params.hpp) against the reference page,
+// The description of the case parameters (model/case_params.hpp) against the reference page,
 // the structs it names and the readers it drives.
 #include <algorithm>
 #include <filesystem>
@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "config/case_params.hpp"
 #include "config/modern_case.hpp"
+#include "model/case_params.hpp"
 
 using namespace sphjet;
 
@@ -33,7 +33,7 @@ TEST(CaseParams, PageTablesAreTheDescriptions) {
     const std::string page = read_text(kPage);
     ASSERT_FALSE(page.empty()) << kPage;
     EXPECT_EQ(with_case_format_tables(page), page)
-        << "the key tables of cases/CASE_FORMAT.md differ from config/case_params.cpp; write them anew with "
+        << "the key tables of cases/CASE_FORMAT.md differ from model/case_params.cpp; write them anew with "
            "`sphjet keys --update cases/CASE_FORMAT.md`";
 }
 

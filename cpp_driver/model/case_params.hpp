@@ -1,12 +1,13 @@
 // Every case parameter described once: its key in the case file, the struct member that holds
 // it, unit, default, allowed values and a one-line doc. From this one table
 //  - the TOML reader knows its keys and their types, checks ranges and choices and stores the
-//    plain keys (config/modern_case.cpp), and `--set` knows which keys exist;
-//  - the case writer echoes them (write_modern_case);
+//    plain keys (config/case_build.cpp), and `--set` knows which keys exist;
+//  - the case writer echoes them (config/case_writer.cpp);
 //  - SimParams is written to and read from HDF5 attributes (io/h5_util.cpp);
 //  - the key tables of cases/CASE_FORMAT.md are made (case_format_tables; a test holds the
 //    page to them and `sphjet keys --update cases/CASE_FORMAT.md` writes them).
-// Adding a plain option: one row in kParams (case_params.cpp) and the member it names.
+// Adding a plain option: one row in kParams (case_params.cpp) and the member it names; then
+// `sphjet keys --update cases/CASE_FORMAT.md`.
 #pragma once
 
 #include <array>
@@ -18,7 +19,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "config/case_spec.hpp"
+#include "model/case_spec.hpp"
 
 namespace sphjet {
 

@@ -1,5 +1,5 @@
-// The description of every case parameter (config/case_params.hpp says what reads it).
-#include "config/case_params.hpp"
+// The description of every case parameter (model/case_params.hpp says what reads it).
+#include "model/case_params.hpp"
 
 #include <algorithm>
 #include <array>
