@@ -44,8 +44,8 @@
 #include <string>
 #include <vector>
 
-#include "config/case_spec.hpp"
-#include "core/particles.hpp"
+#include "model/case_spec.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet::analysis {
 

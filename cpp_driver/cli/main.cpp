@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
     sphjet::cli::register_analyse(app);
     sphjet::cli::register_convert(app);
     sphjet::cli::register_drop(app);
+    sphjet::cli::register_keys(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
 #include "io/jet_output.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 

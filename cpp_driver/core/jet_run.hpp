@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "analysis/jet_monitor.hpp"
-#include "config/case_spec.hpp"
-#include "core/particles.hpp"
 #include "io/file_write.hpp"
+#include "model/case_spec.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 

@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "config/params.hpp"
+#include "model/params.hpp"
 
 namespace sphjet::h5 {
 

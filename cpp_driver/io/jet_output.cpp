@@ -8,8 +8,8 @@
 #include <sstream>
 #include <vector>
 
-#include "config/errors.hpp"
 #include "io/h5_util.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "analysis/drop.hpp"
-#include "config/case_spec.hpp"
 #include "geometry/generator.hpp"
+#include "model/case_spec.hpp"
 
 using sphjet::ParticleKind;
 using sphjet::ParticleSet;

@@ -22,10 +22,10 @@
 
 #include <gtest/gtest.h>
 
-#include "config/errors.hpp"
 #include "config/indat.hpp"
 #include "config/legacy_case.hpp"
 #include "geometry/generator.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;

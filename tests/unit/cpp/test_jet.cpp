@@ -13,10 +13,10 @@
 #include <gtest/gtest.h>
 
 #include "analysis/jet_monitor.hpp"
-#include "config/case_spec.hpp"
 #include "config/modern_case.hpp"
 #include "geometry/generator.hpp"
 #include "geometry/nozzle.hpp"
+#include "model/case_spec.hpp"
 
 using namespace sphjet;
 using namespace sphjet::analysis;

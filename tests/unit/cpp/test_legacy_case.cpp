@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "config/errors.hpp"
 #include "config/legacy_case.hpp"
 #include "geometry/generator.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;
