@@ -1,4 +1,4 @@
-// The text helpers of the case reader and the walk of the tree against the schema, with
+// The text functions of the case reader and the walk of the tree against the schema, with
 // spelling suggestions for unknown keys (config/case_toml.hpp).
 #include "config/case_toml.hpp"
 

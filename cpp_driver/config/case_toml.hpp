@@ -1,5 +1,5 @@
 // Reading a case file's TOML tree (the modern case format, config/modern_case.hpp): the text
-// helpers, where a key is in the file (Ctx, Field, Section), the walk of the tree against the
+// functions, where a key is in the file (Ctx, Field, Section), the walk of the tree against the
 // keys of model/case_params.hpp with spelling suggestions, the overrides, the toml++ guard
 // and the build of the CaseSpec. The pieces live in case_toml.cpp, case_override.cpp,
 // toml_guard.cpp and case_build.cpp; only those and the writer include this header.
