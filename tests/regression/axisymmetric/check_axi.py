@@ -3,13 +3,15 @@
 
 Usage:
   check_axi.py SPHJET CASE OUT_DIR [--set KEY=VALUE ...] --analyse SUBCOMMAND
-               [--arg ARG ...] --expect KEY:LO:HI [--expect ...] [--regress KEY:REF:TOL ...] [--show KEY ...]
+               [--arg ARG ...] --expect KEY:LO:HI [--expect ...]
+               [--regress KEY:REF:TOL ...] [--show KEY ...]
 
 Runs `SPHJET run CASE --out OUT_DIR --force -q -j THREADS --set ...` (THREADS from the
 environment variable SPHJET_TEST_THREADS, default 1), then
 `tools/axisymmetric.py SUBCOMMAND OUT_DIR ARG...` with /usr/bin/python3 (numpy, h5py; or
 $SPHJET_ANALYSIS_PYTHON), and checks
-LO <= value <= HI for every --expect (nan fails). Prints one line per check and a final line
+LO <= value <= HI for every --expect (the validation target) and |value - REF| <= TOL for
+every --regress (the regression check); nan fails either. Prints one line per check and a final line
 `N passed, M failed`; exit status 0 only when all passed. The physics and the reason for
 each tolerance are in the CMakeLists.txt that calls this script and in
 cases/axisymmetric/README.md.

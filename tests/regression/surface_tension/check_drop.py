@@ -3,12 +3,14 @@
 
 Usage:
   check_drop.py SPHJET CASE OUT_DIR [--set KEY=VALUE ...] [--drop ARG ...]
-                --expect KEY:LO:HI [--expect ...] [--regress KEY:REF:TOL ...] [--show KEY ...]
+                --expect KEY:LO:HI [--expect ...] [--regress KEY:REF:TOL ...]
+                [--show KEY ...]
 
 Runs `SPHJET run CASE --out OUT_DIR --force -q -j THREADS --set ...` (THREADS from the
 environment variable SPHJET_TEST_THREADS, default 1), then `SPHJET drop OUT_DIR -q ARG...`,
 parses the line `SUMMARY key=value ...`, and checks LO <= value <= HI for every --expect
-(a value of nan fails). Prints one line per check and a final line `N passed, M failed`;
+(the validation target) and |value - REF| <= TOL for every --regress (the regression check);
+a value of nan fails either. Prints one line per check and a final line `N passed, M failed`;
 the exit status is 0 only when every check passed. The physics and the reason for each
 tolerance are stated in the CMakeLists.txt that calls this script and in the case READMEs.
 """
