@@ -20,6 +20,12 @@ Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
                                         (and Lamb's damped value), while the drop is intact
   growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
                                         growth rate of the Fourier mode of r_s(z) vs Rayleigh
+  roughness RUN --radius A --period L --dx DX [--sigma S --rho R0 --nu NU]
+                                        a periodic column that should stay as built: the standard
+                                        deviation of r_s(z) over slices of DX (the outermost
+                                        particle per slice) per snapshot, its largest value over
+                                        the run and its growth rate (fitted where it lies between
+                                        1e-9 and 1e-3 a) against Weber's fastest
 Each prints a line `SUMMARY key=value ...` (the format of `sphjet drop`), which
 tests/regression/surface_tension/check_drop.py can check with --analyse.
 """
@@ -307,6 +313,40 @@ def growth(a):
     return 0
 
 
+# ---------------------------------------------------------------- roughness
+def roughness(a):
+    """A periodic column at rest built on its lattice: how far r_s(z) departs from its mean."""
+    import numpy as np
+    snaps = [fluid(d) for d in snapshots(a.run)]
+    nb = max(1, int(round(a.period / a.dx)))
+    t, sd = [], []
+    for d in snaps:
+        b = np.floor(np.mod(d["z"], a.period) / a.period * nb).astype(int) % nb
+        rs = np.full(nb, np.nan)
+        np.fmax.at(rs, b, np.abs(d["x"]))
+        if np.isnan(rs).any():   # a slice emptied: the column has broken
+            break
+        t.append(d["time"])
+        sd.append(float(rs.std()) / a.radius)
+    t, sd = np.array(t), np.array(sd)
+    m = (sd > 1e-9) & (sd < 1e-3)
+    rate = float(np.polyfit(t[m], np.log(sd[m]), 1)[0]) if m.sum() >= 3 else float("nan")
+    weber = float("nan")
+    if a.sigma > 0:
+        scale = math.sqrt(a.sigma / (a.rho * a.radius ** 3))
+        oh = a.nu * math.sqrt(a.rho / (a.sigma * a.radius))
+        weber = max(weber_omega(k / 1000.0, oh) for k in range(10, 1000)) * scale
+    intact = len(t) == len(snaps)
+    print(f"SUMMARY sd_max_over_a={float(sd.max()) if len(sd) else float('nan'):.4g} "
+          f"sd_end_over_a={float(sd[-1]) if len(sd) else float('nan'):.4g} t_end={float(t[-1]) if len(t) else 0:.4g} "
+          f"intact={int(intact)} growth={rate:.4g} weber_max={weber:.4g} growth_over_weber={rate / weber:.4g} "
+          f"snapshots={len(t)}")
+    if a.table:
+        for ti, si in zip(t, sd):
+            print(f"{ti:.5f} {si:.6e}")
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -332,6 +372,15 @@ def main(argv=None):
     p.add_argument("--bins", type=int, default=32)
     p.add_argument("--linear", type=float, default=0.1, help="end of the linear range, amplitude / a")
     p.add_argument("--table", action="store_true")
+    p = sub.add_parser("roughness")
+    p.add_argument("run")
+    p.add_argument("--radius", type=float, required=True)
+    p.add_argument("--period", type=float, required=True, help="the column's period along z [m]")
+    p.add_argument("--dx", type=float, required=True, help="the slices' width: the particle spacing [m]")
+    p.add_argument("--sigma", type=float, default=0.0)
+    p.add_argument("--rho", type=float, default=1000.0)
+    p.add_argument("--nu", type=float, default=0.0)
+    p.add_argument("--table", action="store_true")
     p = sub.add_parser("rest")
     p.add_argument("run")
     p.add_argument("--sigma", type=float, required=True)
@@ -346,7 +395,7 @@ def main(argv=None):
             o2 = rayleigh_omega2(ka)
             print(f"ka={ka:.4f} omega2={o2:.6f} omega={math.copysign(math.sqrt(abs(o2)), o2):.6f}")
         return 0
-    return {"laplace": laplace, "mode2": mode2, "growth": growth, "rest": rest}[a.cmd](a)
+    return {"laplace": laplace, "mode2": mode2, "growth": growth, "rest": rest, "roughness": roughness}[a.cmd](a)
 
 
 if __name__ == "__main__":

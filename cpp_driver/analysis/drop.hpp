@@ -31,7 +31,7 @@
 #include <span>
 #include <vector>
 
-#include "core/particles.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet::analysis {
 

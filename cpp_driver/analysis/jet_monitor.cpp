@@ -127,6 +127,7 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
     for (std::size_t k = 0; k < down.size(); ++k)
         if (static_cast<std::size_t>(labels[k]) != jet) d[static_cast<std::size_t>(labels[k])].members.push_back(down_i[k]);
     neck(down_s, down_l, labels, static_cast<int>(jet), r);
+    exit_noise(down, down_s, labels, static_cast<int>(jet), r);
     for (std::size_t c = 0; c < d.size(); ++c) {
         Drop& q = d[c];
         q.d_eq = round_ ? std::cbrt(6.0 * q.size / std::numbers::pi) : 2.0 * std::sqrt(q.size / std::numbers::pi);
@@ -148,6 +149,16 @@ void JetMonitor::neck(const std::vector<double>& s, const std::vector<double>& l
         const auto i = static_cast<std::size_t>(s[k] / ds_);
         reach[i] = std::max(reach[i], l[k]);
     }
+    // The surface profile: the largest reach over the slice and its two neighbours. A slice one
+    // spacing wide holds one row of rings or two, or none of the outer ring's when the rows are
+    // a little stretched (the radius then reads one ring short); three slices always hold one.
+    r.surface.assign(slices, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = 0; i < slices; ++i) {
+        double widest = reach[i];
+        if (i > 0) widest = std::max(widest, reach[i - 1]);
+        if (i + 1 < slices) widest = std::max(widest, reach[i + 1]);
+        if (widest >= 0) r.surface[i] = widest + 0.5 * ds_;
+    }
     for (std::size_t i = 0; i < slices; ++i) {
         if (reach[i] < 0) continue;  // an empty slice: a gap the link bridged across
         const double radius = reach[i] + 0.5 * ds_;
@@ -156,6 +167,29 @@ void JetMonitor::neck(const std::vector<double>& s, const std::vector<double>& l
             r.neck_s = (static_cast<double>(i) + 0.5) * ds_;
         }
     }
+}
+
+void JetMonitor::exit_noise(const ParticleSet& down, const std::vector<double>& s, const std::vector<int>& labels,
+                            int jet, JetSample& r) const {
+    // Two passes (mean, then spread about it): the spread is small against the mean.
+    double psum = 0, usum = 0;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (labels[k] != jet || s[k] >= 2.0 * nz_.d0) continue;
+        psum += down.p[k];
+        const double ul = down.u[k] * nz_.ez - down.w[k] * nz_.ex;  // across the axis
+        usum += ul * ul;
+        ++n;
+    }
+    if (n == 0) return;
+    const double mean = psum / static_cast<double>(n);
+    double var = 0;
+    for (std::size_t k = 0; k < s.size(); ++k)
+        if (labels[k] == jet && s[k] < 2.0 * nz_.d0) var += (down.p[k] - mean) * (down.p[k] - mean);
+    r.exit_n = n;
+    r.exit_p_mean = mean;
+    r.exit_p_std = std::sqrt(var / static_cast<double>(n));
+    r.exit_ul_rms = std::sqrt(usum / static_cast<double>(n));
 }
 
 JetGroups jet_groups(double rho, double u0, double d0, double sigma, double mu, double g) {
@@ -174,7 +208,8 @@ JetGroups jet_groups(double rho, double u0, double d0, double sigma, double mu, 
 
 std::string jet_csv_header() {
     return "time,step,volume_out,flux,u_flux,u_orifice,broken,L,L_over_d0,jet_tip_over_d0,n_drops,"
-           "head_drop_d_over_d0,largest_drop_d_over_d0,n_satellites,neck_r_over_d0,neck_s_over_d0";
+           "head_drop_d_over_d0,largest_drop_d_over_d0,n_satellites,neck_r_over_d0,neck_s_over_d0,n_exit,p_exit_mean,"
+           "p_exit_std,ur_exit_rms";
 }
 
 std::string jet_csv_row(const JetSample& s, double d0) {
@@ -184,10 +219,14 @@ std::string jet_csv_row(const JetSample& s, double d0) {
     for (const Drop& q : s.drops) largest = std::max(largest, q.d_eq / d0), satellites += q.satellite ? 1 : 0;
     // No neck (a jet shorter than d0): NaN, which the report and ParaView read as missing.
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    return fmt::format("{:.17g},{},{:.17g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{},{:.9g},{:.9g}",
+    // No exit particles: NaN pressure and velocity.
+    const bool ex = s.exit_n > 0;
+    return fmt::format("{:.17g},{},{:.17g},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{:.9g},{},{:.9g},{:.9g},{},{:.9g},{:.9g},"
+                       "{},{:.9g},{:.9g},{:.9g}",
                        s.time, s.step, s.volume_out, s.flux, s.u_flux, s.u_orifice, s.length ? 1 : 0,
                        s.length.value_or(0.0), s.length.value_or(0.0) / d0, s.jet_tip / d0, s.drops.size(), head,
-                       largest, satellites, s.neck_r.value_or(nan) / d0, s.neck_s.value_or(nan) / d0);
+                       largest, satellites, s.neck_r.value_or(nan) / d0, s.neck_s.value_or(nan) / d0, s.exit_n,
+                       ex ? s.exit_p_mean : nan, ex ? s.exit_p_std : nan, ex ? s.exit_ul_rms : nan);
 }
 
 std::string drops_csv_header(bool round) {
@@ -201,6 +240,18 @@ std::string drops_csv_rows(const JetSample& s, double d0) {
         const Drop& q = s.drops[k];
         out += fmt::format("{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", s.time, s.step, k, q.particles,
                            q.size, q.d_eq / d0, q.xc, q.zc, q.s_max / d0, q.satellite ? 1 : 0);
+    }
+    return out;
+}
+
+std::string surface_csv_header() { return "time,step,s_over_d0,r_over_d0"; }
+
+std::string surface_csv_rows(const JetSample& s, double d0, double ds) {
+    std::string out;
+    for (std::size_t i = 0; i < s.surface.size(); ++i) {
+        if (std::isnan(s.surface[i])) continue;
+        out += fmt::format("{:.9g},{},{:.6g},{:.9g}\n", s.time, s.step, (static_cast<double>(i) + 0.5) * ds / d0,
+                           s.surface[i] / d0);
     }
     return out;
 }

@@ -28,7 +28,15 @@
 //   - neck: the jet's own cluster in slices of ds along the axis from the orifice to one d0
 //     short of its tip (the tip itself is the round cap); a slice's radius is the largest
 //     |l| of its particles plus ds / 2 (the particle's half-spacing: the plug gives d0 / 2
-//     at the orifice). The neck is the thinnest slice: its radius and where it is.
+//     at the orifice). The neck is the thinnest slice: its radius and where it is. The
+//     surface profile r_s(s), from which the disturbance's growth along the jet is read
+//     (tools/jet_noise.py), takes per slice the largest |l| over it and its two neighbours,
+//     plus ds / 2: a single slice misses the outer ring wherever the rows are a little
+//     stretched and would read one ring short.
+//   - exit noise: over the jet's own particles within 2 d0 of the orifice (0 <= s < 2 d0),
+//     the mean and standard deviation of the pressure and the rms of the velocity across the
+//     axis (radial for a round jet). A quiet jet holds p = sigma/a there (round; a = d0/2)
+//     with a spread small against it.
 #pragma once
 
 #include <cstdint>
@@ -36,8 +44,8 @@
 #include <string>
 #include <vector>
 
-#include "config/case_spec.hpp"
-#include "core/particles.hpp"
+#include "model/case_spec.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet::analysis {
 
@@ -62,6 +70,11 @@ struct JetSample {
     double jet_tip = 0;          // farthest s of the jet's own cluster [m]
     std::optional<double> neck_r, neck_s;  // the jet's thinnest slice: radius and s [m]; none: jet shorter than d0
     std::size_t in_nozzle = 0;   // fluid particles still in the nozzle's strip (0: the nozzle ran dry)
+    std::vector<double> surface; // the jet's radius per slice k (s in [k ds, (k + 1) ds)) up to one d0
+                                 // short of its tip [m]; NaN: an empty slice
+    std::size_t exit_n = 0;      // the jet's particles with 0 <= s < 2 d0
+    double exit_p_mean = 0, exit_p_std = 0;  // their pressure: mean and standard deviation [Pa]
+    double exit_ul_rms = 0;      // their velocity across the axis: root mean square [m/s]
     std::vector<Drop> drops;     // detached drops, farthest first
 };
 
@@ -87,11 +100,15 @@ public:
     [[nodiscard]] bool round() const { return round_; }
     // The orifice's area (round) or width (planar): u_flux = flux / this.
     [[nodiscard]] double orifice_measure() const;
+    // The spacing along the axis: the width of a surface profile's slices [m].
+    [[nodiscard]] double slice() const { return ds_; }
 
 private:
     double crossing_volume(const ParticleSet& ps);
     void neck(const std::vector<double>& s, const std::vector<double>& l, const std::vector<int>& labels, int jet,
               JetSample& r) const;
+    void exit_noise(const ParticleSet& down, const std::vector<double>& s, const std::vector<int>& labels, int jet,
+                    JetSample& r) const;
     // The frame of the axis: s along it from the orifice centre, l across it.
     [[nodiscard]] double axial(double x, double z) const { return (x - nz_.x0) * nz_.ex + (z - nz_.z0) * nz_.ez; }
     [[nodiscard]] double lateral(double x, double z) const { return (x - nz_.x0) * nz_.ez - (z - nz_.z0) * nz_.ex; }
@@ -123,5 +140,9 @@ struct JetGroups {
 [[nodiscard]] std::string jet_csv_row(const JetSample& s, double d0);
 [[nodiscard]] std::string drops_csv_header(bool round = false);
 [[nodiscard]] std::string drops_csv_rows(const JetSample& s, double d0);
+// CSV header and rows of a sample's surface profile (jet_surface.csv): one row per slice
+// with time, step, the slice's centre s / d0 and its radius / d0; empty slices left out.
+[[nodiscard]] std::string surface_csv_header();
+[[nodiscard]] std::string surface_csv_rows(const JetSample& s, double d0, double ds);
 
 }  // namespace sphjet::analysis

@@ -8,11 +8,11 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
-#include "core/simulation.hpp"
+#include "config/load_case.hpp"
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 

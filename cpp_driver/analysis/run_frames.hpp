@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "core/particles.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet::analysis {
 

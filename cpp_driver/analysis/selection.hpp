@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "core/particles.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet::analysis {
 

@@ -18,8 +18,8 @@
 #include "analysis/overlap.hpp"
 #include "analysis/run_frames.hpp"
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

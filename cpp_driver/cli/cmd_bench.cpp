@@ -9,9 +9,10 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
+#include "config/load_case.hpp"
 #include "core/simulation.hpp"
 #include "core/solver.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

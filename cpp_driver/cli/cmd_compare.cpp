@@ -14,8 +14,8 @@
 
 #include "analysis/compare.hpp"
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
 #include "io/legacy_output.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

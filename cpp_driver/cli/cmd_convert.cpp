@@ -9,10 +9,10 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
 #include "config/legacy_case.hpp"
 #include "config/modern_case.hpp"
 #include "io/file_write.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

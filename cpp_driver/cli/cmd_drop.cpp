@@ -34,9 +34,9 @@
 
 #include "analysis/drop.hpp"
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
 #include "io/hdf5_output.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
 #include "config/indat.hpp"
 #include "config/legacy_case.hpp"
 #include "geometry/generator.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "config/errors.hpp"
 #include "core/simulation.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::cli {
 

@@ -15,5 +15,6 @@ void register_compare(CLI::App& app);
 void register_analyse(CLI::App& app);
 void register_convert(CLI::App& app);
 void register_drop(CLI::App& app);
+void register_keys(CLI::App& app);
 
 }  // namespace sphjet::cli

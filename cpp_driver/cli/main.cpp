@@ -43,7 +43,7 @@ void prefer_short_openmp_spins(char** argv) {
 // is not reused by another, and the neighbour lists' rows are reallocated by whichever thread
 // builds them; the 1e6-particle dam break on two threads then peaked at 775-965 MB from run to
 // run of the same command, and at 742 MB in every run with one heap, at the same speed
-// (README, Performance, session 13). The core allocates outside its pair loops only.
+// (docs/performance.md, "One heap", 4005352). The core allocates outside its pair loops only.
 void keep_freed_memory() {
 #ifdef __GLIBC__
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
     sphjet::cli::register_analyse(app);
     sphjet::cli::register_convert(app);
     sphjet::cli::register_drop(app);
+    sphjet::cli::register_keys(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

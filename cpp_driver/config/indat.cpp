@@ -15,8 +15,8 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace {
@@ -156,6 +156,101 @@ constexpr Entry kIndat[47] = {
     {"kernel correction", true}, {"Riemann solver", true}, {"TVD flag", true},
     {"beta_lim", false}, {"vorticity flag", true}, {"Verlet period", true},
     {"filter period", true}, {"boundary-density period", true}};
+
+// IPART beside INDAT: np particle lines, the first nbf fixed and up to nb moving boundary.
+void read_ipart(const fs::path& indat, const std::string& file, long np, long nb, long nbf, ParticleSet& ps) {
+    const fs::path ipart = indat.parent_path() / "IPART";
+    const auto pl = read_lines(ipart, " (IPART, needed beside " + file + ")");
+    ps.x.reserve(std::min(static_cast<std::size_t>(np), pl.size()));  // np is checked below
+    for (long k = 0; k < np; ++k) {
+        const std::string where = ipart.string() + ":" + std::to_string(k + 1);
+        if (static_cast<std::size_t>(k) >= pl.size())
+            throw InputError(where, "IPART ends early", std::to_string(np) + " particle lines (np in INDAT)",
+                             std::to_string(pl.size()) + " lines");
+        const auto t = tokens(pl[static_cast<std::size_t>(k)]);
+        if (t.size() != 7)
+            throw InputError(where, "malformed IPART line", "7 values: x z u w rho p m",
+                             std::to_string(t.size()) + " values");
+        double f[7];
+        static const char* names[7] = {"x", "z", "u", "w", "rho", "p", "m"};
+        for (int c = 0; c < 7; ++c) f[c] = parse_real(t[static_cast<std::size_t>(c)], where, names[c]);
+        const ParticleKind kind = k < nbf ? ParticleKind::FixedBoundary
+                                  : k < nb ? ParticleKind::MovingBoundary
+                                           : ParticleKind::Fluid;
+        ps.push(f[0], f[1], f[2], f[3], f[4], f[5], f[6], kind);
+    }
+    for (std::size_t k = static_cast<std::size_t>(np); k < pl.size(); ++k)
+        if (!tokens(pl[k]).empty())
+            throw InputError(ipart.string() + ":" + std::to_string(k + 1), "IPART has more particles than INDAT says",
+                             "np = " + std::to_string(np) + " lines", "more");
+    ps.nb = static_cast<std::size_t>(nb);
+    ps.nbf = static_cast<std::size_t>(nbf);
+}
+
+// The gate record beside INDAT (moving boundary particles nbf+1..nb): the legacy generator's.
+void read_gate_record(const fs::path& indat, const std::string& file, long nb, long nbf, const ParticleSet& ps,
+                      SimParams& p) {
+    if (nbf < nb) {
+        const fs::path gate = indat.parent_path() / "gate";
+        const std::string needed = " (gate, needed beside " + file + " when nbf = " + std::to_string(nbf) +
+                                   " < nb = " + std::to_string(nb) + ": the moving boundary particles of a gate)";
+        const auto gl = read_lines(gate, needed);
+        std::vector<std::vector<std::string>> rec;
+        for (const auto& l : gl)
+            if (auto t = tokens(l); !t.empty()) rec.push_back(t);
+        const auto g_at = [&](std::size_t r) { return gate.string() + ": record " + std::to_string(r + 1); };
+        const std::size_t sizes[5] = {1, 1, 1, 2, 1};
+        for (std::size_t r = 0; r < 5; ++r)
+            if (r >= rec.size() || rec[r].size() < sizes[r])
+                throw InputError(g_at(r), "malformed gate file", "5 records: 1, ngate_ini, ngate_end, \"Vx Vz\", tgate",
+                                 r >= rec.size() ? "end of file" : std::to_string(rec[r].size()) + " value(s)");
+        const long opt = parse_int(rec[0][0], g_at(0), "iopt_gate");
+        const long g0 = parse_int(rec[1][0], g_at(1), "ngate_ini");
+        const long g1 = parse_int(rec[2][0], g_at(2), "ngate_end");
+        if (opt != 1 || g0 != nbf + 1 || g1 != nb)
+            throw InputError(gate.string(), "unsupported moving boundary particles (only one gate, the particles "
+                                            "nbf+1..nb, is implemented)",
+                             "1, " + std::to_string(nbf + 1) + ", " + std::to_string(nb),
+                             std::to_string(opt) + ", " + std::to_string(g0) + ", " + std::to_string(g1));
+        p.gate_vx = parse_real(rec[3][0], g_at(3), "VXgate");
+        p.gate_vz = parse_real(rec[3][1], g_at(3), "VZgate");
+        p.gate_t_start = parse_real(rec[4][0], g_at(4), "tgate");
+        if (!(std::isfinite(p.gate_vx) && std::isfinite(p.gate_vz) && p.gate_t_start >= 0))
+            throw InputError(gate.string(), "invalid gate motion", "finite Vx, Vz and tgate >= 0",
+                             rec[3][0] + ", " + rec[3][1] + ", " + rec[4][0]);
+        p.gate_z_cap = gate_z_cap(ps, p.h);
+    }
+}
+
+// NORMALS.init beside INDAT (repulsive boundaries): the wall links.
+void read_normals(const fs::path& indat, long nb, const SimParams& p, ParticleSet& ps) {
+    if (p.boundary == BoundaryType::Repulsive) {
+        const fs::path normals = indat.parent_path() / "NORMALS.init";
+        const auto nl = read_lines(normals, " (NORMALS.init, needed for repulsive boundaries)");
+        ps.wall.resize(static_cast<std::size_t>(nb));
+        for (long k = 0; k < nb; ++k) {
+            const std::string where = normals.string() + ":" + std::to_string(k + 1);
+            if (static_cast<std::size_t>(k) >= nl.size())
+                throw InputError(where, "NORMALS.init ends early", std::to_string(nb) + " lines (nb in INDAT)",
+                                 std::to_string(nl.size()) + " lines");
+            const auto t = tokens(nl[static_cast<std::size_t>(k)]);
+            if (t.size() != 8)
+                throw InputError(where, "malformed NORMALS.init line", "8 values: nx nz i rank prev next x z",
+                                 std::to_string(t.size()) + " values");
+            const long idx = parse_int(t[2], where, "particle index");
+            const long prev = parse_int(t[4], where, "previous neighbour");
+            const long nxt = parse_int(t[5], where, "next neighbour");
+            if (idx != k + 1)
+                throw InputError(where, "NORMALS.init out of order", "particle index " + std::to_string(k + 1),
+                                 std::to_string(idx));
+            if (prev < 1 || prev > nb || nxt < 1 || nxt > nb)
+                throw InputError(where, "wall neighbour outside the boundary particles",
+                                 "indices in 1.." + std::to_string(nb),
+                                 std::to_string(prev) + ", " + std::to_string(nxt));
+            ps.wall[static_cast<std::size_t>(k)] = {static_cast<int>(prev - 1), static_cast<int>(nxt - 1)};
+        }
+    }
+}
 
 }  // namespace
 
@@ -364,94 +459,9 @@ InitialState read_indat(const fs::path& indat) {
     p.gx = 0.0;
     p.gz = -9.81;
 
-    // IPART
-    const fs::path ipart = indat.parent_path() / "IPART";
-    const auto pl = read_lines(ipart, " (IPART, needed beside " + file + ")");
-    ParticleSet& ps = st.particles;
-    ps.x.reserve(std::min(static_cast<std::size_t>(np), pl.size()));  // np is checked below
-    for (long k = 0; k < np; ++k) {
-        const std::string where = ipart.string() + ":" + std::to_string(k + 1);
-        if (static_cast<std::size_t>(k) >= pl.size())
-            throw InputError(where, "IPART ends early", std::to_string(np) + " particle lines (np in INDAT)",
-                             std::to_string(pl.size()) + " lines");
-        const auto t = tokens(pl[static_cast<std::size_t>(k)]);
-        if (t.size() != 7)
-            throw InputError(where, "malformed IPART line", "7 values: x z u w rho p m",
-                             std::to_string(t.size()) + " values");
-        double f[7];
-        static const char* names[7] = {"x", "z", "u", "w", "rho", "p", "m"};
-        for (int c = 0; c < 7; ++c) f[c] = parse_real(t[static_cast<std::size_t>(c)], where, names[c]);
-        const ParticleKind kind = k < nbf ? ParticleKind::FixedBoundary
-                                  : k < nb ? ParticleKind::MovingBoundary
-                                           : ParticleKind::Fluid;
-        ps.push(f[0], f[1], f[2], f[3], f[4], f[5], f[6], kind);
-    }
-    for (std::size_t k = static_cast<std::size_t>(np); k < pl.size(); ++k)
-        if (!tokens(pl[k]).empty())
-            throw InputError(ipart.string() + ":" + std::to_string(k + 1), "IPART has more particles than INDAT says",
-                             "np = " + std::to_string(np) + " lines", "more");
-    ps.nb = static_cast<std::size_t>(nb);
-    ps.nbf = static_cast<std::size_t>(nbf);
-
-    // gate (moving boundary particles nbf+1..nb): the legacy generator's gate record.
-    if (nbf < nb) {
-        const fs::path gate = indat.parent_path() / "gate";
-        const std::string needed = " (gate, needed beside " + file + " when nbf = " + std::to_string(nbf) +
-                                   " < nb = " + std::to_string(nb) + ": the moving boundary particles of a gate)";
-        const auto gl = read_lines(gate, needed);
-        std::vector<std::vector<std::string>> rec;
-        for (const auto& l : gl)
-            if (auto t = tokens(l); !t.empty()) rec.push_back(t);
-        const auto g_at = [&](std::size_t r) { return gate.string() + ": record " + std::to_string(r + 1); };
-        const std::size_t sizes[5] = {1, 1, 1, 2, 1};
-        for (std::size_t r = 0; r < 5; ++r)
-            if (r >= rec.size() || rec[r].size() < sizes[r])
-                throw InputError(g_at(r), "malformed gate file", "5 records: 1, ngate_ini, ngate_end, \"Vx Vz\", tgate",
-                                 r >= rec.size() ? "end of file" : std::to_string(rec[r].size()) + " value(s)");
-        const long opt = parse_int(rec[0][0], g_at(0), "iopt_gate");
-        const long g0 = parse_int(rec[1][0], g_at(1), "ngate_ini");
-        const long g1 = parse_int(rec[2][0], g_at(2), "ngate_end");
-        if (opt != 1 || g0 != nbf + 1 || g1 != nb)
-            throw InputError(gate.string(), "unsupported moving boundary particles (only one gate, the particles "
-                                            "nbf+1..nb, is implemented)",
-                             "1, " + std::to_string(nbf + 1) + ", " + std::to_string(nb),
-                             std::to_string(opt) + ", " + std::to_string(g0) + ", " + std::to_string(g1));
-        p.gate_vx = parse_real(rec[3][0], g_at(3), "VXgate");
-        p.gate_vz = parse_real(rec[3][1], g_at(3), "VZgate");
-        p.gate_t_start = parse_real(rec[4][0], g_at(4), "tgate");
-        if (!(std::isfinite(p.gate_vx) && std::isfinite(p.gate_vz) && p.gate_t_start >= 0))
-            throw InputError(gate.string(), "invalid gate motion", "finite Vx, Vz and tgate >= 0",
-                             rec[3][0] + ", " + rec[3][1] + ", " + rec[4][0]);
-        p.gate_z_cap = gate_z_cap(ps, p.h);
-    }
-
-    // NORMALS.init (repulsive boundaries): the wall links.
-    if (p.boundary == BoundaryType::Repulsive) {
-        const fs::path normals = indat.parent_path() / "NORMALS.init";
-        const auto nl = read_lines(normals, " (NORMALS.init, needed for repulsive boundaries)");
-        ps.wall.resize(static_cast<std::size_t>(nb));
-        for (long k = 0; k < nb; ++k) {
-            const std::string where = normals.string() + ":" + std::to_string(k + 1);
-            if (static_cast<std::size_t>(k) >= nl.size())
-                throw InputError(where, "NORMALS.init ends early", std::to_string(nb) + " lines (nb in INDAT)",
-                                 std::to_string(nl.size()) + " lines");
-            const auto t = tokens(nl[static_cast<std::size_t>(k)]);
-            if (t.size() != 8)
-                throw InputError(where, "malformed NORMALS.init line", "8 values: nx nz i rank prev next x z",
-                                 std::to_string(t.size()) + " values");
-            const long idx = parse_int(t[2], where, "particle index");
-            const long prev = parse_int(t[4], where, "previous neighbour");
-            const long nxt = parse_int(t[5], where, "next neighbour");
-            if (idx != k + 1)
-                throw InputError(where, "NORMALS.init out of order", "particle index " + std::to_string(k + 1),
-                                 std::to_string(idx));
-            if (prev < 1 || prev > nb || nxt < 1 || nxt > nb)
-                throw InputError(where, "wall neighbour outside the boundary particles",
-                                 "indices in 1.." + std::to_string(nb),
-                                 std::to_string(prev) + ", " + std::to_string(nxt));
-            ps.wall[static_cast<std::size_t>(k)] = {static_cast<int>(prev - 1), static_cast<int>(nxt - 1)};
-        }
-    }
+    read_ipart(indat, file, np, nb, nbf, st.particles);
+    read_gate_record(indat, file, nb, nbf, st.particles, p);
+    read_normals(indat, nb, p, st.particles);
     return st;
 }
 

@@ -12,10 +12,10 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "config/case_spec.hpp"
-#include "config/params.hpp"
-#include "core/particles.hpp"
 #include "geometry/generator.hpp"
+#include "model/case_spec.hpp"
+#include "model/params.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 

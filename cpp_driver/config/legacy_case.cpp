@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "config/errors.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace {
@@ -240,15 +240,12 @@ bool overlaps(const Rect& a, const Rect& b) {
     return a.xmin < b.xmax && b.xmin < a.xmax && a.zmin < b.zmax && b.zmin < a.zmax;
 }
 
-}  // namespace
+// The questions of SPHYSICSgen2D in its order, a group to a function (parse_legacy_case).
 
-CaseSpec parse_legacy_case(const std::string& text, const std::string& source_name) {
-    Answers a(text, source_name);
-    CaseSpec spec;
-    spec.source = source_name;
-    spec.legacy_fill = true;
-    SimParams& p = spec.params;
-    LegacyRunInfo& info = spec.legacy;
+// Starting option to the fluid lattice: the numerics, the equation of state, the boundaries.
+void read_numerics(Answers& a, CaseSpec& spec) {
+    [[maybe_unused]] SimParams& p = spec.params;
+    [[maybe_unused]] LegacyRunInfo& info = spec.legacy;
 
     // Fixed by the legacy generator.
     p.integrator = Integrator::PredictorCorrector;
@@ -357,6 +354,12 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
     const long lattice = a.integer("fluid particle lattice");
     if (lattice != 1 && lattice != 2) a.invalid("fluid particle lattice", std::to_string(lattice), "1 (SC) or 2 (BCC)");
     p.lattice = static_cast<Lattice>(lattice);
+}
+
+// The box, the spacing, the floor and the periodic boundaries.
+void read_box(Answers& a, CaseSpec& spec) {
+    [[maybe_unused]] SimParams& p = spec.params;
+    [[maybe_unused]] LegacyRunInfo& info = spec.legacy;
 
     const auto box = a.reals("box dimension LX,LZ", {"LX", "LZ"});
     if (!(box[0] > 0) || !(box[1] > 0))
@@ -393,6 +396,12 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
     }
     spec.wall_left = spec.wall_right = spec.wall_bottom = true;
     spec.wall_top = false;
+}
+
+// Walls, obstacles, wavemaker, gate and floating body; returns the line of each obstacle.
+std::vector<std::size_t> read_structures(Answers& a, CaseSpec& spec) {
+    [[maybe_unused]] SimParams& p = spec.params;
+    [[maybe_unused]] LegacyRunInfo& info = spec.legacy;
 
     // Walls inside the box.
     while (a.flag("add wall")) {
@@ -475,6 +484,13 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
     }
     if (const long v = a.integer("add floating body"); v != 0)
         a.refuse("add floating body", v, v == 1 ? "floating bodies" : "", "0 (no floating body)");
+    return obstacle_lines;
+}
+
+// The initial conditions and the regions of fluid.
+void read_fill(Answers& a, CaseSpec& spec, const std::vector<std::size_t>& obstacle_lines) {
+    [[maybe_unused]] SimParams& p = spec.params;
+    [[maybe_unused]] LegacyRunInfo& info = spec.legacy;
 
     const long initial = a.integer("initial conditions");
     if (initial != 2)
@@ -511,6 +527,12 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
                                         "; as in SPHYSICSgen2D, fluid particles are placed inside it");
         spec.fluid_blocks.push_back(b);
     } while (a.flag("fill a new region"));
+}
+
+// Times, time step, smoothing length and the solver's options.
+void read_run(Answers& a, CaseSpec& spec) {
+    [[maybe_unused]] SimParams& p = spec.params;
+    [[maybe_unused]] LegacyRunInfo& info = spec.legacy;
 
     const auto times = a.reals("tmax and out", {"tmax", "out"});
     if (!(times[0] > 0) || !(times[1] > 0)) a.invalid("tmax and out", num(times[0]) + ", " + num(times[1]), "two times > 0");
@@ -556,7 +578,21 @@ CaseSpec parse_legacy_case(const std::string& text, const std::string& source_na
     if (precision != 1 && precision != 2)
         a.invalid("precision of XYZ variables", std::to_string(precision), "1 (single) or 2 (double)");
     info.xz_precision = static_cast<int>(precision);
+}
 
+}  // namespace
+
+CaseSpec parse_legacy_case(const std::string& text, const std::string& source_name) {
+    Answers a(text, source_name);
+    CaseSpec spec;
+    spec.source = source_name;
+    spec.legacy_fill = true;
+
+    read_numerics(a, spec);
+    read_box(a, spec);
+    const std::vector<std::size_t> obstacle_lines = read_structures(a, spec);
+    read_fill(a, spec, obstacle_lines);
+    read_run(a, spec);
     return spec;
 }
 

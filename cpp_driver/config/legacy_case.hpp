@@ -23,7 +23,7 @@
 #include <filesystem>
 #include <string>
 
-#include "config/case_spec.hpp"
+#include "model/case_spec.hpp"
 
 namespace sphjet {
 

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "config/case_spec.hpp"
+#include "model/case_spec.hpp"
 
 namespace sphjet {
 

@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
 #include "io/jet_output.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 
@@ -66,6 +66,7 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
     if (resume) {
         const auto rows = keep_until(dir_ / "jet.csv", step);
         (void)keep_until(dir_ / "drops.csv", step);
+        (void)keep_until(dir_ / "jet_surface.csv", step);
         for (const auto& r : rows) {
             if (!first_time_ && r.at(6) == "1") first_time_ = std::stod(r.at(0)), first_length_ = std::stod(r.at(7));
             count_orifice_speed(std::stod(r.at(4)), std::stod(r.at(9)) >= 1.0 || r.at(6) == "1");
@@ -77,6 +78,8 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
     }
     jet_csv_.emplace(dir_ / "jet.csv", "the jet table", resume, analysis::jet_csv_header() + "\n");
     drops_csv_.emplace(dir_ / "drops.csv", "the drops table", resume, analysis::drops_csv_header(mon_.round()) + "\n");
+    surface_csv_.emplace(dir_ / "jet_surface.csv", "the jet surface table", resume,
+                         analysis::surface_csv_header() + "\n");
     if (remove_below_ > 0)
         removed_csv_.emplace(dir_ / "removed_drops.csv", "the removed drops table", resume,
                              std::string(mon_.round() ? "time,step,particles,volume,d_eq_over_d0,xc,zc"
@@ -105,6 +108,7 @@ std::vector<std::size_t> JetRun::sample(const ParticleSet& ps, double time, std:
     const analysis::JetSample s = mon_.sample(ps, time, step);
     jet_csv_->append(analysis::jet_csv_row(s, d0) + "\n");
     if (!s.drops.empty()) drops_csv_->append(analysis::drops_csv_rows(s, d0));
+    if (!s.surface.empty()) surface_csv_->append(analysis::surface_csv_rows(s, d0, mon_.slice()));
     count_orifice_speed(s.u_flux, s.jet_tip >= d0 || s.length);
     if (s.in_nozzle == 0 && !dry_time_) dry_time_ = time;
     if (s.length && !first_time_) {

@@ -1,6 +1,7 @@
 // The jet side of a run (a case with a [nozzle]): samples the jet while the run goes
-// (analysis/jet_monitor.hpp), writes DIR/jet.csv and DIR/drops.csv (one row per sample, one
-// per drop and sample), reports the first breakup in the log, says when the run may stop
+// (analysis/jet_monitor.hpp), writes DIR/jet.csv, DIR/drops.csv and DIR/jet_surface.csv (one
+// row per sample, one per drop and sample, one per slice of the jet's surface profile and
+// sample), reports the first breakup in the log, says when the run may stop
 // ([breakup] stop_after), and at the end copies the samples into DIR/run.h5 (/jet).
 // With [breakup] remove_drops_below_h it also picks, at each check, the drops to remove
 // (their particles' indices: the caller makes them inactive), logs them and writes
@@ -18,9 +19,9 @@
 #include <vector>
 
 #include "analysis/jet_monitor.hpp"
-#include "config/case_spec.hpp"
-#include "core/particles.hpp"
 #include "io/file_write.hpp"
+#include "model/case_spec.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 
@@ -55,7 +56,7 @@ private:
     const CaseSpec& spec_;
     std::filesystem::path dir_;
     analysis::JetMonitor mon_;
-    std::optional<AppendFile> jet_csv_, drops_csv_, removed_csv_;  // rows land whole or not at all
+    std::optional<AppendFile> jet_csv_, drops_csv_, surface_csv_, removed_csv_;  // rows land whole or not at all
     Log log_;
     double next_check_ = 0;
     std::optional<double> first_time_, first_length_, dry_time_;

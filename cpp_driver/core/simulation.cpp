@@ -16,9 +16,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "config/errors.hpp"
 #include "config/indat.hpp"
 #include "config/legacy_case.hpp"
+#include "config/load_case.hpp"
 #include "config/modern_case.hpp"
 #include "core/jet_run.hpp"
 #include "core/solver.hpp"
@@ -28,6 +28,7 @@
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,39 +38,6 @@ double RunSummary::particle_steps_per_second() const {
     return wall_seconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) /
                                   wall_seconds
                             : 0.0;
-}
-
-LoadedCase load_case(const fs::path& path, const std::vector<std::string>& overrides) {
-    if (!fs::exists(path))
-        throw InputError(path.string(), "case file not found", "an existing file", "nothing");
-    if (fs::is_directory(path))
-        throw InputError(path.string(), "case path is a directory",
-                         "a case file (.toml, INDAT or a legacy case file)", "a directory");
-    LoadedCase lc;
-    if (looks_like_modern_case(path)) {
-        lc.spec = read_modern_case(path, overrides);
-        InitialState init = generate(lc.spec);
-        lc.spec.params = init.params;
-        lc.particles = std::move(init.particles);
-        return lc;
-    }
-    if (!overrides.empty())
-        throw InputError(path.string(), "--set works on modern (.toml) cases only",
-                         "a .toml case (sphjet convert writes one from a legacy case)",
-                         "a legacy case file");
-    if (path.filename() == "INDAT") {
-        InitialState init = read_indat(path);
-        lc.spec.params = init.params;
-        lc.spec.source = path.string();
-        lc.spec.legacy = init.legacy;
-        lc.particles = std::move(init.particles);
-        return lc;
-    }
-    lc.spec = read_legacy_case(path);
-    InitialState init = generate(lc.spec);
-    lc.spec.params = init.params;
-    lc.particles = std::move(init.particles);
-    return lc;
 }
 
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "config/case_spec.hpp"
-#include "core/particles.hpp"
+#include "model/case_spec.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 
@@ -43,17 +43,6 @@ struct RunSummary {
     bool interrupted = false;         // stopped by a signal (a checkpoint was written)
     [[nodiscard]] double particle_steps_per_second() const;
 };
-
-// The case as the run sees it: a CaseSpec and its particles.
-struct LoadedCase {
-    CaseSpec spec;
-    ParticleSet particles;
-};
-
-// Reads any supported case: a modern .toml, an INDAT (with IPART beside it), or a legacy
-// case file (the stdin of SPHYSICSgen2D), generating the particles.
-[[nodiscard]] LoadedCase load_case(const std::filesystem::path& path,
-                                   const std::vector<std::string>& overrides);
 
 // Runs (or resumes) a simulation. Throws InputError for bad input and SimulationError for a
 // blow-up (after writing the diagnostic to the log).

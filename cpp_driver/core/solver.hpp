@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "config/case_spec.hpp"
-#include "config/params.hpp"
-#include "core/particles.hpp"
-#include "core/run_state.hpp"
 #include "io/hdf5_output.hpp"
+#include "model/case_spec.hpp"
+#include "model/params.hpp"
+#include "model/particles.hpp"
+#include "model/run_state.hpp"
 #include "sphjet_core.h"
 
 namespace sphjet {

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "config/errors.hpp"
 #include "geometry/nozzle.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace {

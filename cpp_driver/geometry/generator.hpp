@@ -57,9 +57,9 @@
 // rho x area x 2 pi x (build()).
 #pragma once
 
-#include "config/case_spec.hpp"
-#include "config/params.hpp"
-#include "core/particles.hpp"
+#include "model/case_spec.hpp"
+#include "model/params.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 

@@ -26,7 +26,7 @@
 
 #include <vector>
 
-#include "config/case_spec.hpp"
+#include "model/case_spec.hpp"
 
 namespace sphjet {
 

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "config/errors.hpp"
 #include "io/h5_util.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 

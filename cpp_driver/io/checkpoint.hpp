@@ -24,10 +24,10 @@
 #include <string_view>
 #include <vector>
 
-#include "config/params.hpp"
-#include "core/particles.hpp"
-#include "core/run_state.hpp"
 #include "io/hdf5_output.hpp"  // ExtraField
+#include "model/params.hpp"
+#include "model/particles.hpp"
+#include "model/run_state.hpp"
 
 namespace sphjet {
 

@@ -13,7 +13,7 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 

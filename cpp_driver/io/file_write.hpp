@@ -14,7 +14,7 @@
 // crashes at exit (H5F__close_cb) after an H5Fclose that failed for want of space, and keeps
 // the file's descriptor, and so its blocks, until then.
 //
-// A failure throws WriteError (config/errors.hpp) naming the file and the cause from errno,
+// A failure throws WriteError (model/errors.hpp) naming the file and the cause from errno,
 // e.g. "run/snap_000012.h5: cannot write the snapshot: No space left on device; expected room
 // for 160 kB on the file system, found 12 kB free".
 #pragma once

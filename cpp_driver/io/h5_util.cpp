@@ -8,9 +8,11 @@
 #include <string_view>
 #include <system_error>
 #include <type_traits>
+#include <vector>
 
-#include "config/errors.hpp"
 #include "io/file_write.hpp"
+#include "model/case_params.hpp"
+#include "model/errors.hpp"
 
 #ifndef SPHJET_VERSION
 #define SPHJET_VERSION "unknown"
@@ -632,95 +634,47 @@ namespace sphjet::h5 {
 
 namespace {
 
-// Calls f(name, field, units) for every field of SimParams, in declaration order. units is
-// nullptr where no unit applies (enums, counts, switches). Add a new field here (and the
-// checkpoint test's size check will remind you).
-template <class P, class F>
-void visit_params(P& p, F&& f) {
-    const bool laminar = p.viscosity == ViscosityModel::Laminar;
-    f("kernel", p.kernel, nullptr);
-    f("integrator", p.integrator, nullptr);
-    f("density_filter", p.density_filter, nullptr);
-    f("filter_period", p.filter_period, "steps");
-    f("viscosity", p.viscosity, nullptr);
-    f("visc_value", p.visc_value, laminar ? "m^2/s" : "1");
-    f("wall_viscosity", p.wall_viscosity, "m^2/s");
-    f("boundary", p.boundary, nullptr);
-    f("dbc_period", p.dbc_period, "steps");
-    f("lattice", p.lattice, nullptr);
-    f("xsph_eps", p.xsph_eps, "1");
-    f("tensile_correction", p.tensile_correction, nullptr);
-    f("rho0", p.rho0, "kg/m^3");
-    f("gamma", p.gamma, "1");
-    f("h_swl", p.h_swl, "m");
-    f("coef", p.coef, "1");
-    f("B", p.B, "Pa");
-    f("lx", p.lx, "m");
-    f("lz", p.lz, "m");
-    f("dx", p.dx, "m");
-    f("dz", p.dz, "m");
-    f("h", p.h, "m");
-    f("variable_dt", p.variable_dt, nullptr);
-    f("dt", p.dt, "s");
-    f("cfl", p.cfl, "1");
-    f("tmax", p.tmax, "s");
-    f("out", p.out, "s");
-    f("trec_ini", p.trec_ini, "s");
-    f("gx", p.gx, "m/s^2");
-    f("gz", p.gz, "m/s^2");
-    f("sigma", p.sigma, "N/m");
-    f("st_delta", p.st_delta, nullptr);
-    f("gate_vx", p.gate_vx, "m/s");
-    f("gate_vz", p.gate_vz, "m/s");
-    f("gate_t_start", p.gate_t_start, "s");
-    f("gate_z_cap", p.gate_z_cap, "m");
-    f("drive_u", p.drive_u, "m/s");
-    f("drive_x0", p.drive_x0, "m");
-    f("drive_z0", p.drive_z0, "m");
-    f("drive_ex", p.drive_ex, "1");
-    f("drive_ez", p.drive_ez, "1");
-    f("drive_half_width", p.drive_half_width, "m");
-    f("drive_eps", p.drive_eps, "1");
-    f("drive_omega", p.drive_omega, "rad/s");
-    f("domain_box", p.domain_box, nullptr);
-    f("geometry", p.geometry, nullptr);
-    f("periodic_z", p.periodic_z, nullptr);
-    f("axis_pair", p.axis_pair, nullptr);
-    f("rings_curvature", p.rings_curvature, nullptr);
-    f("curvature_normals", p.curvature_normals, nullptr);
+// The rows of SimParams' members (model/case_params.hpp), in the order of its declaration:
+// the order of the attributes in the files.
+const std::vector<const Param*>& param_rows() {
+    static const std::vector<const Param*> rows = [] {
+        std::vector<const Param*> out;
+        for (const Param& r : case_params())
+            if (!r.attr.empty()) out.push_back(&r);
+        const SimParams p;
+        const auto at = [&p](const Param* r) { return static_cast<const char*>(r->member.address(&p)); };
+        std::stable_sort(out.begin(), out.end(), [&at](const Param* a, const Param* b) { return at(a) < at(b); });
+        return out;
+    }();
+    return rows;
 }
 
-// The "<name>_name" attribute of an enum parameter: its case-file name (EnumNames), "unknown"
-// for a value outside the table; the lattice keeps the long names its files have carried.
-template <NamedEnum E>
-std::string enum_name(E v) {
-    return to_string(v);
-}
-std::string enum_name(Lattice v) {
-    switch (v) {
-        case Lattice::SimpleCubic:
-            return "simple_cubic";
-        case Lattice::BodyCentred:
-            return "body_centred";
+// The "<name>_name" attribute of an enum parameter: its case-file name, "unknown" for a value
+// outside the table; the lattice keeps the long names its files have carried.
+std::string enum_name(const Param& r, std::int64_t v) {
+    if (r.attr == "lattice") {
+        if (v == static_cast<std::int64_t>(Lattice::SimpleCubic)) return "simple_cubic";
+        if (v == static_cast<std::int64_t>(Lattice::BodyCentred)) return "body_centred";
+        return "unknown";
     }
-    return "unknown";
+    return choice_name(r.choices, v);
 }
 
 }  // namespace
 
 void write_params(hid_t loc, const SimParams& p) {
-    visit_params(p, [loc](const char* name, const auto& v, const char* units) {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_enum_v<T>) {
-            write_attr(loc, name, static_cast<std::int64_t>(v));
-            write_attr(loc, std::string(name) + "_name", enum_name(v));
-        } else if constexpr (std::is_same_v<T, double>) {
-            write_attr(loc, name, v);
-        } else {  // int, bool
-            write_attr(loc, name, static_cast<std::int64_t>(v));
+    for (const Param* r : param_rows()) {
+        const std::string name(r->attr);
+        const Member& m = r->member;
+        if (m.store == Member::Store::Float) {
+            write_attr(loc, name, m.get_f(&p));
+        } else {
+            write_attr(loc, name, m.get_i(&p));
+            if (m.store == Member::Store::Enum) write_attr(loc, name + "_name", enum_name(*r, m.get_i(&p)));
         }
-        if (units != nullptr) write_attr(loc, std::string(name) + "_units", std::string(units));
-    });
+        const std::string_view units = attr_unit(*r, p);
+        if (!units.empty()) write_attr(loc, name + "_units", std::string(units));
+    }
     if (p.B > 0.0 && p.rho0 > 0.0) {
         write_attr(loc, "c0", p.c0());
         write_attr(loc, "c0_units", std::string("m/s"));
@@ -729,36 +683,25 @@ void write_params(hid_t loc, const SimParams& p) {
 
 SimParams read_params(hid_t loc) {
     SimParams p;
-    visit_params(p, [loc](const char* name, auto& v, const char*) {
-        using T = std::decay_t<decltype(v)>;
-        // Added after files were first written: files without it keep the default (for
-        // st_delta the pressure-consistent delta, the only model older builds had).
-        // The gate_* fields likewise (no moving boundary particles before them).
-        // The drive_* fields and domain_box likewise (no driven nozzle before them).
-        // geometry and periodic_z likewise (planar, not periodic before them), axis_pair
-        // (the smoothed-radius pair, the only one before it) and rings_curvature (the
-        // neighbours' mean, the rings pair's since eb97aa7), curvature_normals (all of them).
-        if ((std::string_view(name) == "st_delta" || std::string_view(name).starts_with("gate_") ||
-             std::string_view(name).starts_with("drive_") || std::string_view(name) == "domain_box" ||
-             std::string_view(name) == "geometry" || std::string_view(name) == "periodic_z" ||
-             std::string_view(name) == "axis_pair" || std::string_view(name) == "rings_curvature" ||
-             std::string_view(name) == "curvature_normals") &&
-            !has_attr(loc, name))
-            return;
-        if constexpr (std::is_enum_v<T>) {
-            v = static_cast<T>(read_attr_int64(loc, name));
-            if (enum_name(v) == "unknown") {
+    for (const Param* r : param_rows()) {
+        const std::string name(r->attr);
+        const Member& m = r->member;
+        // Added after files were first written: files without it keep the default.
+        if (r->h5_optional && !has_attr(loc, name)) continue;
+        if (m.store == Member::Store::Float) {
+            m.set_f(&p, read_attr_double(loc, name));
+        } else if (m.store == Member::Store::Enum) {
+            const std::int64_t v = read_attr_int64(loc, name);
+            if (enum_name(*r, v) == "unknown")
                 throw InputError(where_attr(loc, name), "unknown value", "a value this code knows",
                                  std::to_string(static_cast<int>(v)));
-            }
-        } else if constexpr (std::is_same_v<T, double>) {
-            v = read_attr_double(loc, name);
-        } else if constexpr (std::is_same_v<T, bool>) {
-            v = read_attr_int64(loc, name) != 0;
+            m.set_i(&p, v);
+        } else if (m.store == Member::Store::Bool) {
+            m.set_i(&p, read_attr_int64(loc, name) != 0 ? 1 : 0);
         } else {
-            v = static_cast<T>(read_attr_int64(loc, name));
+            m.set_i(&p, read_attr_int64(loc, name));
         }
-    });
+    }
     return p;
 }
 

@@ -3,7 +3,7 @@
 //
 // Every failure throws InputError naming the file and the object ("run/snap_000003.h5:
 // /particles/rho: ..."), with HDF5's own innermost message as what was found. HDF5's
-// automatic printing of its error stack is switched off while these helpers run.
+// automatic printing of its error stack is switched off while these functions run.
 #pragma once
 
 #include <hdf5.h>
@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "config/params.hpp"
+#include "model/params.hpp"
 
 namespace sphjet::h5 {
 

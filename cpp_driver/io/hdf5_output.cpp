@@ -11,10 +11,10 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "config/case_spec.hpp"
-#include "config/errors.hpp"
 #include "io/h5_util.hpp"
 #include "io/xdmf.hpp"
+#include "model/case_spec.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 

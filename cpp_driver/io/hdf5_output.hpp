@@ -53,9 +53,9 @@
 #include <utility>
 #include <vector>
 
-#include "config/params.hpp"
-#include "core/particles.hpp"
-#include "core/run_state.hpp"
+#include "model/params.hpp"
+#include "model/particles.hpp"
+#include "model/run_state.hpp"
 
 namespace sphjet {
 
@@ -110,7 +110,7 @@ public:
 
     // From the next snapshot on, also write the rings revolved into sectors copies (0: off;
     // the layout above). Throws std::invalid_argument unless 0 <= sectors <=
-    // kMaxRevolutionSectors (config/case_spec.hpp), and for sectors > 0 unless the parameters'
+    // kMaxRevolutionSectors (model/case_spec.hpp), and for sectors > 0 unless the parameters'
     // geometry is axisymmetric.
     void set_revolution_sectors(int sectors);
     [[nodiscard]] int revolution_sectors() const { return revolution_sectors_; }

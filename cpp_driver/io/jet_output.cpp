@@ -8,8 +8,8 @@
 #include <sstream>
 #include <vector>
 
-#include "config/errors.hpp"
 #include "io/h5_util.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 
@@ -22,7 +22,8 @@ const char* column_units(const std::string& name, bool round) {
     if (name == "L") return "m";
     if (name == "volume_out") return round ? "m^3" : "m^2";
     if (name == "flux") return round ? "m^3/s" : "m^2/s";
-    if (name == "u_flux" || name == "u_orifice") return "m/s";
+    if (name == "u_flux" || name == "u_orifice" || name == "ur_exit_rms") return "m/s";
+    if (name == "p_exit_mean" || name == "p_exit_std") return "Pa";
     return "1";
 }
 

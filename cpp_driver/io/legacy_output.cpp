@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "config/errors.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace fs = std::filesystem;

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/particles.hpp"
 #include "io/file_write.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 

@@ -7,11 +7,11 @@
 #include <fstream>
 #include <limits>
 
-#include "config/errors.hpp"
 #include "config/indat.hpp"
 #include "config/legacy_case.hpp"
 #include "config/modern_case.hpp"
 #include "geometry/generator.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::fuzz {
 namespace {

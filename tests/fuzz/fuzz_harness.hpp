@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "config/case_spec.hpp"
+#include "model/case_spec.hpp"
 
 namespace sphjet::fuzz {
 
@@ -72,7 +72,7 @@ void guard(const char* parser, F&& f);
 #include <exception>
 #include <typeinfo>
 
-#include "config/errors.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet::fuzz {
 

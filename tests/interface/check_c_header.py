@@ -59,19 +59,30 @@ def main():
     header = open(f"{src}/fortran_core/capi/sphjet_core.h").read()
     errors = []
     fs, hs = parse_structs(out), parse_structs(header)
-    for name, fields in fs.items():
-        if hs.get(name) != fields:
-            errors.append(f"struct {name}: Fortran {fields}\n  header {hs.get(name)}")
     ff, hf = parse_functions(out), parse_functions(header)
+    kinds = open(f"{src}/fortran_core/sphjet_kinds.f90").read()
+    fcodes = dict(re.findall(r"(SPH_\w+)\s*=\s*(\d+)", kinds))
+    hcodes = dict(re.findall(r"(SPH_\w+)\s*=\s*(\d+)", header))
+    # Nothing parsed on either side means the parse failed (another gfortran's output, an
+    # edited header layout), not that the two agree.
+    for what, found in [("bind(C) structs in gfortran's output", fs), ("structs in the header", hs),
+                        ("bind(C) functions in gfortran's output", ff),
+                        ("functions in the header", hf), ("SPH_* codes in sphjet_kinds.f90", fcodes),
+                        ("SPH_* codes in the header", hcodes)]:
+        if not found:
+            errors.append(f"no {what} parsed")
+    if set(fs) != set(hs):
+        errors.append(f"structs differ: only Fortran {sorted(set(fs) - set(hs))}, "
+                      f"only header {sorted(set(hs) - set(fs))}")
+    for name, fields in fs.items():
+        if name in hs and hs[name] != fields:
+            errors.append(f"struct {name}: Fortran {fields}\n  header {hs.get(name)}")
     if set(ff) != set(hf):
         errors.append(f"functions differ: only Fortran {set(ff) - set(hf)}, "
                       f"only header {set(hf) - set(ff)}")
     for name in set(ff) & set(hf):
         if ff[name] != hf[name]:
             errors.append(f"{name}: Fortran {ff[name]} header {hf[name]}")
-    kinds = open(f"{src}/fortran_core/sphjet_kinds.f90").read()
-    fcodes = dict(re.findall(r"(SPH_\w+)\s*=\s*(\d+)", kinds))
-    hcodes = dict(re.findall(r"(SPH_\w+)\s*=\s*(\d+)", header))
     if fcodes != hcodes:
         errors.append(f"status codes differ: Fortran {fcodes} header {hcodes}")
     print(f"checked {len(fs)} structs, {len(ff)} functions, {len(fcodes)} status codes")

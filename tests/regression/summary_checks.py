@@ -1,5 +1,6 @@
 """What the regression scripts share: run a case, read the line `SUMMARY key=value ...` that
-an analysis prints, and check its numbers against [LO, HI] ranges (surface_tension/check_drop.py,
+an analysis prints, and check its numbers against validation targets [LO, HI] and regression references REF +- TOL
+(surface_tension/check_drop.py,
 axisymmetric/check_axi.py); for the scripts that run sphjet themselves, a run that must
 succeed (run_or_exit); and, for the scripts that read HDF5 themselves, getting an
 interpreter with numpy and h5py (with_h5py).
@@ -73,17 +74,33 @@ def run_case(sphjet, case, out, sets, n_expect):
     return True
 
 
-def check(s, expect, show):
-    """LO <= s[KEY] <= HI for every KEY:LO:HI of expect (a missing or nan value fails), and
-    the values named in show printed -> exit status (0 when every check passed)."""
+def check(s, expect, show, regress=()):
+    """Two kinds of check on the SUMMARY numbers, a missing or nan value failing either:
+    expect, KEY:LO:HI, the validation target (LO <= s[KEY] <= HI: the physics' or the paper's
+    answer with the accuracy the case is meant to reach); regress, KEY:REF:TOL, the regression
+    check (|s[KEY] - REF| <= TOL: REF measured by this test, TOL a small multiple of how far a
+    rounding-level change moves it, so that a change of the results is seen). The values named
+    in show are printed. -> exit status (0 when every check passed)."""
     ok = bad = 0
+
+    def one(key, good, v, what):
+        nonlocal ok, bad
+        print(f"{'PASS' if good else 'FAIL'} {key} = {v} ({what})")
+        ok += good
+        bad += not good
+
+    def number(v):
+        return isinstance(v, float) and not math.isnan(v)
+
     for e in expect:
         key, lo, hi = e.rsplit(":", 2)
         v = s.get(key, float("nan"))
-        good = isinstance(v, float) and not math.isnan(v) and float(lo) <= v <= float(hi)
-        print(f"{'PASS' if good else 'FAIL'} {key} = {v} (expected in [{lo}, {hi}])")
-        ok += good
-        bad += not good
+        one(key, number(v) and float(lo) <= v <= float(hi), v, f"target [{lo}, {hi}]")
+    for e in regress:
+        key, ref, tol = e.rsplit(":", 2)
+        v = s.get(key, float("nan"))
+        one(key, number(v) and abs(v - float(ref)) <= float(tol), v,
+            f"regression: measured {ref} +- {tol}")
     for k in show:
         print(f"  {k} = {s.get(k)}")
     print(f"{ok} passed, {bad} failed")

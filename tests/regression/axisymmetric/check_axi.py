@@ -3,13 +3,15 @@
 
 Usage:
   check_axi.py SPHJET CASE OUT_DIR [--set KEY=VALUE ...] --analyse SUBCOMMAND
-               [--arg ARG ...] --expect KEY:LO:HI [--expect ...] [--show KEY ...]
+               [--arg ARG ...] --expect KEY:LO:HI [--expect ...]
+               [--regress KEY:REF:TOL ...] [--show KEY ...]
 
 Runs `SPHJET run CASE --out OUT_DIR --force -q -j THREADS --set ...` (THREADS from the
 environment variable SPHJET_TEST_THREADS, default 1), then
 `tools/axisymmetric.py SUBCOMMAND OUT_DIR ARG...` with /usr/bin/python3 (numpy, h5py; or
 $SPHJET_ANALYSIS_PYTHON), and checks
-LO <= value <= HI for every --expect (nan fails). Prints one line per check and a final line
+LO <= value <= HI for every --expect (the validation target) and |value - REF| <= TOL for
+every --regress (the regression check); nan fails either. Prints one line per check and a final line
 `N passed, M failed`; exit status 0 only when all passed. The physics and the reason for
 each tolerance are in the CMakeLists.txt that calls this script and in
 cases/axisymmetric/README.md.
@@ -35,11 +37,13 @@ def main():
     ap.add_argument("--set", action="append", default=[], dest="sets")
     ap.add_argument("--analyse", required=True)
     ap.add_argument("--arg", action="append", default=[], dest="args")
-    ap.add_argument("--expect", action="append", default=[])
+    ap.add_argument("--expect", action="append", default=[], help="KEY:LO:HI (validation target)")
+    ap.add_argument("--regress", action="append", default=[],
+                    help="KEY:REF:TOL (regression: |value - REF| <= TOL)")
     ap.add_argument("--show", action="append", default=[])
     a = ap.parse_args()
 
-    if not run_case(a.sphjet, a.case, a.out, a.sets, len(a.expect)):
+    if not run_case(a.sphjet, a.case, a.out, a.sets, len(a.expect) + len(a.regress)):
         return 1
     # the analysis needs numpy and h5py: Debian's interpreter has them (README), the one that
     # runs this script may not
@@ -51,9 +55,9 @@ def main():
     print(r.stdout[-3000:], r.stderr[-2000:])
     s = summary(r.stdout)
     if r.returncode != 0 or s is None:
-        print(f"0 passed, {len(a.expect)} failed")
+        print(f"0 passed, {len(a.expect) + len(a.regress)} failed")
         return 1
-    return check(s, a.expect, a.show)
+    return check(s, a.expect, a.show, a.regress)
 
 
 if __name__ == "__main__":

@@ -18,6 +18,8 @@ import subprocess
 import sys
 
 SKIP = 77
+FRONT_PARITY_TOL = 0.005  # relative; obstacle-legacy, see obstacle_legacy()
+TOP_PARITY_TOL = 0.005
 
 
 def sh(cmd):
@@ -81,8 +83,8 @@ class Table:
         d = (ours - ref) / ref if relative else ours - ref
         ok = abs(d) <= tol
         self.fails += 0 if ok else 1
-        ds = f"{100 * d:+8.2f}%" if relative else f"{d:+9.4f}"
-        ts = f"{100 * tol:8.1f}%" if relative else f"{tol:10.4f}"
+        ds = f"{100 * d:+8.3f}%" if relative else f"{d:+9.4f}"
+        ts = f"{100 * tol:8.2f}%" if relative else f"{tol:10.4f}"
         print(f"{name:34s} {t:7.3f} {ours:9.4f} {ref:9.4f} {ds:>9s} {ts:>10s}  {'ok' if ok else 'FAIL'}")
 
 
@@ -151,14 +153,27 @@ def obstacle_legacy(args):
     ours = analyse(args, out, os.path.join(args.work, "ours.csv"),
                    ["--obstacle", "0.292,0.316", "--overlap-with", legacy])
     leg = analyse(args, legacy, os.path.join(args.work, "legacy.csv"), ["--obstacle", "0.292,0.316"])
+    # Parity with legacy SPHysics on the same case at the same resolution (a regression check:
+    # legacy is the code this one reproduces). Measured (cases/dambreak_obstacle/README.md,
+    # the table under "Measures"): the surge front within 0.04% of legacy at every 0.05 s to
+    # 0.30 s, the highest point over the obstacle within 0.01% at 0.20-0.30 s (below the 0.05%
+    # that its four printed digits resolve). Tolerances about ten times those: 0.5% for both
+    # (FRONT_PARITY_TOL, TOP_PARITY_TOL). What they catch: the cubic spline instead of
+    # Wendland moves the top by 0.6-4% at 0.20-0.30 s (the same README), past 0.5%, though
+    # its front by only 0.02-0.25%: the front alone is a weak witness of the model.
     tab = Table()
     for k in range(1, 7):
         t = 0.05 * k
         o, l = at_time(ours, t), at_time(leg, t)
-        tab.check("surge front xfront_all (rel.)", t, fnum(o, "xfront_all"), fnum(l, "xfront_all"), 0.03, True)
+        tab.check("surge front xfront_all (rel.)", t, fnum(o, "xfront_all"), fnum(l, "xfront_all"),
+                  FRONT_PARITY_TOL, True)
         if k >= 4:
-            tab.check("highest point over obstacle (rel.)", t, fnum(o, "zmax_obst"), fnum(l, "zmax_obst"), 0.05, True)
-    # The footprint of the fluid (cells of 2 dx) at every output to the end (0.6 s).
+            tab.check("highest point over obstacle (rel.)", t, fnum(o, "zmax_obst"), fnum(l, "zmax_obst"),
+                      TOP_PARITY_TOL, True)
+    # The footprint of the fluid (cells of 2 dx) at every output to the end (0.6 s): it falls
+    # as the splash and the breaking tongue decorrelate (measured 0.9875 at 0.30 s, 0.958 at
+    # 0.6 s); at least 0.9 (--min-overlap) means the two runs put the fluid in the same cells
+    # but for a tenth of them. A chaotic measure, so a physical bound, not ten times a scatter.
     for o in ours:
         if o["number" if "number" in o else "output"] != "0" and o.get("overlap"):
             tab.check("grid overlap (2 dx cells)", float(o["time"]), fnum(o, "overlap"), 1.0,

@@ -4,7 +4,7 @@
 The Laplace drop (cases/laplace_disc, 1321 particles) runs with both output formats, an
 output every 1 ms and a checkpoint every 20 steps, to t = 0.01 s, with its run directory on a
 tmpfs of SIZE bytes (a real file system that really fills: ENOSPC from the kernel, no fault
-injection). Each SIZE makes a different file the one that does not fit. For each:
+injection). Each SIZE makes a different write the one that does not fit (checked). For each:
 
   1. the run exits with status 1 (an error, not a crash), and stderr says
      "No space left on device", names a file of the run directory, and gives the resume
@@ -36,10 +36,16 @@ import sys
 
 SKIP = 77
 # tmpfs sizes: with the outputs below (HDF5 1.10.8, Debian 12), the first write that does not
-# fit is the checkpoint before any checkpoint was written (350k), a snapshot (700k), the
-# checkpoint that would replace an earlier one (850k) and a PART file (1240k). The checks do
-# not depend on which file it is (another HDF5 may shift them); the file is printed per size.
-SIZES = ["350k", "700k", "850k", "1240k"]
+# fit is the checkpoint before any checkpoint was written (350k), a snapshot (700k: 680k-811k
+# stop there), the XDMF index (817k: 814k-820k) and the checkpoint that would replace an
+# earlier one (850k: 823k-966k); measured by stepping the size from 560k to 1700k. No size
+# of that scan stopped at a PART file, so the PART writer's disk-full path is checked by the
+# unit tests DiskFull.* only. The test checks
+# that the four sizes stop the run at four different writes (which file each is, is printed:
+# another HDF5 may shift them, and then SIZES must be chosen again, or the test would cover
+# fewer ways to fail), and that at least one stopped before and one after the first checkpoint
+# (so that both the "run the case again" and the resume paths are checked).
+SIZES = ["350k", "700k", "817k", "850k"]
 TMAX = "0.01"
 SETS = ["--format", "both", "-j", "1", "-q",
         "--set", "time.out=0.001", "--set", "output.checkpoint_every_steps=20",
@@ -188,6 +194,7 @@ def main():
 
     passed, failed = 0, 0
     failing_files = set()
+    stops = {}  # size -> (the file that did not fit, a checkpoint existed before)
     for size in SIZES:
         fails = []
         ok, why = mount_tmpfs(mnt, size)
@@ -208,9 +215,11 @@ def main():
                 fails.append("stderr does not say 'No space left on device'")
             if not m or not m.group(1).startswith(run_dir + os.sep):
                 fails.append("stderr names no file of the run directory")
-            else:
-                failing_files.add(re.sub(r"\d{4,}", "N", os.path.basename(m.group(1))))
             no_checkpoint = "no checkpoint was written yet" in err
+            if m and m.group(1).startswith(run_dir + os.sep):
+                name = re.sub(r"\d{4,}", "N", os.path.basename(m.group(1)))
+                failing_files.add(name)
+                stops[size] = (name, not no_checkpoint)
             if no_checkpoint:
                 if os.path.exists(os.path.join(run_dir, "checkpoint.h5")):
                     fails.append("stderr says no checkpoint, but checkpoint.h5 is there")
@@ -253,6 +262,18 @@ def main():
             print("  resumed after freeing space: final checkpoint, last snapshot, EPART, DT and "
                   "steps.txt equal the uninterrupted run's")
     print(f"files that did not fit: {', '.join(sorted(failing_files))}")
+    kinds = set(stops.values())
+    if len(kinds) != len(SIZES):
+        failed += 1
+        print(f"FAILED: the {len(SIZES)} sizes stopped the run at {len(kinds)} different writes "
+              f"({stops}); choose SIZES again so that each fails another write")
+    elif not any(k[1] for k in kinds) or all(k[1] for k in kinds):
+        failed += 1
+        print(f"FAILED: no size stopped the run {'after' if not any(k[1] for k in kinds) else 'before'} "
+              f"the first checkpoint ({stops})")
+    else:
+        passed += 1
+        print(f"each size stopped another write: {stops}")
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1
 

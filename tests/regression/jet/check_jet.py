@@ -4,7 +4,7 @@ the jet, D0/dx = 10; about 25 s on two cores).
 
 Checks, each with its reason:
   1. The orifice speed: every sample once the jet is out by D0 has flux / D0 within 2% of
-     u0 (the issue's bound; the plug is rigid, so only the compressibility of the fluid just
+     u0 (the project's target for the orifice speed; the plug is rigid, so only the compressibility of the fluid just
      past the orifice moves it: 1.0% measured).
   2. The jet breaks, and where gravity says: a jet leaving at u0 and falling freely thins to
      w(s) = D0 u0 / sqrt(u0^2 + 2 g s); at the breakup length L it must be between 1.5 and 4

@@ -25,11 +25,3 @@ TEST(CoreEos, TaitRoundTripAndSoundSpeed) {
         EXPECT_NEAR(dpdrho, c[i] * c[i], 1e-7 * c[i] * c[i]);
     }
 }
-
-// B = coef^2 rho0 g h_SWL / 7 gives c0 = coef sqrt(g h_SWL): the legacy Case1 numbers
-// (coef 10, h_SWL 2 m) give B = 280285.71 Pa (INDAT prints 280285.719) and c0 = 44.294 m/s.
-TEST(CoreEos, LegacyCase1Constants) {
-    const double b = 100.0 * 1000 * 9.81 * 2.0 / 7.0;
-    EXPECT_NEAR(b, 280285.714, 1e-3);
-    EXPECT_NEAR(std::sqrt(7 * b / 1000), 10 * std::sqrt(9.81 * 2), 1e-12);
-}

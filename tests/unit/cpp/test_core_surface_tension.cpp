@@ -1,7 +1,10 @@
 // CSF surface tension (Morris 2000; paper eqs 14-24) through the C interface
 // (sph_surface_tension_fields, sph_compute_rates, sph_step):
-//  - a static disc of radius R on a square lattice has curvature -1/R at its surface
-//    particles (colour C < 0.75: the outermost ring), mean within 5% for both kernels;
+//  - a static ring disc of radius R has curvature -1/R at its surface particles (the
+//    outermost ring), mean within 5% for both kernels; a disc cut from a square lattice has
+//    the right sign and magnitude on average;
+//  - every number these static sets give is also checked against its measured value
+//    (kRegressionTol below): a change of the model shows even where the target still holds;
 //  - the normal and the force point into the liquid (the paper's sign convention);
 //  - sigma = 0 leaves the rates bitwise unchanged; the CSF acceleration the rates loop adds is
 //    the one the entry point reports;
@@ -27,6 +30,27 @@
 using sphjet_test::CoreParticles;
 
 namespace {
+
+// Regression tolerance of the numbers measured on the fixed particle sets below: one
+// evaluation of the fields, no time stepping, so builds and thread counts change them by
+// round-off only (results are bitwise across thread counts, IndependentOfThreadCount; a reordered
+// sum moves a value of order 1 by ~1e-13). 1e-5 is ten times the precision the values are
+// printed and recorded with (1e-6), and catches a change of 0.001%.
+constexpr double kRegressionTol = 1e-5;
+
+// Measured values, [kernel: 0 cubic spline, 1 Wendland][R/dx: 10, 20, 40].
+using Measured = double[2][3];
+double measured(const Measured& m, int kernel, int nr) {
+    return m[kernel == 5 ? 1 : 0][nr == 10 ? 0 : nr == 20 ? 1 : 2];
+}
+constexpr Measured kStaticDiscMeasured = {{-0.999839, -0.998482, -0.998757},
+                                          {-0.991583, -0.994421, -0.996827}};
+constexpr Measured kLatticeDiscMeasured = {{-0.959937, -0.969469, -0.999975},
+                                           {-0.936731, -0.903159, -0.931474}};
+constexpr Measured kLaplaceMeasured = {{1.055338, 1.025097, 1.009854},
+                                       {1.046488, 1.021866, 1.010458}};
+constexpr Measured kLaplacePaperMeasured = {{0.138451, 0.133358, 0.130915},
+                                            {0.119822, 0.116005, 0.114004}};
 
 constexpr int kCubic = 3;
 constexpr int kWendland = 5;
@@ -120,8 +144,10 @@ void csf(CoreParticles& ps, Fields& f, const sph_params_t& prm) {
 class StaticDisc : public ::testing::TestWithParam<std::tuple<int, int>> {};
 
 // kappa = div(nhat) with nhat = -e_r is -1/r. Surface particles: the outermost ring, at
-// r_s = nr dx (the drop's edge, by area, is half a spacing further out). The 5% tolerance on
-// the mean is the brief's.
+// r_s = nr dx (the drop's edge, by area, is half a spacing further out). The mean within 5%:
+// the project's target for the surface curvature (README, validation cases). Measured
+// kappa r_s (regression, kRegressionTol): cubic spline -0.9998 / -0.9985 / -0.9988, Wendland
+// -0.9916 / -0.9944 / -0.9968 at R/dx = 10 / 20 / 40 (6 digits in kStaticDiscMeasured).
 TEST_P(StaticDisc, SurfaceCurvatureIsMinusOneOverR) {
     const auto [kernel, nr] = GetParam();
     const double dx = 0.001, rs = nr * dx, xc = 0.1, zc = 0.1;
@@ -140,12 +166,14 @@ TEST_P(StaticDisc, SurfaceCurvatureIsMinusOneOverR) {
         }
     }
     const Stats s = stats(kr), c = stats(cs), b = stats(band);
-    std::printf("kernel %d R/dx %d: %zu surface particles, kappa r_s mean %.4f sd %.2e "
+    std::printf("kernel %d R/dx %d: %zu surface particles, kappa r_s mean %.6f sd %.2e "
                 "[%.4f, %.4f] (kappa (r_s + dx/2) mean %.4f), colour %.3f; rows 2-3: kappa r "
                 "mean %.4f sd %.2e\n",
                 kernel, nr, s.n, s.mean, s.sd, s.min, s.max, s.mean * (rs + 0.5 * dx) / rs,
                 c.mean, b.mean, b.sd);
     EXPECT_NEAR(s.mean, -1.0, 0.05);
+    EXPECT_NEAR(s.mean, measured(kStaticDiscMeasured, kernel, nr), kRegressionTol)
+        << "regression: kernel " << kernel << " R/dx " << nr;
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, StaticDisc,
@@ -153,8 +181,11 @@ INSTANTIATE_TEST_SUITE_P(Kernels, StaticDisc,
                                             ::testing::Values(10, 20, 40)));
 
 // The same on a square lattice: the staircase edge has its own curvature of order 1/dx at
-// corners, so single particles scatter widely; only the mean over the edge particles is
-// printed and checked loosely (sign and magnitude within 50%).
+// corners, so single particles scatter widely (sd 0.35-1.8 in kappa R) and the mean over the
+// edge particles does not converge to -1/R (measured kappa R: cubic spline -0.960 / -0.970 /
+// -1.000, Wendland -0.937 / -0.903 / -0.932 at R/dx = 10 / 20 / 40): the physics asks only
+// the sign and the magnitude (within 50%: a staircase edge is not a circle); the measured
+// means are checked as regression values (kRegressionTol).
 TEST(CoreSurfaceTension, LatticeDiscMeanCurvature) {
     for (int kernel : {kCubic, kWendland})
         for (int nr : {10, 20, 40}) {
@@ -166,9 +197,11 @@ TEST(CoreSurfaceTension, LatticeDiscMeanCurvature) {
             for (std::size_t i = 0; i < ps.x.size(); ++i)
                 if (std::hypot(ps.x[i] - xc, ps.z[i] - zc) > R - dx) kr.push_back(f.kappa[i] * R);
             const Stats s = stats(kr);
-            std::printf("lattice kernel %d R/dx %d: %zu edge particles, kappa R mean %.4f sd "
+            std::printf("lattice kernel %d R/dx %d: %zu edge particles, kappa R mean %.6f sd "
                         "%.3f\n", kernel, nr, s.n, s.mean, s.sd);
             EXPECT_NEAR(s.mean, -1.0, 0.5);
+            EXPECT_NEAR(s.mean, measured(kLatticeDiscMeasured, kernel, nr), kRegressionTol)
+                << "regression: kernel " << kernel << " R/dx " << nr;
         }
 }
 
@@ -376,12 +409,7 @@ TEST(CoreSurfaceTension, TimeStepRespectsCapillaryLimit) {
 // Discrete Laplace balance of a static ring disc: the uniform pressure p* that best balances
 // the CSF force (least squares over all particles of |a_p(p) + a_s|, a_p the pair pressure
 // acceleration of rates.f90 with p uniform) against sigma/R, R = (nr + 1/2) dx (the area
-// radius).
-//  - st_delta = 0 (pressure_consistent, the default): measured 1.10/1.06/1.04 (cubic spline)
-//    and 1.05/1.02/1.00 (Wendland) at R/dx = 10/20/40: within 10%, converging with
-//    resolution (the excess is the curvature -1/r of the outer rows, r < R).
-//  - st_delta = 1 (colour_gradient, eq 24 as the paper prints it): 0.11-0.14, the paper's force
-//    at a free surface holds only about 1/8 of the Laplace jump; checked to lie in [0.08, 0.2].
+// radius). The measured values and the tolerances: LaplaceBalanceOfStaticDisc below.
 double laplace_balance(int kernel, int nr, int st_delta) {
     const double dx = 0.001, xc = 0.1, zc = 0.1, R = (nr + 0.5) * dx;
     auto ps = ring_disc(nr, dx, xc, zc);
@@ -410,17 +438,26 @@ double laplace_balance(int kernel, int nr, int st_delta) {
 }
 
 // The default model (free-surface curvature, pressure-consistent delta) converges to the
-// Laplace jump at first order in dx/R: measured 1.055 / 1.025 / 1.010 (cubic spline) and
-// 1.047 / 1.022 / 1.011 (Wendland) at R/dx = 10 / 20 / 40. Checked: the brief's 3% from
-// R/dx = 20 on, 6% at R/dx = 10, and the error falling with resolution. The paper's eq 24
-// holds only 0.11-0.14 of it at a free surface (band 0.08-0.20).
+// Laplace jump at first order in dx/R (the excess is the curvature -1/r of the outer rows,
+// r < R): measured 1.0553 / 1.0251 / 1.0099 (cubic spline) and 1.0465 / 1.0219 / 1.0105
+// (Wendland) at R/dx = 10 / 20 / 40. Checked: the project's 3% target from R/dx = 20 on, 6%
+// at R/dx = 10 (first order: twice the error at half the resolution), and the error falling
+// with resolution. The paper's eq 24 (st_delta = 1, colour gradient) holds only 0.1385 /
+// 0.1334 / 0.1309 (cubic spline) and 0.1198 / 0.1160 / 0.1140 (Wendland) of it at a free
+// surface: there is no physics target for a model that misses the jump; the band 0.08-0.20
+// says "about 1/8", and the measured values are checked as regression values. Both with
+// kRegressionTol (6 digits in kLaplaceMeasured, kLaplacePaperMeasured).
 TEST(CoreSurfaceTension, LaplaceBalanceOfStaticDisc) {
     for (int kernel : {kCubic, kWendland}) {
         double previous_error = 1.0;
         for (int nr : {10, 20, 40}) {
             const double r0 = laplace_balance(kernel, nr, 0), r1 = laplace_balance(kernel, nr, 1);
-            std::printf("kernel %d R/dx %d: p*/(sigma/R) = %.4f pressure_consistent, %.4f "
+            std::printf("kernel %d R/dx %d: p*/(sigma/R) = %.6f pressure_consistent, %.6f "
                         "colour_gradient (paper eq 24)\n", kernel, nr, r0, r1);
+            EXPECT_NEAR(r0, measured(kLaplaceMeasured, kernel, nr), kRegressionTol)
+                << "regression: kernel " << kernel << " R/dx " << nr;
+            EXPECT_NEAR(r1, measured(kLaplacePaperMeasured, kernel, nr), kRegressionTol)
+                << "regression (eq 24): kernel " << kernel << " R/dx " << nr;
             EXPECT_NEAR(r0, 1.0, nr >= 20 ? 0.03 : 0.06) << "kernel " << kernel << " R/dx " << nr;
             EXPECT_LT(std::abs(r0 - 1.0), previous_error) << "kernel " << kernel << " R/dx " << nr;
             previous_error = std::abs(r0 - 1.0);

@@ -27,12 +27,12 @@
 #include <string>
 #include <vector>
 
-#include "config/errors.hpp"
 #include "io/checkpoint.hpp"
 #include "io/file_write.hpp"
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;

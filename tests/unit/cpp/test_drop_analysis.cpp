@@ -1,5 +1,6 @@
 // analysis/drop: the measures of a free drop on particle sets whose answers are known.
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -7,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "analysis/drop.hpp"
-#include "config/case_spec.hpp"
 #include "geometry/generator.hpp"
+#include "model/case_spec.hpp"
 
 using sphjet::ParticleKind;
 using sphjet::ParticleSet;
@@ -60,7 +61,12 @@ TEST(DropAnalysis, RingDiscAreaOutlinePressureCurvature) {
     ASSERT_TRUE(m.kappa_surface.has_value());
     EXPECT_NEAR(m.kappa_surface->mean, -1.0 / (nr * dx), 1e-9);
     EXPECT_NEAR(m.speed_max, 0.003, 1e-15);
-    EXPECT_NEAR(m.deformation, 0.0, 1e-3);
+    // Every ring holds n >= 6 equally spaced particles, for which sum cos^2 = sum sin^2 = n/2
+    // and sum sin cos = 0 exactly: the second moments are isotropic and D = 0 up to the
+    // round-off of the sums (measured 2e-16; 1e-12 is far above round-off and far
+    // below the 1e-3 a single particle moved by 1% of R gives).
+    std::printf("ring disc deformation %.3e\n", m.deformation);
+    EXPECT_NEAR(m.deformation, 0.0, 1e-12);
 }
 
 // An ellipse x = a cos, z = b sin (uniform filling): D = (a^2 - b^2)/(a^2 + b^2), the

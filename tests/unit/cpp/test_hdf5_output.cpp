@@ -21,11 +21,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "config/case_spec.hpp"
-#include "config/errors.hpp"
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/xdmf.hpp"
+#include "model/case_spec.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;

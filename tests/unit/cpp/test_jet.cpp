@@ -4,6 +4,7 @@
 // apart); a column with one gap of known size gives its breakup length; a row of square
 // drops gives their count and equivalent diameters (d = 2 sqrt(A / pi) to round-off); eq 37
 // gives the paper's Table 1 values to the 2 decimals it prints.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -12,10 +13,10 @@
 #include <gtest/gtest.h>
 
 #include "analysis/jet_monitor.hpp"
-#include "config/case_spec.hpp"
 #include "config/modern_case.hpp"
 #include "geometry/generator.hpp"
 #include "geometry/nozzle.hpp"
+#include "model/case_spec.hpp"
 
 using namespace sphjet;
 using namespace sphjet::analysis;
@@ -254,6 +255,56 @@ TEST(JetMonitor, RoundJetFluxDropsAndNeck) {
     EXPECT_LT(*r.neck_s, 0.025);
     const std::string row = jet_csv_row(r, nz.d0);
     EXPECT_NE(row.find(",1,0.2,"), std::string::npos) << row;  // 1 satellite, neck r / d0 = 0.2
+}
+
+// The disturbance record of a round jet: a column of 5 rings whose surface ring sits at
+// r_s(s) = a + A sin(k s) (the other rings on the lattice) gives that radius, plus half a
+// spacing, in the surface profile (the largest over three slices; to round-off), and the exit noise is the
+// mean and spread of the pressures put within 2 d0 of the orifice (alternating p0 +- dp:
+// mean p0, standard deviation dp) and the rms of the radial velocities there.
+TEST(JetMonitor, RoundJetSurfaceProfileAndExitNoise) {
+    NozzleSpec nz = down_nozzle();
+    nz.x0 = 0.0;
+    const double ds = 0.001, dl = 0.001, rho = 1000, h = 0.002, u0 = nz.u0;
+    const double amp = 0.1 * dl, k = 2 * std::numbers::pi / 0.009, p0 = 120, dp = 30, ur = 0.01;
+    ParticleSet ps;
+    int n = 0;
+    for (double s = 0.0005; s < 0.05; s += ds, ++n) {
+        for (int j = 0; j < (n == 25 ? 4 : 5); ++j) {
+            const double r = (j + 0.5) * dl + (j == 4 ? amp * std::sin(k * s) : 0.0);
+            const double p = s < 2 * nz.d0 ? p0 + (n % 2 ? dp : -dp) : 0.0;
+            const double u = s < 2 * nz.d0 ? (j % 2 ? ur : -ur) : 0.0;
+            ps.push(r, 0.4 - s, u, -u0, rho, p, rho * 2 * std::numbers::pi * r * dl * ds, ParticleKind::Fluid);
+        }
+    }
+    JetMonitor mon(nz, BreakupSpec{}, h, rho, ds, true);
+    mon.start(ps, 0.0);
+    const JetSample r = mon.sample(ps, 0.1, 7);
+    ASSERT_FALSE(r.length);
+    // the profile runs to one d0 short of the tip (0.0495 - 0.01)
+    ASSERT_EQ(r.surface.size(), 40u);
+    // slice i reads the largest ring radius of rows i - 1 ... i + 1 (row n has s = (n + 1/2) ds),
+    // also at row 25, built without its outer ring (a stretched row: that slice alone holds no
+    // outer ring); the neck is the thinnest single slice: row 25, one ring short
+    const auto outer = [&](int n) { return 4.5 * dl + amp * std::sin(k * (n + 0.5) * ds); };
+    for (int i = 0; i < static_cast<int>(r.surface.size()); ++i) {
+        double widest = 0;
+        for (int n = std::max(i - 1, 0); n <= std::min(i + 1, 39); ++n)
+            if (n != 25) widest = std::max(widest, outer(n));
+        EXPECT_NEAR(r.surface[static_cast<std::size_t>(i)], widest + 0.5 * ds, 1e-12) << "slice " << i;
+    }
+    ASSERT_TRUE(r.neck_r);
+    EXPECT_NEAR(*r.neck_r, 4.0 * dl, 1e-12);
+    // 20 rows of 5 rings within 2 d0 = 0.02 m, alternating +- dp by row
+    EXPECT_EQ(r.exit_n, 100u);
+    EXPECT_NEAR(r.exit_p_mean, p0, 1e-9);
+    EXPECT_NEAR(r.exit_p_std, dp, 1e-9);
+    EXPECT_NEAR(r.exit_ul_rms, ur, 1e-12);
+    const std::string rows = surface_csv_rows(r, nz.d0, ds);
+    EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 40);
+    EXPECT_EQ(rows.rfind("0.1,7,0.05,", 0), 0u) << rows.substr(0, 40);
+    const std::string row = jet_csv_row(r, nz.d0);
+    EXPECT_NE(row.find(",100,120,30,0.01"), std::string::npos) << row;
 }
 
 TEST(JetGroups, Eq37ReproducesTable1) {

@@ -11,9 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "config/errors.hpp"
 #include "config/legacy_case.hpp"
+#include "core/solver.hpp"
 #include "geometry/generator.hpp"
+#include "model/errors.hpp"
+#include "sphjet_core.h"
 
 namespace fs = std::filesystem;
 using namespace sphjet;
@@ -104,6 +106,30 @@ TEST(LegacyCase, ValidCaseGivesTheGeneratorsParameters) {
     EXPECT_TRUE(s.legacy_fill);
     EXPECT_EQ(s.legacy.xz_precision, 2);
     EXPECT_DOUBLE_EQ(s.legacy.detail_end, -1.0);
+}
+
+// The legacy Case1 dam break (tests/regression/case1_early/Case1E.txt: coef 10, h_SWL 2 m)
+// read by the case reader and handed to the core's Tait EoS: B = coef^2 rho0 g h_SWL / 7 in
+// single precision, as SPHYSICSgen2D (its INDAT prints 280285.719), c0 = coef sqrt(g h_SWL)
+// = 44.294 m/s (relative 1e-7: B's single-precision rounding), and the core's sound speed at
+// rho0 is that c0 (sph_eos's c = c0 (rho/rho0)^3, exact at rho0 to round-off).
+TEST(LegacyCase, Case1SoundSpeedReachesTheEos) {
+    const CaseSpec s = read_legacy_case(fs::path(SPHJET_SOURCE_DIR) / "tests" / "regression" /
+                                        "case1_early" / "Case1E.txt");
+    const SimParams& p = s.params;
+    EXPECT_EQ(p.B, static_cast<double>(100.0f * 1000.0f * 9.81f * 2.0f / 7.0f));
+    EXPECT_NEAR(p.B, 280285.719, 1e-3);
+    const double c0 = 10 * std::sqrt(9.81 * 2.0);
+    EXPECT_NEAR(p.c0(), c0, 1e-7 * c0);
+    const sph_params_t prm = core_params(p, s.output, DomainBounds{0, 4, 0, 4});
+    EXPECT_EQ(prm.b, p.B);
+    double rho[2] = {p.rho0, 1.01 * p.rho0}, pr[2], c[2];
+    ASSERT_EQ(sph_eos(&prm, 2, rho, pr, c), SPH_OK);
+    EXPECT_EQ(pr[0], 0.0);
+    EXPECT_NEAR(c[0], c0, 1e-7 * c0);
+    // p = B ((rho/rho0)^7 - 1) at 1% compression (relative 1e-12: round-off of pow)
+    const double p1 = p.B * (std::pow(1.01, 7) - 1);
+    EXPECT_NEAR(pr[1], p1, 1e-12 * p1);
 }
 
 TEST(LegacyCase, SeveralFillRegionsObstaclesAndWalls) {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "config/errors.hpp"
 #include "io/legacy_output.hpp"
+#include "model/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphjet;

@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "config/errors.hpp"
 #include "config/legacy_case.hpp"
 #include "config/modern_case.hpp"
+#include "model/errors.hpp"
 
 namespace sphjet {
 namespace {
@@ -445,7 +445,7 @@ TEST(ModernCase, SoundSpeedGivenDirectly) {
 }
 
 // The run log's note on a first step above the CFL step cfl h / c0 of the fluid at rest
-// (config/params.cpp): the ratio it states, and no note at or below that step.
+// (model/params.cpp): the ratio it states, and no note at or below that step.
 TEST(ModernCase, InitialStepNote) {
     SimParams p;
     p.rho0 = 1000.0;

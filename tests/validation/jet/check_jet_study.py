@@ -5,7 +5,7 @@ cores; resumable (a killed test continues where it stopped when run again).
 Asserts, for every run of the study:
   - it ended: finished, or stopped by a blow-up that the report names (a blow-up is a result);
   - the orifice speed: the mean of flux / D0 over the samples once the jet is out by D0 is
-    within 2% of u0 (the issue's bound; measured -0.75% to +1.4%). Single 2 ms samples of
+    within 2% of u0 (the project's target for the orifice speed; measured -0.75% to +1.4%). Single 2 ms samples of
     the slowest jet scatter by up to 18% (the free particles within half a spacing past the
     orifice line accelerate under gravity as they cross), so the bound is on the mean.
 Prints Table 1 (cases/jet/table1.md has it) without asserting the paper's goals, which this

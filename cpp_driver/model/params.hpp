@@ -42,8 +42,8 @@ enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 enum class CurvatureNormals : int { All = 0, SurfaceBand = 1 };
 
 // The case file's name of each value of an enum, written once: the modern reader accepts these
-// (modern_case.cpp, choose), and to_string, the case echo, the HDF5 attributes and the
-// messages write them. One specialisation per enum that a case names.
+// (through kChoicesOf in model/case_params.hpp), and to_string, the case echo, the HDF5
+// attributes and the messages write them. One specialisation per enum that a case names.
 template <class E>
 struct EnumNames;
 
@@ -118,27 +118,10 @@ template <class E, std::size_t N>
     return "unknown";
 }
 
-// A table's names as the case echo lists them: "a | b | c".
-template <class E, std::size_t N>
-[[nodiscard]] std::string choices_in(const NameTable<E, N>& table) {
-    std::string s;
-    for (const auto& [name, value] : table) {
-        if (!s.empty()) s += " | ";
-        s += name;
-    }
-    return s;
-}
-
 // The case file's name of e ("unknown" for a value outside the table).
 template <NamedEnum E>
 [[nodiscard]] std::string to_string(E e) {
     return name_in(EnumNames<E>::list, e);
-}
-
-// The names of E's values as the case echo lists them.
-template <NamedEnum E>
-[[nodiscard]] std::string choices() {
-    return choices_in(EnumNames<E>::list);
 }
 
 struct SimParams {

@@ -1,4 +1,4 @@
-#include "core/particles.hpp"
+#include "model/particles.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "config/params.hpp"
+#include "model/params.hpp"
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "config/params.hpp"
+#include "model/params.hpp"
 
 namespace sphjet {
 

@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""The project speaks of itself: no word of how it was built in its docs, cases and code.
+
+Usage: check_wording.py SOURCE_DIR
+
+Searches README.md, docs/, cases/, cpp_driver/, fortran_core/ and tools/ (every text file)
+for the words "session", "issue", "helper" and "speed5", case-insensitive. A run's own
+sessions are allowed: a run stopped and resumed has several in its run.log, and the study
+tools sum over them; the phrases below are the only ones that may say "session". Prints each
+hit as FILE:LINE: text, and exits 1 if there is any.
+"""
+import os
+import re
+import sys
+
+ROOTS = ("README.md", "docs", "cases", "cpp_driver", "fortran_core", "tools")
+WORDS = re.compile(r"session|issue|helper|speed5", re.I)
+# A run's resumed sessions (tools/study_runs.py reads run.log by them).
+ALLOWED = re.compile(r"last_session|last session of its run\.log|run's last session stopped|"
+                     r"resumed sessions|over all sessions|summed over sessions|\"sessions\"|"
+                     r"sessions, finished|for l in session\b|\bsession = last_session", re.I)
+
+
+def files(source):
+    for root in ROOTS:
+        top = os.path.join(source, root)
+        if os.path.isfile(top):
+            yield top
+            continue
+        for d, dirs, names in os.walk(top):
+            dirs[:] = [x for x in dirs if x != "__pycache__"]
+            for name in sorted(names):
+                yield os.path.join(d, name)
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    source = os.path.abspath(sys.argv[1])
+    hits, n_files = [], 0
+    for path in files(source):
+        try:
+            text = open(path, encoding="utf-8").read()
+        except (UnicodeDecodeError, OSError):
+            continue  # binary: images, HDF5
+        n_files += 1
+        for n, line in enumerate(text.split("\n"), 1):
+            rest = ALLOWED.sub("", line)
+            if WORDS.search(rest):
+                hits.append(f"{os.path.relpath(path, source)}:{n}: {line.strip()[:160]}")
+    for h in hits:
+        print(h)
+    print(f"{n_files} text files searched, {len(hits)} lines with session/issue/helper/speed5")
+    return 1 if hits else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""tools/jet_noise.py on a synthetic run (case.toml, jet.csv, jet_surface.csv; no sphjet) whose
+answers are known by construction.
+
+The surface is a travelling wave growing along the jet,
+    r_s(s, t) = a + delta0 exp(k_s s) sin(omega t - k s),
+sampled 400 times over 40 wave periods at slices of 0.1 d0 up to 12 d0, with delta0 = 1e-4 a and
+k_s = 0.8 per d0 (the amplitude passes a/4 at s = 6.9 d0). The envelope is then the amplitude
+delta0 exp(k_s s) itself (sqrt(2) x the rms over whole periods of a sine), so the fit must give
+k_s and C = ln(a/delta0) = 9.21 to the sampling's error: the samples cover whole periods but the
+median about which the rms is taken is the sampled median, and the fit's ends sit on slices of
+0.1 d0. Tolerances: k_s within 1%, C within 0.05 (0.5%), well below what would change a
+reading of the diagnostic (a C of 3 against 18). The exit columns are constant (p = 130 +- 20
+Pa, u_r 0.01 m/s): the medians must be those values in units of sigma/a and the capillary
+velocity, to the 6 digits of the SUMMARY line (1e-5 relative). The spectrum's peak must sit at the wave's ka = k d0 / 2 = 0.7 within one bin of its
+grid.
+
+usage: test_jet_noise.py   (exit 0 on success, 1 with a message on failure)
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
+TOOL = os.path.join(REPO, "tools", "jet_noise.py")
+PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+
+D0, U0, SIGMA, RHO, MU = 0.001194, 0.7814, 0.072, 1000.0, 1.0e-3
+A = D0 / 2
+DELTA0, KS = 1e-4, 0.8          # delta0 / a, growth per d0
+KA = 0.7                        # the wave: k d0 = 2 ka
+PERIODS, SAMPLES = 40, 400
+
+
+def write_run(d):
+    with open(os.path.join(d, "case.toml"), "w") as f:
+        f.write(f"""format_version = 1
+[fluid]
+rho0 = {RHO}
+c0 = 16.0
+mu = {MU}
+[surface_tension]
+sigma = {SIGMA}
+[domain]
+geometry = "axisymmetric"
+[nozzle]
+x0 = 0.0
+z0 = 0.11
+d0 = {D0}
+u0 = {U0}
+disturbance = 0.0
+disturbance_ka = {KA}
+""")
+    k = 2 * KA  # per d0
+    omega = 1.0  # per sample unit: the periods are whole over the samples
+    jet = ["time,step,volume_out,flux,u_flux,u_orifice,broken,L,L_over_d0,jet_tip_over_d0,n_drops,"
+           "head_drop_d_over_d0,largest_drop_d_over_d0,n_satellites,neck_r_over_d0,neck_s_over_d0,"
+           "n_exit,p_exit_mean,p_exit_std,ur_exit_rms"]
+    surf = ["time,step,s_over_d0,r_over_d0"]
+    for n in range(SAMPLES):
+        t = 0.01 + n * 1e-4
+        phase = 2 * math.pi * PERIODS * n / SAMPLES
+        jet.append(f"{t},{n},0,0,{U0},{U0},1,{12 * D0},12,13,1,1.9,1.9,0,0.4,5,100,130,20,0.01")
+        for i in range(120):
+            s = (i + 0.5) * 0.1
+            r = A * (1 + DELTA0 * math.exp(KS * s) * math.sin(phase - k * s + 0.3 * omega))
+            surf.append(f"{t},{n},{s:.6g},{r / D0:.12g}")
+    with open(os.path.join(d, "jet.csv"), "w") as f:
+        f.write("\n".join(jet) + "\n")
+    with open(os.path.join(d, "jet_surface.csv"), "w") as f:
+        f.write("\n".join(surf) + "\n")
+
+
+def main():
+    failures = []
+    with tempfile.TemporaryDirectory() as d:
+        write_run(d)
+        out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
+        print(out.stdout + out.stderr)
+        if out.returncode != 0:
+            print(f"FAIL: jet_noise.py exited {out.returncode}")
+            return 1
+        m = re.search(r"^SUMMARY (.*)$", out.stdout, re.M)
+        if not m:
+            print("FAIL: no SUMMARY line")
+            return 1
+        got = dict(kv.split("=") for kv in m.group(1).split())
+        val = {k: float(v) for k, v in got.items()}
+        c_true = math.log(1 / DELTA0)
+        if not abs(val.get("k_s_per_d0", 0) / KS - 1) < 0.01:
+            failures.append(f"k_s {val.get('k_s_per_d0')} per d0, built with {KS} (1%)")
+        if not abs(val.get("C", 0) - c_true) < 0.05:
+            failures.append(f"C {val.get('C')}, built with ln(1/{DELTA0}) = {c_true:.3f} (0.05)")
+        p_unit = SIGMA / A
+        v_cap = math.sqrt(SIGMA / (RHO * A))
+        if not abs(val["p_exit_mean_over_sigma_a"] - 130 / p_unit) < 1e-5 * 130 / p_unit:
+            failures.append(f"exit p mean {val['p_exit_mean_over_sigma_a']} sigma/a, built {130 / p_unit}")
+        if not abs(val["p_exit_std_over_sigma_a"] - 20 / p_unit) < 1e-5 * 20 / p_unit:
+            failures.append(f"exit p std {val['p_exit_std_over_sigma_a']} sigma/a, built {20 / p_unit}")
+        if not abs(val["ur_exit_rms_over_vcap"] - 0.01 / v_cap) < 1e-5 * 0.01 / v_cap:
+            failures.append(f"exit u_r {val['ur_exit_rms_over_vcap']} v_cap, built {0.01 / v_cap}")
+        # the spectrum's grid: 64 bins up to ka = pi / (2 x 0.1) = 15.7, 0.245 apart
+        if not abs(val.get("spectrum_peak_ka", 0) - KA) < 0.25:
+            failures.append(f"spectrum peak at ka {val.get('spectrum_peak_ka')}, built {KA} (one bin)")
+    for f in failures:
+        print("FAIL: " + f)
+    print("OK" if not failures else f"{len(failures)} failure(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,238 @@
+#!/usr/bin/env python3
+"""The disturbance of a jet along its length, from a run's jet.csv and jet_surface.csv
+(cases/CASE_FORMAT.md, [breakup]): where it starts, how fast it grows, and how quiet the exit is.
+
+    /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--plot OUT.png]
+
+- exit: the medians over the samples (t >= T) of the pressure's mean and standard deviation
+  and of the radial velocity's rms over the jet's particles within 2 d0 of the orifice, in
+  units of sigma/a (a = d0/2; round jets) and of the capillary velocity sqrt(sigma/(rho a)).
+- envelope: at each slice s of the surface profile r_s(s, t), the disturbance amplitude
+  A(s) = sqrt(2) x the rms over the samples of r_s - its median (the amplitude of a sine of that
+  rms), over the slices that the intact jet reaches in at least half of the samples.
+- fit: ln A(s) = ln(delta0) + k_s s over the growing stretch (from the smallest A after the
+  first half d0 to where A first passes a/4): the spatial growth k_s, its temporal equivalent
+  omega = k_s u0 (the jet carries the disturbance at u0), and the intercept delta0 at the
+  orifice. C = ln(a/delta0) is the constant of Weber's law L = u0 C / omega.
+- theory: Weber's (1931) viscous growth rate, the largest over ka and at the case's forcing
+  wavenumber (nozzle.disturbance_ka), and the breakup length C u0 / omega_Weber that the
+  measured C gives with it.
+- spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
+  at least 4 d0 long), and its peak ka.
+Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
+planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from axisymmetric import weber_omega  # noqa: E402
+
+
+def read_case(run):
+    with open(os.path.join(run, "case.toml"), "rb") as f:
+        case = tomllib.load(f)
+    nz, fl = case["nozzle"], case["fluid"]
+    rho = fl.get("rho0", 1000.0)
+    nu = fl["mu"] / rho if "mu" in fl else fl.get("nu", 0.0)
+    return {
+        "d0": nz["d0"], "u0": nz["u0"], "rho": rho, "nu": nu,
+        "sigma": case.get("surface_tension", {}).get("sigma", 0.0),
+        "ka": nz.get("disturbance_ka", 0.697), "eps": nz.get("disturbance", 0.0),
+        "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric",
+    }
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def median(v):
+    v = sorted(v)
+    n = len(v)
+    if n == 0:
+        return float("nan")
+    return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
+
+
+def weber_max(oh):
+    """Weber's largest growth rate over ka and its ka (units of sqrt(sigma/(rho a^3)))."""
+    best = max((weber_omega(k / 1000.0, oh), k / 1000.0) for k in range(10, 1000))
+    return best
+
+
+def envelope(surface, times, a):
+    """Slice centre s/d0 -> (A/a, samples) over the slices reached in >= half of the samples."""
+    by_slice = {}
+    for r in surface:
+        by_slice.setdefault(float(r["s_over_d0"]), []).append(float(r["r_over_d0"]))
+    out = []
+    for s in sorted(by_slice):
+        v = by_slice[s]
+        if len(v) < 0.5 * len(times):
+            break
+        m = median(v)
+        rms = math.sqrt(sum((x - m) ** 2 for x in v) / len(v))
+        out.append((s, math.sqrt(2.0) * rms * 2.0, len(v)))  # r/d0 -> r/a: x 2
+    return out
+
+
+def fit_growth(env):
+    """The straight line through ln A over the growing stretch: (k_s [1/d0], ln delta0/a, s0, s1)."""
+    cross = next((i for i, e in enumerate(env) if e[1] > 0.25), len(env))
+    start = [i for i, e in enumerate(env[:cross]) if e[0] >= 0.5]
+    if len(start) < 2:
+        return None
+    i0 = min(start, key=lambda i: env[i][1])
+    pts = [(s, math.log(A)) for s, A, _ in env[i0:cross + 1] if A > 0]
+    if len(pts) < 3:
+        return None
+    n = len(pts)
+    sx = sum(p[0] for p in pts)
+    sy = sum(p[1] for p in pts)
+    sxx = sum(p[0] ** 2 for p in pts)
+    sxy = sum(p[0] * p[1] for p in pts)
+    k = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+    return k, (sy - k * sx) / n, pts[0][0], pts[-1][0]
+
+
+def spectrum(surface, d0, a):
+    """Mean amplitude spectrum of r_s along the intact jet: (ka, amplitude/a) pairs."""
+    per = {}
+    for r in surface:
+        per.setdefault(r["step"], []).append((float(r["s_over_d0"]), float(r["r_over_d0"])))
+    nk = 64
+    acc = [0.0] * nk
+    used = 0
+    kmax = 0.0
+    for prof in per.values():
+        if len(prof) < 8 or prof[-1][0] - prof[0][0] < 4.0:
+            continue
+        ds = prof[1][0] - prof[0][0]
+        mean = sum(p[1] for p in prof) / len(prof)
+        kmax = math.pi / ds * 0.5  # ka at the Nyquist wavenumber (s in d0, a = d0/2)
+        for j in range(nk):
+            ka = (j + 1) * kmax / nk
+            k = ka / 0.5  # per d0
+            re = sum((p[1] - mean) * math.cos(k * p[0]) for p in prof)
+            im = sum((p[1] - mean) * math.sin(k * p[0]) for p in prof)
+            acc[j] += 2.0 * math.hypot(re, im) / len(prof) * 2.0  # amplitude / a
+        used += 1
+    if used == 0:
+        return []
+    return [((j + 1) * kmax / nk, acc[j] / used) for j in range(nk)]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("run")
+    ap.add_argument("--from", dest="t0", type=float, default=None,
+                    help="first sample time [s] (default: twice the first breakup time: the start-up head gone)")
+    ap.add_argument("--plot", default=None, help="write the envelope and the spectrum to this PNG")
+    args = ap.parse_args(argv)
+
+    c = read_case(args.run)
+    d0, u0 = c["d0"], c["u0"]
+    a = 0.5 * d0
+    jet = read_rows(os.path.join(args.run, "jet.csv"))
+    if not jet:
+        sys.exit(f"jet_noise.py: {args.run}/jet.csv has no samples")
+    if "p_exit_mean" not in jet[0]:
+        sys.exit(f"jet_noise.py: {args.run}/jet.csv has no exit-noise columns (a run older than them)")
+    t0 = args.t0
+    if t0 is None:
+        first = next((float(r["time"]) for r in jet if r["broken"] == "1"), None)
+        t0 = 2.0 * first if first is not None else 0.5 * float(jet[-1]["time"])
+    rows = [r for r in jet if float(r["time"]) >= t0]
+    if not rows:
+        sys.exit(f"jet_noise.py: no sample at t >= {t0:g} s (the run ends at {jet[-1]['time']} s)")
+    steps = {r["step"] for r in rows}
+    surface = [r for r in read_rows(os.path.join(args.run, "jet_surface.csv")) if r["step"] in steps]
+
+    sig = c["sigma"]
+    p_unit = sig / a if sig > 0 else float("nan")
+    v_cap = math.sqrt(sig / (c["rho"] * a)) if sig > 0 else float("nan")
+    t_cap = math.sqrt(c["rho"] * a ** 3 / sig) if sig > 0 else float("nan")
+    oh = c["nu"] * math.sqrt(c["rho"] / (sig * a)) if sig > 0 else 0.0
+
+    def med(col):
+        return median([float(r[col]) for r in rows if r[col] not in ("nan", "")])
+
+    pm, ps, ur = med("p_exit_mean"), med("p_exit_std"), med("ur_exit_rms")
+    lengths = [float(r["L_over_d0"]) for r in rows if r["broken"] == "1"]
+    l_mean = sum(lengths) / len(lengths) if lengths else float("nan")
+    print(f"samples = {len(rows)} from t = {t0:.4g} s to {rows[-1]['time']} s; "
+          f"broken in {len(lengths)}; L/d0 mean {l_mean:.3f}")
+    print(f"exit (0-2 d0): p mean = {pm:.4g} Pa = {pm / p_unit:.3f} sigma/a, p std = {ps:.4g} Pa = "
+          f"{ps / p_unit:.3f} sigma/a, u_r rms = {ur:.3g} m/s = {ur / v_cap:.3g} sqrt(sigma/(rho a))")
+
+    env = envelope(surface, rows, a)
+    fit = fit_growth(env)
+    w_max, ka_max = weber_max(oh)
+    w_ka = weber_omega(c["ka"], oh)
+    summary = {"samples": len(rows), "L_over_d0": l_mean, "p_exit_mean_over_sigma_a": pm / p_unit,
+               "p_exit_std_over_sigma_a": ps / p_unit, "ur_exit_rms_over_vcap": ur / v_cap}
+    if env:
+        print("envelope A/a at s/d0: " + ", ".join(f"{s:.2f}:{A:.2e}" for s, A, _ in env[:: max(1, len(env) // 16)]))
+    if fit:
+        k, ln_d, s0, s1 = fit
+        omega = k / d0 * u0
+        c_fit = -ln_d
+        print(f"growth fit over s = {s0:.2f}-{s1:.2f} d0: k_s = {k:.4g} per d0 (one e-fold per {1 / k:.3g} d0), "
+              f"omega = k_s u0 = {omega:.4g} 1/s = {omega * t_cap:.3f} / t_cap")
+        print(f"intercept at the orifice: delta0/a = {math.exp(ln_d):.3e}, C = ln(a/delta0) = {c_fit:.2f}")
+        summary.update({"k_s_per_d0": k, "omega": omega, "omega_over_weber": omega * t_cap / w_max,
+                        "delta0_over_a": math.exp(ln_d), "C": c_fit})
+    else:
+        print("growth fit: no growing stretch found (envelope too short or flat)")
+    if c["round"] and sig > 0:
+        print(f"Weber (Oh = {oh:.4g}): omega_max = {w_max / t_cap:.4g} 1/s at ka = {ka_max:.3f}; "
+              f"at ka = {c['ka']:.3f}: {w_ka / t_cap:.4g} 1/s; t_cap = sqrt(rho a^3/sigma) = {t_cap:.4g} s")
+        if fit:
+            l_weber = u0 * (-fit[1]) / (w_max / t_cap) / d0
+            print(f"Weber's L = u0 C / omega_max with this C: {l_weber:.3g} d0")
+            summary["L_weber_over_d0"] = l_weber
+    spec = spectrum(surface, d0, a)
+    if spec:
+        kpk, apk = max(spec, key=lambda e: e[1])
+        print(f"spectrum peak: ka = {kpk:.3f}, amplitude {apk:.3e} a")
+        summary["spectrum_peak_ka"] = kpk
+    print("SUMMARY " + " ".join(f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v}" for k, v in summary.items()))
+
+    if args.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+        if env:
+            ax1.semilogy([e[0] for e in env], [e[1] for e in env], ".", label="A(s) / a")
+        if fit:
+            k, ln_d, s0, s1 = fit
+            ss = [0.0, s1]
+            ax1.semilogy(ss, [math.exp(ln_d + k * s) for s in ss], "-", label=f"fit: C = {-ln_d:.2f}")
+            if c["round"] and sig > 0:
+                kw = w_max / t_cap / u0 * d0
+                ax1.semilogy(ss, [math.exp(ln_d + kw * (s - s0) + k * s0) for s in ss], "--",
+                             label="Weber's growth")
+        ax1.set_xlabel("s / d0 (from the orifice)")
+        ax1.set_ylabel("disturbance amplitude / a")
+        ax1.legend()
+        if spec:
+            ax2.semilogy([e[0] for e in spec], [e[1] for e in spec], "-")
+            ax2.axvline(ka_max, ls=":", color="k")
+        ax2.set_xlabel("ka")
+        ax2.set_ylabel("mean amplitude / a")
+        fig.suptitle(os.path.basename(os.path.normpath(args.run)))
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=90)
+        print(f"plot: {args.plot}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
