@@ -50,6 +50,7 @@ module sphjet_types
     real(c_double) :: axis_m1 = 0.0_rp       !< rings pair: a ring lighter is in the first column [kg]
     integer(c_int) :: axis_pair = 0          !< axisymmetric pair: 0 smoothed radius, 1 rings
     integer(c_int) :: rings_curvature = 0    !< rings pair's surface rows: 0 neighbours' mean, 1 own
+    integer(c_int) :: curvature_normals = 0  !< free-surface curvature's normals: 0 all, 1 within h
   end type sph_params_t
 
   !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in

@@ -308,6 +308,15 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
         p.rings_curvature = static_cast<RingsCurvature>(
             choose_from<std::int64_t>(*f, find_param("surface_tension.rings_curvature")->choices));
     }
+    if (auto f = st.string("curvature_normals")) {
+        if (p.st_delta != SurfaceTensionDelta::PressureConsistent)
+            throw InputError(ctx.where(st.key_path("curvature_normals")),
+                             "surface_tension.curvature_normals chooses the normals of the free-surface curvature",
+                             "surface_tension.delta = \"pressure_consistent\"",
+                             "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
+        p.curvature_normals = static_cast<CurvatureNormals>(
+            choose_from<std::int64_t>(*f, find_param("surface_tension.curvature_normals")->choices));
+    }
 }
 
 // [[obstacle]], [[wall]] and [gate]: boundary particles in the box.

@@ -41,6 +41,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.periodic_z = p.periodic_z ? 1 : 0;
     c.axis_pair = static_cast<int>(p.axis_pair);
     c.rings_curvature = static_cast<int>(p.rings_curvature);
+    c.curvature_normals = static_cast<int>(p.curvature_normals);
     // the rings pair's axis correction tells the first column (r = dx/2) by its ring mass,
     // pi rho0 dx^2 dz against 3 pi rho0 dx^2 dz for the second (axisymmetric_loops.f90)
     c.axis_m1 = p.axis_pair == AxisPair::Rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dx * p.dz : 0.0;

@@ -186,6 +186,14 @@ const Param kParams[] = {
      .doc = "curvature of the rings pair's rows below the surface", .legacy = "(none)",
      .echo = "{choices} (neighbour_mean: holds a drop's pole; own: longer round jets, pole lost)",
      .hand = kRead | kEcho, .h5_optional = true},
+    {.key = "surface_tension.curvature_normals", .attr = "curvature_normals", .type = K::String,
+     .member = member<&SimParams::curvature_normals>(), .choices = names<CurvatureNormals>(),
+     .allowed = "needs `delta = \"pressure_consistent\"`",
+     .doc = "whose unit normals enter the free-surface curvature: every filtered particle's, or those within h "
+            "of the surface",
+     .legacy = "(none)",
+     .echo = "{choices} (surface_band: only the normals within h of the surface; for h = 2 dx)",
+     .hand = kRead | kEcho, .h5_optional = true},
 
     // [gravity]
     {.key = "gravity.gx", .attr = "gx", .type = K::Float, .unit = "m/s^2", .member = member<&SimParams::gx>(),

@@ -34,6 +34,12 @@ enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
 // sph_params_t::rings_curvature): their neighbours' weighted mean (the default; holds a
 // drop's pole) or each row's own (longer round jets; cases/round_jet/README.md).
 enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
+// Whose unit normals enter the free-surface curvature's sums (core:
+// sph_params_t::curvature_normals; surface_tension.delta = "pressure_consistent"): every
+// particle that passes the normal filter (the default), or only those within h of the surface
+// (depth from the colour), whose normals follow the surface's shape
+// (physics/surface_tension.f90).
+enum class CurvatureNormals : int { All = 0, SurfaceBand = 1 };
 
 // The case file's name of each value of an enum, written once: the modern reader accepts these
 // (through kChoicesOf in model/case_params.hpp), and to_string, the case echo, the HDF5
@@ -94,6 +100,11 @@ template <>
 struct EnumNames<RingsCurvature> {
     static constexpr NameTable<RingsCurvature, 2> list{
         {{"neighbour_mean", RingsCurvature::NeighbourMean}, {"own", RingsCurvature::Own}}};
+};
+template <>
+struct EnumNames<CurvatureNormals> {
+    static constexpr NameTable<CurvatureNormals, 2> list{
+        {{"all", CurvatureNormals::All}, {"surface_band", CurvatureNormals::SurfaceBand}}};
 };
 
 template <class E>
@@ -182,6 +193,8 @@ struct SimParams {
     AxisPair axis_pair = AxisPair::SmoothedRadius;
     // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
+    // The normals of the free-surface curvature (case key surface_tension.curvature_normals).
+    CurvatureNormals curvature_normals = CurvatureNormals::All;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -9,7 +9,8 @@ module sphjet_capi
                           SPH_ERR_DT_COLLAPSE, BC_REPULSIVE, BC_DYNAMIC, VISC_ARTIFICIAL, &
                           VISC_LAMINAR, FILTER_NONE, FILTER_MLS, KIND_FLUID, &
                           GEOM_PLANAR, GEOM_AXISYMMETRIC, AXIS_PAIR_SMOOTHED_RADIUS, &
-                          AXIS_PAIR_RINGS, RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN
+                          AXIS_PAIR_RINGS, RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN, &
+                          CURV_NORMALS_ALL, CURV_NORMALS_BAND
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
   use sorted_state, only: sorted_t, gather_sorted, R_AX, R_AZ
@@ -99,6 +100,7 @@ contains
       .and. any(prm%periodic_z == [0, 1]) &
       .and. any(prm%axis_pair == [AXIS_PAIR_SMOOTHED_RADIUS, AXIS_PAIR_RINGS]) &
       .and. any(prm%rings_curvature == [RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN]) &
+      .and. any(prm%curvature_normals == [CURV_NORMALS_ALL, CURV_NORMALS_BAND]) &
       .and. prm%axis_m1 >= 0.0_rp
     ! a period must hold the images of both ends apart (two kernel supports)
     if (prm%periodic_z /= 0) params_ok = params_ok .and. &

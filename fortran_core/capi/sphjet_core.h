@@ -67,6 +67,7 @@ typedef struct sph_params_t {
     double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
     int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
     int rings_curvature;      /* rings pair's surface rows: 0 neighbours' mean, 1 own */
+    int curvature_normals;    /* free-surface curvature's normals: 0 all, 1 within h of the surface */
 } sph_params_t;
 
 typedef struct sph_arrays_t {

@@ -27,7 +27,7 @@
 !> colour is 6% high on the lattice row next to the axis, where a sphere's poles are.
 module surface_tension_loops
   use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC, AXIS_PAIR_RINGS, &
-                          RINGS_CURVATURE_MEAN
+                          RINGS_CURVATURE_MEAN, CURV_NORMALS_BAND
   use axisymmetric, only: azimuthal_curvature, mass_per_radian, axis_detection_factor
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
@@ -39,7 +39,7 @@ module surface_tension_loops
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
                              csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N, &
-                             DEPTH_FACTOR_MIN
+                             DEPTH_FACTOR_MIN, CURV_BAND_H
   implicit none
   private
   public :: surface_tension_rates
@@ -72,7 +72,7 @@ module surface_tension_loops
   integer, parameter :: NG_NX = 1, NG_NZ = 2, NG_GX = 3, NG_GZ = 4, N_NG = 4
 
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3, &
-                        PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5
+                        PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5, PASS_BAND_CURVATURE = 6
 
   !> Flat-surface colour tables C(delta/h) of csf_depth_table, built once per kernel kind
   !> (indexed by the kind; KERNEL_WENDLAND is the largest) on first use.
@@ -95,6 +95,9 @@ module surface_tension_loops
     !> the rings pair with surface_tension.rings_curvature = "neighbour_mean" (the default) only
     !> (surface_mean_pairs): each particle's own curvature and force weight
     real(rp), allocatable :: kown(:), wt(:)
+    !> curvature_normals = "surface_band" only: 1 where the particle passes the filter and lies
+    !> within CURV_BAND_H h of the surface, else 0 (band_curvature_pairs)
+    real(rp), allocatable :: band(:)
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -215,13 +218,26 @@ contains
     if (colour_delta) then
       call sweep(PASS_CURVATURE, kern, s, wk, .true., axi)
     else
-      call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, .true., axi)
       !$omp critical (csf_depth_cache)
       if (.not. depth_cached(kern%kind)) then
         call csf_depth_table(kern%kind, depth_cache(:, kern%kind))
         depth_cached(kern%kind) = .true.
       end if
       !$omp end critical (csf_depth_cache)
+      if (prm%curvature_normals == CURV_NORMALS_BAND) then
+        ! the normals within CURV_BAND_H h of the surface (physics/surface_tension.f90); the
+        ! image slots have their sources' colour and filter flag already
+        allocate(wk%band(n))
+        !$omp parallel do schedule(static)
+        do k = 1, n
+          wk%band(k) = merge(wk%flag(k), 0.0_rp, &
+                             csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h) < CURV_BAND_H * prm%h)
+        end do
+        !$omp end parallel do
+        call sweep(PASS_BAND_CURVATURE, kern, s, wk, .true., axi)
+      else
+        call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, .true., axi)
+      end if
     end if
     call in_team(loops, FORCE)
     if (surface_mean) then
@@ -446,6 +462,9 @@ contains
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
                              wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
+      case (PASS_BAND_CURVATURE)   ! numerator, tangential denominator over the surface band
+        call band_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%flag, &
+                                  wk%band, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
       case (PASS_SURFACE_MEAN)   ! the rings pair's weighted mean curvature
         call surface_mean_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%wt, wk%kown, wk%num, &
                                 wk%den)
@@ -599,5 +618,34 @@ contains
       den(a) = sd
     end do
   end subroutine curvature_pairs
+
+  !> The free-surface curvature's sums of the fluid pairs of a list with curvature_normals =
+  !> "surface_band": as curvature_pairs (tangential denominator), but particle a (flag 1) takes
+  !> neighbour b's normal only where b lies in the surface band (band 1), and b a's likewise.
+  pure subroutine band_curvature_pairs(np, pa, pb, dx, dz, f, mixed, flag, band, v, nhx, nhz, &
+                                       num, den)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), f(*), flag(*), band(*), v(*), nhx(*), nhz(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: num(*), den(*)
+    integer :: k, a, b
+    real(rp) :: da1, da2, db1, db2, wa, wb
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      wa = flag(a) * band(b)
+      wb = flag(b) * band(a)
+      if (wa == 0.0_rp .and. wb == 0.0_rp) cycle
+      call csf_curvature_pair(1.0_rp, 1.0_rp, v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
+                              f(k) * dx(k), f(k) * dz(k), 0.0_rp, da1, da2, db1, db2)
+      num(a) = num(a) + wa * da1
+      num(b) = num(b) + wb * db1
+      call csf_tangential_pair(1.0_rp, 1.0_rp, v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
+                               dx(k), dz(k), f(k), da2, db2)
+      den(a) = den(a) + wa * da2
+      den(b) = den(b) + wb * db2
+    end do
+  end subroutine band_curvature_pairs
 
 end module surface_tension_loops

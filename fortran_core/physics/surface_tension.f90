@@ -31,6 +31,17 @@
 !>              Shepard denominator instead under-normalises by a kernel-dependent factor
 !>              that cancels that bias for Wendland but not for the cubic spline
 !>              (cases/laplace_disc/README.md).
+!>   surface band (surface_tension.curvature_normals = "surface_band"; free-surface curvature
+!>              only): the sums of the numerator and of the tangential denominator of particle a
+!>              take neighbour b only where b lies within CURV_BAND_H h of the surface (its
+!>              depth from the colour, csf_depth, below CURV_BAND_H h); a itself may lie deeper.
+!>              Deeper particles have a colour gradient that is the tail of a truncated kernel
+!>              sum and follows the particles' spacing and, next to the axis, its mirror images
+!>              more than the surface's shape: at a/dx = 5, h = 2 dx (the round jets) the rows 3
+!>              and 3.5 spacings below a column's surface pass the normal filter, and with their
+!>              normals in the sums the curvature answered a surface wave sin(kz) (ka = 2.1, every
+!>              row shifted radially) with the wrong sign and 2-6 times the geometric k^2 eta, which
+!>              made a column at rest unstable at about 900 1/s (cases/axisymmetric/README.md).
 !> Sign check: for a 2D disc of radius R, nhat = -e_r, kappa = div nhat = -1/R and
 !> a_s = (sigma / (rho R)) n points inward.
 !> Capillary time-step limit (Brackbill et al. 1992; Morris 2000 eq 39):
@@ -42,7 +53,7 @@ module surface_tension
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
             csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
             csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
-            ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN
+            ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN, CURV_BAND_H
 
   !> Values of sph_params_t%st_delta (case key surface_tension.delta).
   integer, parameter :: ST_DELTA_PRESSURE = 0  !< "pressure_consistent": d = 2 sum_b V_b grad_a W_ab
@@ -60,6 +71,9 @@ module surface_tension
   real(rp), parameter :: TANGENTIAL_MIN = 0.05_rp
   !> Smallest 1 - kappa delta accepted by the depth correction (noise on concave spots).
   real(rp), parameter :: DEPTH_FACTOR_MIN = 0.5_rp
+  !> Depth of the surface band whose normals enter the free-surface curvature with
+  !> curvature_normals = "surface_band", in units of h.
+  real(rp), parameter :: CURV_BAND_H = 1.0_rp
 
 contains
 

@@ -161,6 +161,7 @@ void expect_same(const CaseSpec& a, const CaseSpec& b) {
     EXPECT_EQ(p.periodic_z, q.periodic_z);
     EXPECT_EQ(p.axis_pair, q.axis_pair);
     EXPECT_EQ(p.rings_curvature, q.rings_curvature);
+    EXPECT_EQ(p.curvature_normals, q.curvature_normals);
     EXPECT_EQ(p.integrator, q.integrator);
     EXPECT_EQ(p.density_filter, q.density_filter);
     EXPECT_EQ(p.filter_period, q.filter_period);
@@ -384,6 +385,8 @@ TEST(ModernCase, EveryEnumNameIsReadAndWritten) {
     rings.push_back("domain.axis_pair=rings");
     expect_every_name_read<RingsCurvature>("surface_tension.rings_curvature",
                                            [](const CaseSpec& s) { return s.params.rings_curvature; }, rings);
+    expect_every_name_read<CurvatureNormals>("surface_tension.curvature_normals",
+                                             [](const CaseSpec& s) { return s.params.curvature_normals; });
 }
 
 TEST(ModernCase, ReadsFromFileAndRejectsMissingFile) {
@@ -971,6 +974,21 @@ TEST(ModernCase, AxisPair) {
     bad.push_back("domain.axis_pair=\"ring\"");
     e = error_of(kMinimal, bad);
     EXPECT_NE(e.find("\"smoothed_radius\", \"rings\""), std::string::npos) << e;
+}
+
+// surface_tension.curvature_normals (cases/CASE_FORMAT.md): every filtered normal by default;
+// "surface_band" read, written back and read again; refused with the colour-gradient delta,
+// naming key, expected and found.
+TEST(ModernCase, CurvatureNormals) {
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.curvature_normals, CurvatureNormals::All);
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", {"surface_tension.curvature_normals=\"surface_band\""});
+    EXPECT_EQ(s.params.curvature_normals, CurvatureNormals::SurfaceBand);
+    expect_round_trip(s);
+    const std::string e = error_of(kMinimal, {"surface_tension.delta=\"colour_gradient\"",
+                                              "surface_tension.curvature_normals=\"surface_band\""});
+    EXPECT_NE(e.find("surface_tension.curvature_normals"), std::string::npos) << e;
+    EXPECT_NE(e.find("surface_tension.delta = \"pressure_consistent\""), std::string::npos) << e;
+    EXPECT_NE(e.find("found surface_tension.delta = \"colour_gradient\""), std::string::npos) << e;
 }
 
 // surface_tension.rings_curvature (cases/CASE_FORMAT.md): the neighbours' mean by default in the
