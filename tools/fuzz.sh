@@ -8,7 +8,9 @@
 # -DSPHJET_FUZZ=ON and clang: cpp_driver's sphjet_config library, the same sources as sphjet's,
 # instrumented with -fsanitize=fuzzer-no-link,address,undefined; no Fortran, no HDF5), then
 # runs each PARSER's target for SECONDS_PER_PARSER with -timeout=2 -rss_limit_mb=2048, one
-# after the other, and prints per parser the inputs executed and the findings.
+# after the other, and prints per parser the inputs executed and the findings. (libFuzzer's
+# timeout is wall-clock time: on a machine loaded far beyond its cores, FUZZ_TIMEOUT=10 keeps
+# a starved process from being reported as a hang; replay a timeout to tell.)
 #
 # Inputs: the seeds (tests/fuzz/corpus/<parser>, tests/fuzz/regressions/<parser>, and
 # tests/data/bad_cases for the legacy reader); what libFuzzer adds goes to
@@ -16,7 +18,8 @@
 # written to build-fuzz/artifacts/<parser>-crash-* (or -timeout-, -oom-), and the log to
 # build-fuzz/logs/<parser>.log. To replay one: build-fuzz/tests/fuzz/fuzz_<parser> FILE.
 # Environment: SPHJET_FUZZ_GENERATE_CAP (particles, default 20000) bounds the generator run
-# on accepted cases; FUZZ_FLAGS adds libFuzzer flags (e.g. -seed=1, -runs=1000000).
+# on accepted cases; FUZZ_TIMEOUT (seconds, default 2) is the limit for one input;
+# FUZZ_FLAGS adds libFuzzer flags (e.g. -seed=1, -runs=1000000).
 set -euo pipefail
 
 SECONDS_PER_PARSER=${1:-600}
@@ -48,7 +51,7 @@ for parser in "${PARSERS[@]}"; do
     log=$BUILD/logs/$parser.log
     echo "fuzz.sh: fuzz_$parser for $SECONDS_PER_PARSER s (log: $log)"
     # shellcheck disable=SC2086  # FUZZ_FLAGS: several flags
-    "$BUILD/tests/fuzz/fuzz_$parser" -max_total_time="$SECONDS_PER_PARSER" -timeout=2 -rss_limit_mb=2048 \
+    "$BUILD/tests/fuzz/fuzz_$parser" -max_total_time="$SECONDS_PER_PARSER" -timeout="${FUZZ_TIMEOUT:-2}" -rss_limit_mb=2048 \
         -print_final_stats=1 -artifact_prefix="$BUILD/artifacts/$parser-" ${FUZZ_FLAGS:-} \
         "$BUILD/work/$parser" "${seeds[@]}" >"$log" 2>&1 || true
     execs=$(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}' | tail -1)

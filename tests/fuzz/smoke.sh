@@ -56,7 +56,7 @@ cmd_build() {
     command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
     mkdir -p "$tree"
     cmake -S "$src" -B "$tree" -DSPHJET_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" \
-        -DCMAKE_BUILD_TYPE= >"$tree/configure.log" 2>&1 ||
+        >"$tree/configure.log" 2>&1 ||
         { cat "$tree/configure.log"; echo "FAILED: configuring the fuzz build"; exit 1; }
     cmake --build "$tree" -j "$(nproc)" ||
         { echo "FAILED: building the fuzz targets (the build log above)"; exit 1; }
