@@ -49,6 +49,13 @@ need_toolchain() {
     rm -rf "$probe"
 }
 
+# The report of a failed libFuzzer run: what went wrong, then the end of the log.
+show_failure() {
+    grep -E 'sphjet-fuzz FINDING|ERROR: |SUMMARY: |runtime error:' "$1" | head -10
+    echo "--- the end of $1:"
+    tail -25 "$1"
+}
+
 cmd_build() {
     local src=$1 tree=$2
     need_toolchain
@@ -77,7 +84,7 @@ cmd_run() {
     [[ -d $regressions ]] && mapfile -t inputs < <(find "$regressions" -maxdepth 1 -type f ! -name '.*' | sort)
     if ((${#inputs[@]} > 0)); then
         if ! "$bin" "${LIMITS[@]}" "${inputs[@]}" >"$work/replay.log" 2>&1; then
-            tail -40 "$work/replay.log"
+            show_failure "$work/replay.log"
             local culprit
             culprit=$(grep -E '^Running: ' "$work/replay.log" | tail -1 | sed 's/^Running: //')
             echo "FAILED: $parser: the regression input ${culprit:-?} crashes (log: $work/replay.log)"
@@ -92,7 +99,7 @@ cmd_run() {
     [[ $parser == legacy && -d $ROOT/tests/data/bad_cases ]] && seeds+=("$ROOT/tests/data/bad_cases")
     if ! "$bin" "${LIMITS[@]}" -max_total_time="$seconds" -print_final_stats=1 \
         -artifact_prefix="$work/" "$work/corpus" "${seeds[@]}" >"$work/fuzz.log" 2>&1; then
-        tail -40 "$work/fuzz.log"
+        show_failure "$work/fuzz.log"
         local artifact
         artifact=$(grep -oE 'Test unit written to [^ ]+' "$work/fuzz.log" | tail -1 | sed 's/.* //')
         echo "FAILED: $parser: a finding in $seconds s of fuzzing, input ${artifact:-?} (log: $work/fuzz.log)"
@@ -128,7 +135,7 @@ cmd_goes_red() {
     [[ $rc == 1 ]] || { echo "FAILED: the smoke exited $rc with a crashing regression input, not 1"; exit 1; }
     grep -q "FAILED: legacy: the regression input $work/regressions/crash.txt crashes" "$work/planted.log" ||
         { echo "FAILED: the smoke's failure does not name the planted input"; exit 1; }
-    grep -q "ERROR: AddressSanitizer: heap-buffer-overflow" "$work/planted.log" ||
+    grep -q "SUMMARY: AddressSanitizer: heap-buffer-overflow" "$work/planted.log" ||
         { echo "FAILED: no AddressSanitizer report of the planted overflow"; exit 1; }
     echo "the smoke went red on the planted input, as it must"
 }
