@@ -54,15 +54,15 @@ for parser in "${PARSERS[@]}"; do
     "$BUILD/tests/fuzz/fuzz_$parser" -max_total_time="$SECONDS_PER_PARSER" -timeout="${FUZZ_TIMEOUT:-2}" -rss_limit_mb=2048 \
         -print_final_stats=1 -artifact_prefix="$BUILD/artifacts/$parser-" ${FUZZ_FLAGS:-} \
         "$BUILD/work/$parser" "${seeds[@]}" >"$log" 2>&1 || true
-    execs=$(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}' | tail -1)
-    [[ -n $execs ]] || execs=$(grep -oE '^#[0-9]+' "$log" | tail -1 | tr -d '#')
-    rate=$(grep -E '^stat::average_exec_per_sec' "$log" | awk '{print $2}' | tail -1)
+    execs=$(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}' | tail -1 || true)
+    [[ -n $execs ]] || execs=$(grep -oE '^#[0-9]+' "$log" | tail -1 | tr -d '#' || true)
+    rate=$(grep -E '^stat::average_exec_per_sec' "$log" | awk '{print $2}' | tail -1 || true)
     corpus=$(find "$BUILD/work/$parser" -type f | wc -l)
     findings=$(grep -cE 'sphjet-fuzz FINDING|ERROR: (AddressSanitizer|UndefinedBehaviorSanitizer|LeakSanitizer|libFuzzer)|runtime error:|Test unit written' "$log" || true)
     line="$parser: ${execs:-?} inputs executed (${rate:-?}/s), corpus $corpus, findings $findings"
     # A timeout is wall-clock time: replayed alone, an input that a loaded machine starved
     # runs in milliseconds. Such a one is reported, not counted.
-    timeout_unit=$(grep -oE 'Test unit written to [^ ]*-timeout-[0-9a-f]+' "$log" | tail -1 | sed 's/.* //')
+    timeout_unit=$(grep -oE 'Test unit written to [^ ]*-timeout-[0-9a-f]+' "$log" | tail -1 | sed 's/.* //' || true)
     if [[ $findings != 0 && -n $timeout_unit ]] &&
         ! grep -qE 'sphjet-fuzz FINDING|ERROR: (AddressSanitizer|UndefinedBehaviorSanitizer|LeakSanitizer)|runtime error:' "$log"; then
         replay=$("$BUILD/tests/fuzz/fuzz_$parser" -timeout="${FUZZ_TIMEOUT:-2}" "$timeout_unit" 2>&1 |
