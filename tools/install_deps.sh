@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what sphjet needs to build, test and plot, from Debian's packages.
+# Installs what sphjet needs to build, test and plot, from Debian's packages (clang and
+# libclang-rt-dev: the fuzz smoke of the test set, tests/fuzz/README.md).
 # Run as root (or with sudo available). Safe to run again.
 set -euo pipefail
 SUDO=""
@@ -13,4 +14,5 @@ $SUDO apt-get install -y --no-install-recommends \
   g++ gfortran cmake make git ca-certificates \
   libeigen3-dev libhdf5-dev hdf5-tools libcli11-dev libtomlplusplus-dev libfmt-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
+  clang libclang-rt-dev \
   python3 python3-numpy python3-matplotlib python3-h5py

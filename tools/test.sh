@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The test job on a fresh machine: install, build, run the default test set (labels unit,
-# interface and regression; the long validation runs are excluded: ctest -L validation).
+# interface, regression and fuzz; the long validation runs are excluded: ctest -L validation).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh

@@ -616,6 +616,7 @@ void check_spec(const CaseSpec& spec) {
         const double a = 2 * d.radius * (1 + std::abs(d.elongation));
         n += lattice(a, a, std::min(p.dx, p.dz), std::min(p.dx, p.dz));
     }
+    for (const auto& c : spec.fluid_cylinders) n += lattice(c.radius, c.zmax - c.zmin, p.dx, p.dz);
     for (const auto& w : spec.walls) n += 2 * (std::abs(w.height) / p.dz + 2);
     for (const auto& g : spec.gates) n += std::abs(g.zmax - g.zmin) / p.dz + 2;
     if (spec.nozzle) n += lattice(spec.nozzle->d0 + 4 * std::max(p.dx, p.dz), spec.nozzle->length(), std::min(p.dx, p.dz), std::min(p.dx, p.dz));

@@ -132,6 +132,13 @@ double estimate_particles(const CaseSpec& s) {
         const double a = 2 * d.radius * (1 + std::abs(d.elongation)) + 2 * p.dx;
         n += points(a, a, std::min(p.dx, p.dz), std::min(p.dx, p.dz));
     }
+    for (const auto& c : s.fluid_cylinders)
+        n += (std::abs(c.radius) / p.dx + 2) * (std::abs(c.zmax - c.zmin) / p.dz + 2);
+    if (s.nozzle) {  // the plug and up to four wall lines along it
+        const double d = std::min(p.dx, p.dz);
+        n += points(s.nozzle->d0, s.nozzle->length(), d, d) + 4 * (std::abs(s.nozzle->length()) / d + 4);
+    }
+    for (const auto& g : s.gates) n += std::abs(g.zmax - g.zmin) / p.dz + 4;
     for (const auto& w : s.walls) n += 2 * (std::abs(w.height) / p.dz + 4);
     for (const auto& o : s.obstacles) {
         const double k = std::max(1, o.density);

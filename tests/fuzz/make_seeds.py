@@ -9,7 +9,9 @@ indat/   for each small_*.txt legacy seed: `sphjet gen`, then INDAT, IPART,
          NORMALS.init and gate joined at the marker lines of fuzz_harness.hpp, plus the INDAT alone
 modern/  every cases/**/*.toml with overrides that coarsen the spacing (five to ten times,
          so that the generator stays fast), the examples of cases/CASE_FORMAT.md, and one
-         seed with overrides of every kind (a table element, a bare word, a boolean)
+         seed with overrides of every kind (a table element, a bare word, a boolean), and
+         seeds overriding the keys of [nozzle], [breakup], the axisymmetric [domain],
+         [[fluid.cylinder]], a disc's lattice and [surface_tension] (overrides_*.toml)
 
 The tests/data/bad_cases files are used where they are (tools/fuzz.sh, the mutation test).
 """
@@ -56,8 +58,13 @@ def modern() -> None:
         for key in ("dx", "dz"):
             m = re.search(rf"^{key}\s*=\s*([0-9.eE+-]+)", res, re.M)
             if m:
-                factor = 10 if float(m.group(1)) < 0.002 else 5
-                over.append(f"resolution.{key}={float(m.group(1)) * factor:g}")
+                dx = float(m.group(1))
+                factor = 10 if dx < 0.002 else 5
+                d0 = re.search(r"^d0\s*=\s*([0-9.eE+-]+)", text, re.M)
+                if d0:  # a nozzle keeps at least 2 particles across d0 (d0 / 2 when round)
+                    across = float(d0.group(1)) / (4 if "axisymmetric" in text else 2)
+                    factor = max(1, min(factor, int(across / dx)))
+                over.append(f"resolution.{key}={dx * factor:g}")
         (CORPUS / "modern" / f"{src.parent.name}_{src.stem}.toml").write_text(
             text + "\n#%%OVERRIDES%%\n" + "\n".join(over) + "\n")
     doc = (ROOT / "cases" / "CASE_FORMAT.md").read_text()
@@ -75,6 +82,40 @@ def modern() -> None:
         "obstacle[0].density=2\n"
         "output.format=\"hdf5\"\n"
         "time.variable_dt=false\n")
+    # Overrides of the sections of the jets and of the axisymmetric cases, on the coarse seeds
+    # above: every key of [nozzle], [breakup], the axisymmetric [domain], [[fluid.cylinder]],
+    # a disc's lattice and [surface_tension].
+    with_overrides = {
+        "overrides_jet.toml": ("jet_jet.toml", [
+            'nozzle.u0=0.3', 'nozzle.x0=0.045', 'nozzle.z0=0.4', 'nozzle.axis="down"',
+            'nozzle.d0=0.012', 'nozzle.length_over_d0=10', 'nozzle.walls=false',
+            'nozzle.disturbance=0.05', 'nozzle.disturbance_ka=0.5', 'breakup.link_over_h=1.4',
+            'breakup.band_over_d0=0.4', 'breakup.check_every=0.01', 'breakup.stop_after=0.1',
+            'breakup.remove_drops_below_h=2', 'surface_tension.delta="colour_gradient"']),
+        "overrides_round_jet.toml": ("round_jet_round_jet.toml", [
+            'domain.geometry="axisymmetric"', 'domain.axis_pair="rings"', 'domain.periodic_z=false',
+            'nozzle.axis="up"', 'nozzle.z0=0.01', 'nozzle.length_over_d0=4', 'nozzle.walls=true',
+            'surface_tension.rings_curvature="own"', 'breakup.remove_drops_below_h=2',
+            'breakup.stop_after=0']),
+        "overrides_cylinder.toml": ("axisymmetric_rayleigh_plateau.toml", [
+            'fluid.cylinder[0].radius=0.008', 'fluid.cylinder[0].eps=-0.1',
+            'fluid.cylinder[0].wavelength=0.04', 'fluid.cylinder[0].zmin=0.01',
+            'fluid.cylinder[0].zmax=0.08', 'domain.periodic_z=false', 'domain.axis_pair="rings"',
+            'resolution.h_over_dx=2', 'surface_tension.rings_curvature="neighbour_mean"',
+            'surface_tension.sigma=0.5']),
+        "overrides_disc_rings.toml": ("laplace_disc_laplace_disc.toml", [
+            'fluid.disc[0].lattice="case"', 'fluid.disc[0].lattice=rings',
+            'fluid.disc[0].elongation=-0.2', 'fluid.disc[0].radius=0.03',
+            'surface_tension.delta="colour_gradient"', 'surface_tension.sigma=0.072',
+            'domain.periodic_z=true']),
+        "overrides_sphere.toml": ("axisymmetric_sphere_oscillation.toml", [
+            'fluid.disc[0].xc=0', 'fluid.disc[0].elongation=0.1', 'domain.axis_pair="rings"',
+            'resolution.h_over_dx=2', 'surface_tension.rings_curvature="own"',
+            'domain.geometry=axisymmetric']),
+    }
+    for name, (seed, over) in with_overrides.items():
+        (CORPUS / "modern" / name).write_text(
+            (CORPUS / "modern" / seed).read_text() + "\n".join(over) + "\n")
 
 
 def main() -> None:

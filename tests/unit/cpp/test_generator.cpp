@@ -325,6 +325,26 @@ TEST(Generator, ImpossibleSpecsAreInputErrors) {
     EXPECT_THROW((void)generate(bad), InputError);
 }
 
+// A cylinder of 3e4 x 9e4 = 2.7e9 lattice points in a box whose walls are 4.8e5: refused
+// before anything is allocated (more particles than 32-bit indices hold), not a bad_alloc.
+TEST(Generator, TooManyCylinderParticlesAreAnInputError) {
+    CaseSpec spec;
+    spec.source = "cylinder.toml";
+    SimParams& p = spec.params;
+    p.geometry = Geometry::Axisymmetric;
+    p.lx = 0.03;
+    p.lz = 0.09;
+    p.dx = p.dz = 1e-6;
+    spec.wall_left = false;
+    spec.fluid_cylinders.push_back({0.03, 0, 0, 0, 0.09});
+    try {
+        (void)generate(spec);
+        FAIL() << "accepted 2.7e9 particles";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("too many particles"), std::string::npos) << e.what();
+    }
+}
+
 // --- INDAT / IPART / NORMALS.init ------------------------------------------------------
 
 TEST(Indat, RoundTripDynamicAndRepulsive) {
