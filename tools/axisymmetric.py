@@ -21,6 +21,9 @@ Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
   growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
                                         growth rate of the Fourier mode of r_s(z) vs Rayleigh
   roughness RUN --radius A --period L --dx DX [--sigma S --rho R0 --nu NU]
+                   r_s(z)'s departure from a cylinder, its n = 1 Fourier mode and the rest
+  curvature RUN --radius A --wavelength L --eps E --dx DX
+                   the CSF curvature's response to a surface wave, per row, at t = 0
                                         a periodic column that should stay as built: the standard
                                         deviation of r_s(z) over slices of DX (the outermost
                                         particle per slice) per snapshot, its largest value over
@@ -79,7 +82,7 @@ def snapshots(run):
             if "particles" not in h or "time" not in h.attrs:
                 continue
             g = h["particles"]
-            d = {k: g[k][()] for k in ("x", "z", "u", "w", "rho", "p", "m") if k in g}
+            d = {k: g[k][()] for k in ("x", "z", "u", "w", "rho", "p", "m", "curvature") if k in g}
             if "kind" in g:
                 d["kind"] = g["kind"][()]
             d["time"] = float(h.attrs["time"])
@@ -319,7 +322,7 @@ def roughness(a):
     import numpy as np
     snaps = [fluid(d) for d in snapshots(a.run)]
     nb = max(1, int(round(a.period / a.dx)))
-    t, sd = [], []
+    t, sd, mode1, rest, peak = [], [], [], [], []
     for d in snaps:
         b = np.floor(np.mod(d["z"], a.period) / a.period * nb).astype(int) % nb
         rs = np.full(nb, np.nan)
@@ -328,22 +331,74 @@ def roughness(a):
             break
         t.append(d["time"])
         sd.append(float(rs.std()) / a.radius)
-    t, sd = np.array(t), np.array(sd)
-    m = (sd > 1e-9) & (sd < 1e-3)
-    rate = float(np.polyfit(t[m], np.log(sd[m]), 1)[0]) if m.sum() >= 3 else float("nan")
+        # r_s(z) in Fourier modes n of the period (ka = 2 pi n a / period): the amplitude of
+        # n = 1, the rms of the rest (n >= 2, all capillary-stable when the period is one
+        # wavelength of ka < 1), and the n of the largest of the rest
+        amp = 2.0 * np.abs(np.fft.rfft(rs - rs.mean())) / nb / a.radius
+        mode1.append(float(amp[1]) if len(amp) > 1 else 0.0)
+        rest.append(float(np.sqrt(np.sum(amp[2:] ** 2) / 2.0)))
+        peak.append(int(np.argmax(amp[2:])) + 2 if len(amp) > 2 else 0)
+    t, sd, mode1, rest = np.array(t), np.array(sd), np.array(mode1), np.array(rest)
+
+    def fit(y, lo):
+        """Growth rate of ln y over the snapshots where lo < y < 1e-3 (the linear range)."""
+        m = (y > lo) & (y < 1e-3)
+        return float(np.polyfit(t[m], np.log(y[m]), 1)[0]) if m.sum() >= 3 else float("nan")
+
+    rate = fit(sd, 1e-9)
+    # the modes: above 10 times their first nonzero value (past the start's relaxation)
+    start = lambda y: 10.0 * float(y[y > 0][0]) if (y > 0).any() else 1e-9
+    mode1_rate, rest_rate = fit(mode1, start(mode1)), fit(rest, start(rest))
     weber = float("nan")
     if a.sigma > 0:
         scale = math.sqrt(a.sigma / (a.rho * a.radius ** 3))
         oh = a.nu * math.sqrt(a.rho / (a.sigma * a.radius))
         weber = max(weber_omega(k / 1000.0, oh) for k in range(10, 1000)) * scale
     intact = len(t) == len(snaps)
+    # the short modes' peak where the rest is still small (before the column breaks)
+    lin = [i for i in range(len(rest)) if rest[i] < 1e-2]
+    ka_peak = 2 * math.pi * a.radius / a.period * (peak[lin[-1]] if lin else 0)
     print(f"SUMMARY sd_max_over_a={float(sd.max()) if len(sd) else float('nan'):.4g} "
           f"sd_end_over_a={float(sd[-1]) if len(sd) else float('nan'):.4g} t_end={float(t[-1]) if len(t) else 0:.4g} "
           f"intact={int(intact)} growth={rate:.4g} weber_max={weber:.4g} growth_over_weber={rate / weber:.4g} "
-          f"snapshots={len(t)}")
+          f"snapshots={len(t)} mode1_growth={mode1_rate:.4g} mode1_over_weber={mode1_rate / weber:.4g} "
+          f"rest_growth={rest_rate:.4g} rest_start={float(rest[0]) if len(rest) else float('nan'):.4g} "
+          f"rest_end={float(rest[-1]) if len(rest) else float('nan'):.4g} "
+          f"rest_ratio={float(rest[-1] / rest[0]) if len(rest) and rest[0] > 0 else float('nan'):.4g} "
+          f"rest_peak_ka={ka_peak:.3g}")
     if a.table:
-        for ti, si in zip(t, sd):
-            print(f"{ti:.5f} {si:.6e}")
+        for ti, si, m1, ri in zip(t, sd, mode1, rest):
+            print(f"{ti:.5f} {si:.6e} {m1:.6e} {ri:.6e}")
+    return 0
+
+
+# ---------------------------------------------------------------- curvature
+def curvature(a):
+    """The free-surface curvature's response to a surface wave, at t = 0.
+
+    The run's first snapshot is a column r = a (1 + eps cos kz) (fluid.cylinder with its eps and
+    wavelength); its rows are columns of the unperturbed lattice, r / (1 + eps cos kz) =
+    (i + 1/2) dx. Per row, the cos(kz) Fourier coefficient of the curvature the CSF used,
+    over the exact change of the total curvature, -(eps/a)((ka)^2 - 1) (this code's sign:
+    -1/a on the unperturbed column). 1 is the geometry; 0 no restoring force; below 0 a force
+    that feeds the wave."""
+    import numpy as np
+    d = fluid(snapshots(a.run)[0])
+    if "curvature" not in d:
+        raise SystemExit(f"{a.run}: the first snapshot has no curvature field (surface tension off?)")
+    k = 2 * math.pi / a.wavelength
+    shape = 1 + a.eps * np.cos(k * d["z"])
+    row = np.round(np.abs(d["x"]) / shape / a.dx - 0.5).astype(int)
+    exact = -(a.eps / a.radius) * ((k * a.radius) ** 2 - 1)
+    resp, mean = [], []
+    for i in range(row.max() + 1):
+        m = row == i
+        kap, z = d["curvature"][m], d["z"][m]
+        mean.append(float(kap.mean() * a.radius))
+        resp.append(float(2 * np.mean((kap - kap.mean()) * np.cos(k * z)) / exact))
+    rows = " ".join(f"row{i}={r:.4g}" for i, r in enumerate(resp))
+    print(f"SUMMARY ka={k * a.radius:.4g} response_outer={resp[-1]:.4g} "
+          f"mean_outer_times_a={mean[-1]:.4g} {rows}")
     return 0
 
 
@@ -381,6 +436,12 @@ def main(argv=None):
     p.add_argument("--rho", type=float, default=1000.0)
     p.add_argument("--nu", type=float, default=0.0)
     p.add_argument("--table", action="store_true")
+    p = sub.add_parser("curvature")
+    p.add_argument("run")
+    p.add_argument("--radius", type=float, required=True)
+    p.add_argument("--wavelength", type=float, required=True)
+    p.add_argument("--eps", type=float, required=True)
+    p.add_argument("--dx", type=float, required=True)
     p = sub.add_parser("rest")
     p.add_argument("run")
     p.add_argument("--sigma", type=float, required=True)
@@ -395,7 +456,8 @@ def main(argv=None):
             o2 = rayleigh_omega2(ka)
             print(f"ka={ka:.4f} omega2={o2:.6f} omega={math.copysign(math.sqrt(abs(o2)), o2):.6f}")
         return 0
-    return {"laplace": laplace, "mode2": mode2, "growth": growth, "rest": rest, "roughness": roughness}[a.cmd](a)
+    return {"laplace": laplace, "mode2": mode2, "growth": growth, "rest": rest, "roughness": roughness,
+            "curvature": curvature}[a.cmd](a)
 
 
 if __name__ == "__main__":

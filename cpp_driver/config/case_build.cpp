@@ -526,6 +526,7 @@ CaseSpec build_case(const Ctx& ctx, const toml::table& root) {
     read_members(fluid, p);
     read_sound_speed(ctx, fluid, p, leg.single);
     read_resolution(ctx, top, p, spec.legacy, leg);
+    read_members(top.sub("resolution"), p);  // the keys beyond dx, dz and h (jitter)
     read_viscosity(ctx, num_s, fluid, p);
     read_domain(ctx, top, spec);
     read_members(top.sub("time"), p);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <random>
 #include <string>
 
 #include "geometry/nozzle.hpp"
@@ -41,6 +43,7 @@ public:
         if (nozzle) nozzle_walls(*nozzle);
         boundary_density_and_mass();
         if (nozzle) nozzle_fluid(*spec_.nozzle, *nozzle);
+        const std::size_t first_shape = ps_.size();  // the shapes' fluid from here (jitter)
 
         if (spec_.legacy_fill) {
             for (const FluidBlock& b : spec_.fluid_blocks) legacy_fill(b);
@@ -80,6 +83,7 @@ public:
         // gets none: it has no ring).
         if (axi_)
             for (std::size_t i = 0; i < ps_.size(); ++i) ps_.m[i] *= 2 * std::numbers::pi * ps_.x[i];
+        if (p_.jitter > 0) jitter(first_shape);
         if (ps_.n_fluid() == 0)
             throw InputError(spec_.source, "the case places no fluid particle",
                              "fluid regions that hold at least one lattice point", "none");
@@ -112,6 +116,24 @@ public:
     }
 
 private:
+    // SimParams::jitter: the shapes' fluid particles from index first moved by uniform random
+    // offsets (mt19937_64 seeded with jitter_seed, drawn x then z per particle, so a seed gives
+    // the same positions on every machine; the masses stay those of the lattice). A particle
+    // the offset takes across the axis is mirrored back (x -> |x|), and with periodic_z its z
+    // is wrapped into [0, lz).
+    void jitter(std::size_t first) {
+        std::mt19937_64 gen(static_cast<std::uint64_t>(p_.jitter_seed));
+        const auto offset = [&gen](double a) {
+            return a * (2.0 * (static_cast<double>(gen() >> 11) * 0x1.0p-53) - 1.0);
+        };
+        for (std::size_t i = first; i < ps_.size(); ++i) {
+            ps_.x[i] += offset(p_.jitter * p_.dx);
+            ps_.z[i] += offset(p_.jitter * p_.dz);
+            if (axi_) ps_.x[i] = std::abs(ps_.x[i]);
+            if (p_.periodic_z) ps_.z[i] -= p_.lz * std::floor(ps_.z[i] / p_.lz);
+        }
+    }
+
     // --- boundaries -------------------------------------------------------------------
 
     std::size_t boundary(double x, double z) {

@@ -245,6 +245,14 @@ const Param kParams[] = {
      .hand = kRead | kEcho},
     {.key = "resolution.h_over_dx", .type = K::Float, .unit = "1", .range = kPositive, .def = " ",
      .doc = "h = h_over_dx dx", .legacy = "(none)", .hand = kRead | kEcho},
+    {.key = "resolution.jitter", .attr = "jitter", .type = K::Float, .unit = "1", .member = member<&SimParams::jitter>(),
+     .range = between(0, 0.25), .allowed = "0 = off",
+     .doc = "each fluid particle of the shapes moved by a random offset, uniform in [-j dx, j dx] x [-j dz, j dz]",
+     .legacy = "(none)", .echo = "fraction of the spacing; a disordered start (cases/round_jet/README.md)",
+     .h5_optional = true},
+    {.key = "resolution.jitter_seed", .attr = "jitter_seed", .type = K::Int, .member = member<&SimParams::jitter_seed>(),
+     .range = between(0, 2147483647), .doc = "seed of the jitter (one seed, one set of positions)",
+     .legacy = "(none)", .echo = "-", .h5_optional = true},
 
     // [time]
     {.key = "time.tmax", .attr = "tmax", .type = K::Float, .unit = "s", .member = member<&SimParams::tmax>(),

@@ -152,6 +152,11 @@ struct SimParams {
     double lx = 0.0, lz = 0.0;         // box size [m]
     double dx = 0.0, dz = 0.0;         // particle spacing [m]
     double h = 0.0;                    // smoothing length [m]
+    // A disordered start: each fluid particle of the case's shapes (not a nozzle's plug) moved
+    // by a random offset uniform in [-jitter dx, jitter dx] x [-jitter dz, jitter dz], from a
+    // generator seeded with jitter_seed (geometry/generator.cpp). 0 = the exact lattice.
+    double jitter = 0.0;
+    int jitter_seed = 1;
 
     // Time
     bool variable_dt = true;

@@ -311,6 +311,58 @@ TEST(Generator, FluidSquareAndDiscOnTheLattice) {
     EXPECT_GT(rho_bottom, rho_top);
 }
 
+// resolution.jitter: a periodic axisymmetric column moved by offsets within +-j dx, +-j dz,
+// drawn from the seed (the same seed, the same positions; another seed, others), with the
+// masses of the lattice, x >= 0 and z in [0, lz). The offsets' mean is zero to within the
+// statistics of n uniform draws: the rms of a uniform on [-j dx, j dx] is j dx / sqrt(3), so
+// the mean of n = 630 has a standard error of j dx / sqrt(3 n) = 0.023 j dx; 5.6 standard
+// errors, 0.13 j dx, is the bound.
+TEST(Generator, JitterIsBoundedSeededAndKeepsTheMasses) {
+    CaseSpec spec;
+    spec.source = "column.toml";
+    SimParams& p = spec.params;
+    p.geometry = Geometry::Axisymmetric;
+    p.periodic_z = true;
+    p.lx = 0.002;
+    p.lz = 0.0063;
+    p.dx = p.dz = 0.0001;
+    p.gx = p.gz = 0.0;
+    spec.wall_left = spec.wall_right = spec.wall_bottom = false;
+    spec.fluid_cylinders.push_back({0.001, 0, 0.0063, 0, 0.0063});
+    const InitialState lattice = generate(spec);
+    p.jitter = 0.1;
+    p.jitter_seed = 7;
+    const InitialState a = generate(spec);
+    const InitialState b = generate(spec);
+    p.jitter_seed = 8;
+    const InitialState c = generate(spec);
+    const ParticleSet& l = lattice.particles;
+    ASSERT_EQ(a.particles.size(), l.size());
+    ASSERT_GT(l.n_fluid(), 500u);
+    double sx = 0, sz = 0, largest = 0;
+    bool other = false;
+    for (std::size_t i = l.nb; i < l.size(); ++i) {
+        EXPECT_EQ(a.particles.x[i], b.particles.x[i]);
+        EXPECT_EQ(a.particles.z[i], b.particles.z[i]);
+        EXPECT_EQ(a.particles.m[i], l.m[i]);
+        EXPECT_GE(a.particles.x[i], 0.0);
+        EXPECT_GE(a.particles.z[i], 0.0);
+        EXPECT_LT(a.particles.z[i], p.lz);
+        other = other || c.particles.x[i] != a.particles.x[i];
+        double dz = a.particles.z[i] - l.z[i];
+        dz -= p.lz * std::round(dz / p.lz);  // across the periodic seam
+        const double dx = a.particles.x[i] - l.x[i];
+        largest = std::max({largest, std::abs(dx) / p.dx, std::abs(dz) / p.dz});
+        sx += dx, sz += dz;
+    }
+    const double n = double(l.n_fluid());
+    EXPECT_TRUE(other);
+    EXPECT_LE(largest, 0.1 + 1e-12);
+    EXPECT_GT(largest, 0.09);  // 1260 draws all below 0.9 j: probability 0.9^1260 = 1e-58
+    EXPECT_LT(std::abs(sx / n) / p.dx, 0.13 * 0.1);
+    EXPECT_LT(std::abs(sz / n) / p.dz, 0.13 * 0.1);
+}
+
 TEST(Generator, ImpossibleSpecsAreInputErrors) {
     CaseSpec spec = parse_legacy_case(small_case(2), "small.txt");
     CaseSpec bad = spec;
