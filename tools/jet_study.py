@@ -29,14 +29,13 @@ their magnitude. L/D0 is the first row of jet.csv with broken = 1.
 Defaults of --root, --out and --sphjet are relative to the repository root (this file's ..);
 paths given on the command line are taken as given.
 """
-import argparse
 import csv
 import math
 import os
 import sys
 
-from study_runs import (StudyError, blew_up, drops_at, first_breakup, fmt, md_table, read_csv,
-                        run_all, run_summary, select_runs)
+from study_runs import (StudyError, add_run_arguments, blew_up, drops_at, first_breakup, fmt,
+                        md_table, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "jet", "jet.toml")
@@ -558,23 +557,12 @@ def cmd_report(args):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
-    sub = ap.add_subparsers(dest="cmd", required=True)
+    ap, sub = study_parser(__doc__)
     root_default = os.path.join(REPO, "runs", "jet_study")
     r = sub.add_parser("run", help="run what is missing of the study (resumable)")
     r.add_argument("--root", default=root_default, help="study root (default: REPO/runs/jet_study)")
-    r.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES,
-                   help="which sets to run (default: all)")
-    r.add_argument("--only", action="extend", nargs="+", metavar="RUN",
-                   help="only these runs of the chosen sets (e.g. t1_wendland_u0.25)")
-    r.add_argument("--threads", "-j", type=int, default=2, help="OpenMP threads per run (default 2)")
     r.add_argument("--dx", type=float, default=0.001, help="particle spacing [m] (default 0.001: D0/dx = 10)")
-    r.add_argument("--sphjet", default=os.path.join(REPO, "build", "cpp_driver", "sphjet"),
-                   help="sphjet binary (default: REPO/build/cpp_driver/sphjet)")
-    r.add_argument("--dry-run", action="store_true", help="print the commands, run nothing")
-    r.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)  # plumbing checks
+    add_run_arguments(r, SET_NAMES, REPO)
     p = sub.add_parser("report", help="tables and figures of the runs that exist")
     p.add_argument("--root", default=root_default, help="study root (default: REPO/runs/jet_study)")
     p.add_argument("--dx", type=float, default=0.001, help="particle spacing of the study [m]")

@@ -46,15 +46,15 @@ L / d0 = C x + b with its R^2 to each. The paper's eq 37 is the same form with r
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
 """
-import argparse
 import csv
 import math
 import os
 import statistics
 import sys
 
-from study_runs import (StudyError, blew_up, drops_at, first_breakup, fmt, is_broken, md_table,
-                        read_csv, run_all, run_summary, select_runs)
+from study_runs import (StudyError, add_run_arguments, blew_up, drops_at, first_breakup, fmt,
+                        is_broken, md_table, read_csv, run_all, run_summary, select_runs,
+                        study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "round_jet", "round_jet.toml")
@@ -323,10 +323,7 @@ def figure(out, runs, c_m, c_s):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
-    sub = ap.add_subparsers(dest="cmd", required=True)
+    ap, sub = study_parser(__doc__)
     root_default = os.path.join(REPO, "runs", "round_jet")
     for name in ("run", "report"):
         p = sub.add_parser(name, help="run what is missing (resumable)" if name == "run"
@@ -343,12 +340,7 @@ def main(argv=None):
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
         if name == "run":
-            p.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES)
-            p.add_argument("--only", action="extend", nargs="+", metavar="RUN")
-            p.add_argument("--threads", "-j", type=int, default=2)
-            p.add_argument("--sphjet", default=os.path.join(REPO, "build", "cpp_driver", "sphjet"))
-            p.add_argument("--dry-run", action="store_true")
-            p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
+            add_run_arguments(p, SET_NAMES, REPO)
         else:
             p.add_argument("--out", default=os.path.join(REPO, "cases", "round_jet"))
             p.add_argument("--no-figures", action="store_true")

@@ -19,6 +19,7 @@ write the report's cells and tables.
 
 tests/unit/python/test_study_runs.py tests this module.
 """
+import argparse
 import csv
 import os
 import re
@@ -90,6 +91,31 @@ def parse_log(run_dir):
     if out["sessions"] == 0:
         out["wall_s"] = None
     return out
+
+
+# ---------------------------------------------------------------- the command line
+def study_parser(doc):
+    """A study's command line: the first paragraph of its docstring `doc` as the description,
+    the rest as the epilog. -> (parser, its subparsers, one a command)."""
+    ap = argparse.ArgumentParser(description=doc.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=doc.split("\n\n", 1)[1])
+    return ap, ap.add_subparsers(dest="cmd", required=True)
+
+
+def add_run_arguments(p, set_names, repo):
+    """The options of a study's `run` command, on the subparser p: --set-name (of set_names),
+    --only, --threads/-j, --sphjet (default: the build under repo), --dry-run, and a hidden
+    --tmax that shortens every run (plumbing checks)."""
+    p.add_argument("--set-name", action="extend", nargs="+", choices=set_names,
+                   help="which sets to run (default: all)")
+    p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
+                   help="only these runs of the chosen sets (names as `run --dry-run` lists them)")
+    p.add_argument("--threads", "-j", type=int, default=2, help="OpenMP threads per run (default 2)")
+    p.add_argument("--sphjet", default=os.path.join(repo, "build", "cpp_driver", "sphjet"),
+                   help="sphjet binary (default: REPO/build/cpp_driver/sphjet)")
+    p.add_argument("--dry-run", action="store_true", help="print the commands, run nothing")
+    p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
 
 
 # ---------------------------------------------------------------- run

@@ -143,6 +143,22 @@ sys.exit(rc)
 """
 
 
+class CommandLineTests(unittest.TestCase):
+    """A study's `run` options, as both studies give them."""
+
+    def test_run_arguments(self):
+        ap, sub = sr.study_parser("First paragraph.\n\nThe rest.")
+        add = sub.add_parser("run")
+        sr.add_run_arguments(add, ("a", "b"), "/repo")
+        args = ap.parse_args(["run", "--set-name", "a", "--only", "r1", "r2", "-j", "3", "--tmax", "0.1"])
+        self.assertEqual((args.cmd, args.set_name, args.only, args.threads, args.tmax, args.dry_run),
+                         ("run", ["a"], ["r1", "r2"], 3, 0.1, False))
+        self.assertEqual(args.sphjet, os.path.join("/repo", "build", "cpp_driver", "sphjet"))
+        self.assertEqual((ap.description, ap.epilog), ("First paragraph.", "The rest."))
+        with redirect_stderr(io.StringIO()), self.assertRaises(SystemExit):
+            ap.parse_args(["run", "--set-name", "c"])   # not a set of the study
+
+
 class RunAllTests(unittest.TestCase):
     """The study loop with a stand-in sphjet: runs what is missing, skips what is finished,
     stops on the first failure with its exit code."""
