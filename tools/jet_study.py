@@ -29,13 +29,13 @@ their magnitude. L/D0 is the first row of jet.csv with broken = 1.
 Defaults of --root, --out and --sphjet are relative to the repository root (this file's ..);
 paths given on the command line are taken as given.
 """
-import argparse
 import csv
 import math
 import os
 import sys
 
-from study_runs import StudyError, blew_up, parse_log, run_all, select_runs
+from study_runs import (StudyError, add_run_arguments, blew_up, drops_at, first_breakup, fmt,
+                        md_table, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "jet", "jet.toml")
@@ -127,11 +127,6 @@ def cmd_run(args):
 
 
 # ---------------------------------------------------------------- report: reading a run
-def read_csv(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
 def case_value(toml, key):
     """'section.key' from the run's case.toml dict (fluid.mu from nu * rho0)."""
     sec, _, k = key.partition(".")
@@ -169,32 +164,26 @@ def check_case(run_dir, sets):
     return bad
 
 
+JET_COLUMNS = ("time", "step", "broken", "L_over_d0", "u_flux", "jet_tip_over_d0", "n_drops",
+               "head_drop_d_over_d0")
+
+
 def read_run(run_dir, sets):
     """-> dict with status and the numbers of one run (status 'missing' if no directory)."""
     r = {"dir": run_dir, "status": "missing", "t_break": None, "L_over_d0": None,
          "head_drop": None, "n_drops": None, "drops_d": None, "u_flux_mean": None,
          "notes": [], "particles": None, "wall_s": None, "particle_steps_per_s": None,
          "finished": False}
-    if not os.path.isdir(run_dir):
+    r["notes"] += check_case(run_dir, sets)  # none where the run has no case.toml
+
+    def first_and_flux(rows):
+        return (first_breakup(rows),
+                [float(x["u_flux"]) for x in rows if float(x["jet_tip_over_d0"]) >= 1.0])
+
+    got = run_summary(run_dir, r, first_and_flux, need=JET_COLUMNS)
+    if got is None:
         return r
-    r.update(parse_log(run_dir))
-    r["notes"] += check_case(run_dir, sets)
-    jet_csv = os.path.join(run_dir, "jet.csv")
-    if not os.path.isfile(jet_csv):
-        r["status"] = "no jet.csv"
-        return r
-    try:
-        rows = read_csv(jet_csv)
-        need = ("time", "step", "broken", "L_over_d0", "u_flux", "jet_tip_over_d0", "n_drops",
-                "head_drop_d_over_d0")
-        if rows and any(c not in rows[0] for c in need):
-            raise StudyError(f"expected columns {', '.join(need)}, found {', '.join(rows[0])}")
-        first = next((x for x in rows if int(float(x["broken"])) == 1), None)
-        flux = [float(x["u_flux"]) for x in rows if float(x["jet_tip_over_d0"]) >= 1.0]
-    except (StudyError, ValueError, KeyError) as e:
-        r["status"] = "unreadable"
-        r["notes"].append(f"{jet_csv}: {e}")
-        return r
+    first, flux = got
     r["u_flux_mean"] = sum(flux) / len(flux) if flux else None
     if first is not None:
         r["t_break"] = float(first["time"])
@@ -204,7 +193,7 @@ def read_run(run_dir, sets):
         drops_csv = os.path.join(run_dir, "drops.csv")
         if os.path.isfile(drops_csv):
             try:
-                d = [x for x in read_csv(drops_csv) if x.get("step") == first["step"]]
+                d = drops_at(read_csv(drops_csv), first["step"])
                 r["drops_d"] = sorted((float(x["d_eq_over_d0"]) for x in d), reverse=True)
             except (ValueError, KeyError) as e:
                 r["notes"].append(f"{drops_csv}: {e}")
@@ -223,10 +212,6 @@ def read_run(run_dir, sets):
 
 
 # ---------------------------------------------------------------- report: tables
-def fmt(v, spec=".2f", none="-"):
-    return none if v is None else format(v, spec)
-
-
 def with_err(value, ref):
     """'L (+e%)' or '-' for a Markdown cell."""
     return "-" if value is None else f"{value:.2f} ({rel_err_pct(value, ref):+.0f}%)"
@@ -248,12 +233,6 @@ def write_text(path, text):
     with open(tmp, "w") as f:
         f.write(text)
     os.replace(tmp, path)
-
-
-def md_table(header, rows):
-    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(out) + "\n"
 
 
 def uflux_pct(r, u0):
@@ -578,23 +557,12 @@ def cmd_report(args):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
-    sub = ap.add_subparsers(dest="cmd", required=True)
+    ap, sub = study_parser(__doc__)
     root_default = os.path.join(REPO, "runs", "jet_study")
     r = sub.add_parser("run", help="run what is missing of the study (resumable)")
     r.add_argument("--root", default=root_default, help="study root (default: REPO/runs/jet_study)")
-    r.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES,
-                   help="which sets to run (default: all)")
-    r.add_argument("--only", action="extend", nargs="+", metavar="RUN",
-                   help="only these runs of the chosen sets (e.g. t1_wendland_u0.25)")
-    r.add_argument("--threads", "-j", type=int, default=2, help="OpenMP threads per run (default 2)")
     r.add_argument("--dx", type=float, default=0.001, help="particle spacing [m] (default 0.001: D0/dx = 10)")
-    r.add_argument("--sphjet", default=os.path.join(REPO, "build", "cpp_driver", "sphjet"),
-                   help="sphjet binary (default: REPO/build/cpp_driver/sphjet)")
-    r.add_argument("--dry-run", action="store_true", help="print the commands, run nothing")
-    r.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)  # plumbing checks
+    add_run_arguments(r, SET_NAMES, REPO)
     p = sub.add_parser("report", help="tables and figures of the runs that exist")
     p.add_argument("--root", default=root_default, help="study root (default: REPO/runs/jet_study)")
     p.add_argument("--dx", type=float, default=0.001, help="particle spacing of the study [m]")

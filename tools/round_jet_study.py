@@ -46,14 +46,15 @@ L / d0 = C x + b with its R^2 to each. The paper's eq 37 is the same form with r
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
 """
-import argparse
 import csv
 import math
 import os
 import statistics
 import sys
 
-from study_runs import StudyError, blew_up, parse_log, run_all, select_runs
+from study_runs import (StudyError, add_run_arguments, blew_up, drops_at, first_breakup, fmt,
+                        is_broken, md_table, read_csv, run_all, run_summary, select_runs,
+                        study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "round_jet", "round_jet.toml")
@@ -175,35 +176,23 @@ def cmd_run(args):
 
 
 # ---------------------------------------------------------------- report
-def read_csv(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
 def read_run(run_dir, info):
     r = {"status": "missing", "L": None, "L_std": None, "n_window": 0, "t_first": None,
          "L_first": None, "drops_main": None, "drops_median": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
-    if not os.path.isdir(run_dir):
+    t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
+
+    def first_and_window(rows):
+        return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
+
+    got = run_summary(run_dir, r, first_and_window)
+    if got is None:
         return r
-    r.update(parse_log(run_dir))
-    path = os.path.join(run_dir, "jet.csv")
-    if not os.path.isfile(path):
-        r["status"] = "no jet.csv"
-        return r
-    try:
-        rows = read_csv(path)
-        first = next((x for x in rows if x["broken"] == "1"), None)
-        t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
-        window = [x for x in rows if float(x["time"]) >= t0]
-    except (OSError, KeyError, ValueError) as e:
-        r["status"] = "unreadable"
-        r["notes"].append(f"{path}: {e}")
-        return r
+    first, window = got
     if first is not None:
         r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
-    broken = [x for x in window if x["broken"] == "1"]
+    broken = [x for x in window if is_broken(x)]
     r["n_window"] = len(window)
     if window and len(broken) == len(window):
         ls = [float(x["L_over_d0"]) for x in window]
@@ -212,7 +201,7 @@ def read_run(run_dir, info):
         step = window[-1]["step"]
         try:
             every = read_csv(os.path.join(run_dir, "drops.csv"))
-            d = [x for x in every if x["step"] == step]
+            d = drops_at(every, step)
             main = [float(x["d_eq_over_d0"]) for x in d if x["satellite"] == "0"]
             r["n_drops"], r["n_sat"] = len(d), len(d) - len(main)
             r["drops_main"] = sum(main) / len(main) if main else None
@@ -238,16 +227,6 @@ def read_run(run_dir, info):
     else:
         r["status"] = "unfinished"
     return r
-
-
-def fmt(v, spec=".2f", none="-"):
-    return none if v is None else format(v, spec)
-
-
-def md_table(header, rows):
-    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
-    return "\n".join(out) + "\n"
 
 
 def report(args):
@@ -344,10 +323,7 @@ def figure(out, runs, c_m, c_s):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
-    sub = ap.add_subparsers(dest="cmd", required=True)
+    ap, sub = study_parser(__doc__)
     root_default = os.path.join(REPO, "runs", "round_jet")
     for name in ("run", "report"):
         p = sub.add_parser(name, help="run what is missing (resumable)" if name == "run"
@@ -364,12 +340,7 @@ def main(argv=None):
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
         if name == "run":
-            p.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES)
-            p.add_argument("--only", action="extend", nargs="+", metavar="RUN")
-            p.add_argument("--threads", "-j", type=int, default=2)
-            p.add_argument("--sphjet", default=os.path.join(REPO, "build", "cpp_driver", "sphjet"))
-            p.add_argument("--dry-run", action="store_true")
-            p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
+            add_run_arguments(p, SET_NAMES, REPO)
         else:
             p.add_argument("--out", default=os.path.join(REPO, "cases", "round_jet"))
             p.add_argument("--no-figures", action="store_true")

@@ -1,16 +1,26 @@
-"""Running the runs of a study with sphjet, one at a time, resumable (tools/jet_study.py,
-tools/round_jet_study.py).
+"""What the studies (tools/jet_study.py, tools/round_jet_study.py) share: running their runs
+with sphjet, and reading what a run wrote (run.log, jet.csv, drops.csv) into its summary.
 
-A run is finished when the last session of its run.log (the lines from the last
-`sphjet ... starting|resuming`) has a `done:` line and no `stopped by signal` line (sphjet
-writes `done:` also when interrupted), or when it stopped on a state check (a blow-up is a
-result of the study, reported, not retried). An unfinished run resumes from DIR/checkpoint.h5
-when there is one, else starts afresh (--force: a directory without a checkpoint holds nothing
-to keep). The first failure stops the study with the run's exit code and the end of its log.
-SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and exits; the study then
-exits with 128 + signal, and the next `run` resumes. One `run` per study directory at a time
-(a lock file, STUDY_DIR/.lock).
+Running: one run at a time, resumable. A run is finished when the last session of its run.log
+(the lines from the last `sphjet ... starting|resuming`) has a `done:` line and no `stopped by
+signal` line (sphjet writes `done:` also when interrupted), or when it stopped on a state check
+(a blow-up is a result of the study, reported, not retried). An unfinished run resumes from
+DIR/checkpoint.h5 when there is one, else starts afresh (--force: a directory without a
+checkpoint holds nothing to keep). The first failure stops the study with the run's exit code
+and the end of its log. SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and
+exits; the study then exits with 128 + signal, and the next `run` resumes. One `run` per study
+directory at a time (a lock file, STUDY_DIR/.lock).
+
+Reading: run_summary starts a run's summary from its run.log and hands the rows of its jet.csv
+(one row a breakup check: time, step, broken, L_over_d0, ...) to the study's own reduction;
+a run without a directory, without jet.csv or with an unreadable one gets a status that says
+so. first_breakup, is_broken and drops_at are the row tests both studies use; fmt and md_table
+write the report's cells and tables.
+
+tests/unit/python/test_study_runs.py tests this module.
 """
+import argparse
+import csv
 import os
 import re
 import shlex
@@ -81,6 +91,31 @@ def parse_log(run_dir):
     if out["sessions"] == 0:
         out["wall_s"] = None
     return out
+
+
+# ---------------------------------------------------------------- the command line
+def study_parser(doc):
+    """A study's command line: the first paragraph of its docstring `doc` as the description,
+    the rest as the epilog. -> (parser, its subparsers, one a command)."""
+    ap = argparse.ArgumentParser(description=doc.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=doc.split("\n\n", 1)[1])
+    return ap, ap.add_subparsers(dest="cmd", required=True)
+
+
+def add_run_arguments(p, set_names, repo):
+    """The options of a study's `run` command, on the subparser p: --set-name (of set_names),
+    --only, --threads/-j, --sphjet (default: the build under repo), --dry-run, and a hidden
+    --tmax that shortens every run (plumbing checks)."""
+    p.add_argument("--set-name", action="extend", nargs="+", choices=set_names,
+                   help="which sets to run (default: all)")
+    p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
+                   help="only these runs of the chosen sets (names as `run --dry-run` lists them)")
+    p.add_argument("--threads", "-j", type=int, default=2, help="OpenMP threads per run (default 2)")
+    p.add_argument("--sphjet", default=os.path.join(repo, "build", "cpp_driver", "sphjet"),
+                   help="sphjet binary (default: REPO/build/cpp_driver/sphjet)")
+    p.add_argument("--dry-run", action="store_true", help="print the commands, run nothing")
+    p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
 
 
 # ---------------------------------------------------------------- run
@@ -210,3 +245,66 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd):
     else:
         print(f"{tool.split()[0]}: {n_run} run(s) made, {n_done} already finished, {m} in all")
     return 0
+
+
+# ---------------------------------------------------------------- a run's summary
+def read_csv(path):
+    """A CSV file with a header line -> list of dicts of strings."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def run_summary(run_dir, summary, reduce, need=()):
+    """Fills `summary` (a dict with "status" and "notes"; the study's own fields with their
+    empty values) from run_dir: run.log's numbers (parse_log), then reduce(rows) with the rows
+    of jet.csv. -> reduce's result, or None where summary["status"] says why there is none:
+    "missing" (no run directory), "no jet.csv", or "unreadable" with a note naming jet.csv and
+    the error (a missing column of `need`, a value that is not a number, a KeyError or
+    StudyError raised by reduce)."""
+    summary.setdefault("status", "missing")
+    summary.setdefault("notes", [])
+    if not os.path.isdir(run_dir):
+        summary["status"] = "missing"
+        return None
+    summary.update(parse_log(run_dir))
+    path = os.path.join(run_dir, "jet.csv")
+    if not os.path.isfile(path):
+        summary["status"] = "no jet.csv"
+        return None
+    try:
+        rows = read_csv(path)
+        if rows and any(c not in rows[0] for c in need):
+            raise StudyError(f"expected columns {', '.join(need)}, found {', '.join(rows[0])}")
+        return reduce(rows)
+    except (StudyError, OSError, KeyError, ValueError) as e:
+        summary["status"] = "unreadable"
+        summary["notes"].append(f"{path}: {e}")
+        return None
+
+
+def is_broken(row):
+    """A jet.csv row of a broken jet (broken = 1)."""
+    return int(float(row["broken"])) == 1
+
+
+def first_breakup(rows):
+    """The first jet.csv row with the jet broken, or None."""
+    return next((x for x in rows if is_broken(x)), None)
+
+
+def drops_at(drops, step):
+    """The drops.csv rows of one breakup check (its step, as jet.csv writes it)."""
+    return [x for x in drops if x["step"] == step]
+
+
+# ---------------------------------------------------------------- report cells and tables
+def fmt(v, spec=".2f", none="-"):
+    """A number as a table cell; `none` for a missing one."""
+    return none if v is None else format(v, spec)
+
+
+def md_table(header, rows):
+    """A Markdown table (header, then one line a row)."""
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(out) + "\n"

@@ -177,82 +177,78 @@ struct SavedSoFar {
     throw e;
 }
 
-}  // namespace
+// ---- the start of a run ----
 
-RunSummary run_simulation(const RunOptions& opts) {
-    using clock = std::chrono::steady_clock;
-    const fs::path dir = opts.out_dir;
-
-    // ---- the case: fresh, or from the checkpoint ----
+// The case a run starts from: read afresh, or the state a checkpoint holds.
+struct RunStart {
     CaseSpec spec;
     ParticleSet particles;
-    RunState resumed;
-    std::vector<double> resumed_list_x, resumed_list_z;
-    std::vector<std::vector<double>> resumed_wall;
-    if (opts.resume) {
-        if (!fs::exists(checkpoint_path(dir)))
-            throw InputError(checkpoint_path(dir).string(), "cannot resume: no checkpoint",
-                             "a run directory written by `sphjet run`", "no checkpoint.h5");
-        Checkpoint cp = read_checkpoint(dir);
-        const fs::path case_copy = dir / "case.toml";
-        if (fs::exists(case_copy)) spec = read_modern_case(case_copy, {});
-        spec.params = cp.params;
-        particles = std::move(cp.particles);
-        resumed = cp.state;
-        if (const auto* lx = cp.array("list_x")) resumed_list_x = *lx;
-        if (const auto* lz = cp.array("list_z")) resumed_list_z = *lz;
-        for (const char* name : {"wall_nx", "wall_nz", "wall_dback", "wall_dfwd"})
-            resumed_wall.push_back(cp.array(name) ? *cp.array(name) : std::vector<double>{});
-    } else {
-        if (dir_has_files(dir) && !opts.force)
-            throw InputError(dir.string(), "output directory exists and is not empty",
-                             "a new or empty directory (or --force to overwrite, --resume to "
-                             "continue)",
-                             "existing files");
-        LoadedCase lc = load_case(opts.case_path, opts.overrides);
-        spec = std::move(lc.spec);
-        particles = std::move(lc.particles);
-        if (opts.force && fs::exists(dir)) {
-            for (const auto& e : fs::directory_iterator(dir)) {
-                const std::string name = e.path().filename().string();
-                if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
-                    name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
-                    name == "case.toml" || name == "INDAT" || name == "IPART" ||
-                    name == "NORMALS.init" || name == "gate" || name == "jet.csv" || name == "drops.csv" ||
-                    name == "removed_drops.csv")
-                    fs::remove(e.path());
-            }
-        }
-        fs::create_directories(dir);
-    }
-    if (opts.tmax) spec.params.tmax = *opts.tmax;
-    if (opts.format) spec.output.format = *opts.format;
-    const SimParams& prm = spec.params;
-    const bool legacy_out = spec.output.format != OutputFormat::Hdf5;
-    const bool hdf5_out = spec.output.format != OutputFormat::Legacy;
+    RunState resumed;  // with the core's neighbour-list positions and wall geometry below
+    std::vector<double> list_x, list_z;
+    std::vector<std::vector<double>> wall;
+};
 
-    if (legacy_out && !opts.resume) {
-        // The legacy post-processing chain reads INDAT and IPART beside the PART files.
-        write_legacy_inputs(dir, prm, particles, spec.legacy);
-    }
+RunStart start_from_checkpoint(const fs::path& dir) {
+    if (!fs::exists(checkpoint_path(dir)))
+        throw InputError(checkpoint_path(dir).string(), "cannot resume: no checkpoint",
+                         "a run directory written by `sphjet run`", "no checkpoint.h5");
+    Checkpoint cp = read_checkpoint(dir);
+    RunStart s;
+    const fs::path case_copy = dir / "case.toml";
+    if (fs::exists(case_copy)) s.spec = read_modern_case(case_copy, {});
+    s.spec.params = cp.params;
+    s.particles = std::move(cp.particles);
+    s.resumed = cp.state;
+    if (const auto* lx = cp.array("list_x")) s.list_x = *lx;
+    if (const auto* lz = cp.array("list_z")) s.list_z = *lz;
+    for (const char* name : {"wall_nx", "wall_nz", "wall_dback", "wall_dfwd"})
+        s.wall.push_back(cp.array(name) ? *cp.array(name) : std::vector<double>{});
+    return s;
+}
 
-    if (opts.threads > 0) Solver::set_threads(opts.threads);
-    Solver solver(prm, spec.output, std::move(particles));
-    if (opts.resume) {
-        solver.state() = resumed;
-        solver.set_list_positions(resumed_list_x, resumed_list_z);
-        if (resumed_wall.size() == 4)
-            solver.set_wall_geometry({&resumed_wall[0], &resumed_wall[1], &resumed_wall[2],
-                                      &resumed_wall[3]});
+// --force: removes the files an earlier run wrote into dir (and nothing else).
+void remove_run_files(const fs::path& dir) {
+    for (const auto& e : fs::directory_iterator(dir)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
+            name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
+            name == "case.toml" || name == "INDAT" || name == "IPART" ||
+            name == "NORMALS.init" || name == "gate" || name == "jet.csv" || name == "drops.csv" ||
+            name == "removed_drops.csv")
+            fs::remove(e.path());
     }
-    RunState& st = solver.state();
+}
 
-    RunLog log(dir / "run.log", opts.resume);
-    if (!opts.resume) {
-        write_file_atomically(dir / "case.toml", write_modern_case(spec), "the case copy");
-    }
+RunStart start_fresh(const RunOptions& opts) {
+    const fs::path& dir = opts.out_dir;
+    if (dir_has_files(dir) && !opts.force)
+        throw InputError(dir.string(), "output directory exists and is not empty",
+                         "a new or empty directory (or --force to overwrite, --resume to "
+                         "continue)",
+                         "existing files");
+    LoadedCase lc = load_case(opts.case_path, opts.overrides);
+    RunStart s;
+    s.spec = std::move(lc.spec);
+    s.particles = std::move(lc.particles);
+    if (opts.force && fs::exists(dir)) remove_run_files(dir);
+    fs::create_directories(dir);
+    return s;
+}
+
+// The core's state as the checkpoint left it: a resumed run lists the pairs as the first
+// run did (bitwise resume) and uses its repulsive-wall geometry.
+void restore_core_state(Solver& solver, const RunStart& start) {
+    solver.state() = start.resumed;
+    solver.set_list_positions(start.list_x, start.list_z);
+    if (start.wall.size() == 4)
+        solver.set_wall_geometry({&start.wall[0], &start.wall[1], &start.wall[2], &start.wall[3]});
+}
+
+// The log's first lines: version, command, the case and its size, and where the run starts.
+void log_start(RunLog& log, const RunOptions& opts, const SimParams& prm, const Solver& solver) {
+    const RunState& st = solver.state();
+    const fs::path& dir = opts.out_dir;
     const std::size_t np = solver.particles().size();
-    const std::size_t nfluid = solver.particles().n_fluid();
     const int used_threads = Solver::threads_for(np);   // fewer than asked for a small case
     log.line(fmt::format("sphjet {} ({}) {}", SPHJET_VERSION, h5::git_hash(),
                          opts.resume ? "resuming" : "starting"));
@@ -260,8 +256,8 @@ RunSummary run_simulation(const RunOptions& opts) {
     log.line(fmt::format("case: {} | particles {} (boundary {}, fluid {}) | h = {:.6g} m, "
                          "c0 = {:.6g} m/s | kernel {} | threads {}{} (waits: {})",
                          opts.resume ? (dir / "case.toml").string() : opts.case_path.string(), np,
-                         solver.particles().nb, nfluid, prm.h, prm.c0(), to_string(prm.kernel),
-                         Solver::threads(),
+                         solver.particles().nb, solver.particles().n_fluid(), prm.h, prm.c0(),
+                         to_string(prm.kernel), Solver::threads(),
                          used_threads == Solver::threads()
                              ? std::string()
                              : fmt::format(", a step of {} particles uses {}", np, used_threads),
@@ -271,92 +267,217 @@ RunSummary run_simulation(const RunOptions& opts) {
                              checkpoint_path(dir).string()));
     else if (const std::string note = initial_step_note(prm); !note.empty())
         log.line(note);
+}
 
-    // ---- outputs ----
-    std::optional<Hdf5Writer> h5;
-    if (hdf5_out) {
-        h5.emplace(dir, prm, opts.command_line,
-                   opts.resume ? Hdf5Writer::Mode::Resume : Hdf5Writer::Mode::Overwrite, st.step);
-        h5->set_revolution_sectors(spec.output.revolution_sectors);
-    }
-    if (opts.resume) {
-        truncate_rows(dir / "DT", st.n_outputs);
-        truncate_rows(dir / "steps.txt", st.n_outputs);
-    }
-    std::optional<DtFile> dtfile;
-    std::optional<StepsFile> stepsfile;
-    if (legacy_out) {
-        dtfile.emplace(dir / "DT", opts.resume);
-        stepsfile.emplace(dir / "steps.txt", opts.resume);
-    }
-    const auto extra = extra_fields(solver);
-    if (h5 && !opts.resume) h5->write(solver.particles(), st, extra);
-    std::optional<JetRun> jet;
-    if (spec.nozzle)
-        jet.emplace(spec, dir, opts.resume, solver.particles(), st.time, st.step,
-                    [&log](const std::string& s) { log.line(s); });
-    SavedSoFar saved;  // for the message after a failed write (stop_on_write_error)
-    saved.output = st.n_outputs;
-    if (!opts.resume) saved.output_time = st.time;
-    if (opts.resume) {
-        saved.checkpoint = true;
-        saved.checkpoint_step = st.step;
-        saved.checkpoint_time = st.time;
-    }
+// ---- outputs ----
 
-    auto write_output = [&]() {
-        st.n_outputs += 1;
-        const double t = opts.legacy_clock ? st.legacy_time : st.time;
-        if (legacy_out) {
-            write_part(dir / fmt::format("PART_{:04d}", st.n_outputs), solver.particles());
-            dtfile->append({t, st.dt_f, st.dt_cv, st.dt_new});
-            stepsfile->append({static_cast<int>(st.n_outputs), st.step, t});
+// What a run writes as it goes: snapshots (legacy PART/DT/steps.txt and/or HDF5) and
+// checkpoints, with what is on disk so far for the message after a failed write.
+class RunOutputs {
+public:
+    RunOutputs(const RunOptions& opts, const CaseSpec& spec, Solver& solver, RunLog& log)
+        : opts_(opts), dir_(opts.out_dir), prm_(spec.params), solver_(solver), log_(log),
+          legacy_(spec.output.format != OutputFormat::Hdf5),
+          hdf5_(spec.output.format != OutputFormat::Legacy) {
+        RunState& st = solver.state();
+        if (hdf5_) {
+            h5_.emplace(dir_, prm_, opts.command_line,
+                        opts.resume ? Hdf5Writer::Mode::Resume : Hdf5Writer::Mode::Overwrite,
+                        st.step);
+            h5_->set_revolution_sectors(spec.output.revolution_sectors);
         }
-        if (h5) h5->write(solver.particles(), st, extra);
-        saved.output = st.n_outputs, saved.output_time = t;
-    };
-    auto checkpoint = [&]() {
-        // the core's neighbour-list build positions: a resumed run lists the pairs as this
-        // run did (bitwise resume)
-        // and the repulsive-wall geometry as the run uses it
-        std::vector<ExtraField> kept{{"list_x", solver.list_x(), "m"},
-                                     {"list_z", solver.list_z(), "m"}};
-        for (ExtraField& f : solver.wall_geometry()) kept.push_back(std::move(f));
-        write_checkpoint(dir, solver.particles(), st, prm, kept);
-        saved.checkpoint = true, saved.checkpoint_step = st.step, saved.checkpoint_time = st.time;
-    };
+        if (opts.resume) {
+            truncate_rows(dir_ / "DT", st.n_outputs);
+            truncate_rows(dir_ / "steps.txt", st.n_outputs);
+        }
+        if (legacy_) {
+            dtfile_.emplace(dir_ / "DT", opts.resume);
+            stepsfile_.emplace(dir_ / "steps.txt", opts.resume);
+        }
+        extra_ = extra_fields(solver);
+        if (h5_ && !opts.resume) h5_->write(solver.particles(), st, extra_);
+        saved_.output = st.n_outputs;
+        if (!opts.resume) saved_.output_time = st.time;
+        if (opts.resume) {
+            saved_.checkpoint = true;
+            saved_.checkpoint_step = st.step;
+            saved_.checkpoint_time = st.time;
+        }
+    }
+
+    [[nodiscard]] bool legacy() const { return legacy_; }
+    [[nodiscard]] bool hdf5() const { return hdf5_; }
+
+    // The next snapshot.
+    void snapshot() {
+        RunState& st = solver_.state();
+        st.n_outputs += 1;
+        const double t = opts_.legacy_clock ? st.legacy_time : st.time;
+        if (legacy_) {
+            write_part(dir_ / fmt::format("PART_{:04d}", st.n_outputs), solver_.particles());
+            dtfile_->append({t, st.dt_f, st.dt_cv, st.dt_new});
+            stepsfile_->append({static_cast<int>(st.n_outputs), st.step, t});
+        }
+        if (h5_) h5_->write(solver_.particles(), st, extra_);
+        saved_.output = st.n_outputs, saved_.output_time = t;
+    }
+
+    // The state, the core's neighbour-list build positions (a resumed run lists the pairs as
+    // this run did: bitwise resume) and the repulsive-wall geometry as the run uses it.
+    void checkpoint() {
+        const RunState& st = solver_.state();
+        std::vector<ExtraField> kept{{"list_x", solver_.list_x(), "m"},
+                                     {"list_z", solver_.list_z(), "m"}};
+        for (ExtraField& f : solver_.wall_geometry()) kept.push_back(std::move(f));
+        write_checkpoint(dir_, solver_.particles(), st, prm_, kept);
+        saved_.checkpoint = true, saved_.checkpoint_step = st.step,
+        saved_.checkpoint_time = st.time;
+    }
+
+    [[noreturn]] void stop(const WriteError& e) {
+        stop_on_write_error(log_, dir_, solver_.state(), saved_, e);
+    }
+
     // A write that fails after the loop stops the run as one inside it does.
-    const auto or_stop = [&](auto&& write) {
+    template <class Write>
+    void or_stop(Write&& write) {
         try {
             write();
         } catch (const WriteError& e) {
-            stop_on_write_error(log, dir, st, saved, e);
+            stop(e);
         }
-    };
+    }
 
-    // ---- signals: stop cleanly with a checkpoint ----
-    g_stop_signal.store(0);
-    auto old_int = std::signal(SIGINT, on_stop_signal);
-    auto old_term = std::signal(SIGTERM, on_stop_signal);
-    struct Restore {
-        decltype(old_int) a, b;
-        ~Restore() {
-            std::signal(SIGINT, a);
-            std::signal(SIGTERM, b);
-        }
-    } restore{old_int, old_term};
+private:
+    const RunOptions& opts_;
+    fs::path dir_;
+    const SimParams& prm_;
+    Solver& solver_;
+    RunLog& log_;
+    bool legacy_, hdf5_;
+    std::optional<Hdf5Writer> h5_;
+    std::optional<DtFile> dtfile_;
+    std::optional<StepsFile> stepsfile_;
+    std::vector<ExtraField> extra_;
+    SavedSoFar saved_;
+};
 
-    const bool tty = isatty(fileno(stderr)) && !opts.quiet;
-    RunSummary sum;
-    sum.particles = np;
-    sum.fluid = nfluid;
-    const auto t0 = clock::now();
-    auto last_report = t0;
-    auto last_checkpoint = t0;
+// ---- the loop ----
+
+// SIGINT and SIGTERM stop the run cleanly (with a checkpoint) while this lives.
+class StopSignals {
+public:
+    StopSignals() {
+        g_stop_signal.store(0);
+        old_int_ = std::signal(SIGINT, on_stop_signal);
+        old_term_ = std::signal(SIGTERM, on_stop_signal);
+    }
+    ~StopSignals() {
+        std::signal(SIGINT, old_int_);
+        std::signal(SIGTERM, old_term_);
+    }
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+private:
+    void (*old_int_)(int) = nullptr;
+    void (*old_term_)(int) = nullptr;
+};
+
+using Clock = std::chrono::steady_clock;
+
+// The progress line: every 0.25 s on a terminal, every 10 s into a log otherwise.
+class Progress {
+public:
+    Progress(const RunOptions& opts, const RunState& st, Clock::time_point t0)
+        : opts_(opts), tty_(isatty(fileno(stderr)) && !opts.quiet), t0_(t0), last_(t0),
+          step0_(st.step), time0_(st.time) {}
+
+    void maybe_report(RunLog& log, const RunState& st, const SimParams& prm, std::size_t np,
+                      Clock::time_point now) {
+        const double wall = std::chrono::duration<double>(now - t0_).count();
+        const double since_report = std::chrono::duration<double>(now - last_).count();
+        if (!((tty_ && since_report > 0.25) || (!tty_ && !opts_.quiet && since_report > 10.0)))
+            return;
+        last_ = now;
+        const double clock = opts_.legacy_clock ? st.legacy_time : st.time;
+        const double sps = static_cast<double>(st.step - step0_) / std::max(wall, 1e-9);
+        const double rate = (st.time - time0_) / std::max(wall, 1e-9);
+        const double eta = rate > 0 ? (prm.tmax - clock) / rate : -1;
+        const std::string msg =
+            fmt::format("t = {:.5f}/{:.5g} s | step {} | dt {:.3e} s | {:.1f} steps/s | "
+                        "{:.3g} particle-steps/s | ETA {}",
+                        clock, prm.tmax, st.step, st.dt, sps, sps * static_cast<double>(np),
+                        hms(eta));
+        if (tty_) log.progress(msg);
+        else log.line(msg);
+    }
+
+private:
+    const RunOptions& opts_;
+    bool tty_;
+    Clock::time_point t0_, last_;
+    std::int64_t step0_;
+    double time0_;
+};
+
+// Whether a checkpoint is due: every checkpoint_every_steps steps, or every
+// checkpoint_every_minutes of wall time since the last one.
+class CheckpointClock {
+public:
+    CheckpointClock(const OutputSpec& out, Clock::time_point t0) : out_(out), last_(t0) {}
+    bool due(std::int64_t step, Clock::time_point now) {
+        const double since = std::chrono::duration<double>(now - last_).count();
+        const bool by_steps =
+            out_.checkpoint_every_steps > 0 && step % out_.checkpoint_every_steps == 0;
+        const bool by_time = out_.checkpoint_every_minutes > 0 &&
+                             since > 60.0 * out_.checkpoint_every_minutes;
+        if (by_steps || by_time) last_ = now;
+        return by_steps || by_time;
+    }
+
+private:
+    const OutputSpec& out_;
+    Clock::time_point last_;
+};
+
+// One step and what follows it: removed particles logged, the snapshot when due, the jet's
+// sample (and its drops removed). Returns why the run stops now (empty: go on).
+std::string step_once(const SimParams& prm, Solver& solver, RunOutputs& out,
+                      std::optional<JetRun>& jet, RunLog& log, bool output_due) {
+    RunState& st = solver.state();
+    const StepReport r = solver.step(output_due);  // the CSF fields only for outputs
+    solver.check_state();
+    if (r.removed > 0)
+        log.line(fmt::format("step {} t = {:.6g} s: {} particle(s) left the domain and "
+                             "were removed ({} in all); ids {}",
+                             st.step, st.time, r.removed, st.n_removed,
+                             fmt::join(r.removed_ids, " ")));
+    if (output_due) out.snapshot();
+    if (jet) {
+        if (const auto gone = jet->after_step(solver.particles(), st.time, st.step, output_due);
+            !gone.empty())
+            (void)solver.deactivate(gone);
+        if (std::string why = jet->stop_due(st.time); !why.empty()) return why;
+    }
+    if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
+        st.step % prm.filter_period == 0)
+        solver.density_filter();
+    return {};
+}
+
+// The step loop up to tmax, max_steps, a stop signal (StopSignals) or the jet's stop. Fills the summary's
+// step counts and times. A blow-up is logged (with the jet's record up to it) and rethrown; a
+// failed write stops the run (stop_on_write_error).
+void step_until_done(const RunOptions& opts, const CaseSpec& spec, Solver& solver,
+                     RunOutputs& out, std::optional<JetRun>& jet, RunLog& log, RunSummary& sum) {
+    RunState& st = solver.state();
+    const SimParams& prm = spec.params;
+    const auto t0 = Clock::now();
+    Progress progress(opts, st, t0);
+    CheckpointClock checkpoints(spec.output, t0);
     const std::int64_t step0 = st.step;
-    const double time0 = st.time;
     auto sim_clock = [&]() { return opts.legacy_clock ? st.legacy_time : st.time; };
-
     try {
         while (sim_clock() < prm.tmax) {
             if (opts.max_steps && st.step - step0 >= *opts.max_steps) break;
@@ -367,59 +488,21 @@ RunSummary run_simulation(const RunOptions& opts) {
             const bool output_due = (sim_clock() - prm.trec_ini) -
                                         prm.out * static_cast<double>(st.n_outputs) >=
                                     prm.out;
-            const StepReport r = solver.step(output_due);   // the CSF fields only for outputs
-            solver.check_state();
-            if (r.removed > 0)
-                log.line(fmt::format("step {} t = {:.6g} s: {} particle(s) left the domain and "
-                                     "were removed ({} in all); ids {}",
-                                     st.step, st.time, r.removed, st.n_removed,
-                                     fmt::join(r.removed_ids, " ")));
-            if (output_due) write_output();
-            if (jet) {
-                if (const auto gone = jet->after_step(solver.particles(), st.time, st.step, output_due);
-                    !gone.empty())
-                    (void)solver.deactivate(gone);
-                if (const std::string why = jet->stop_due(st.time); !why.empty()) {
-                    log.line(fmt::format("stopping at t = {:.6g} s: {}", st.time, why));
-                    break;
-                }
+            if (const std::string why = step_once(prm, solver, out, jet, log, output_due);
+                !why.empty()) {
+                log.line(fmt::format("stopping at t = {:.6g} s: {}", st.time, why));
+                break;
             }
-            if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
-                st.step % prm.filter_period == 0)
-                solver.density_filter();
-
-            const auto now = clock::now();
-            const double wall = std::chrono::duration<double>(now - t0).count();
-            const double since_report = std::chrono::duration<double>(now - last_report).count();
-            if ((tty && since_report > 0.25) || (!tty && !opts.quiet && since_report > 10.0)) {
-                last_report = now;
-                const double sps = static_cast<double>(st.step - step0) / std::max(wall, 1e-9);
-                const double rate = (st.time - time0) / std::max(wall, 1e-9);
-                const double eta = rate > 0 ? (prm.tmax - sim_clock()) / rate : -1;
-                const std::string msg =
-                    fmt::format("t = {:.5f}/{:.5g} s | step {} | dt {:.3e} s | {:.1f} steps/s | "
-                                "{:.3g} particle-steps/s | ETA {}",
-                                sim_clock(), prm.tmax, st.step, st.dt, sps,
-                                sps * static_cast<double>(np), hms(eta));
-                if (tty) log.progress(msg);
-                else log.line(msg);
-            }
-            const double since_cp = std::chrono::duration<double>(now - last_checkpoint).count();
-            const bool cp_steps = spec.output.checkpoint_every_steps > 0 &&
-                                  st.step % spec.output.checkpoint_every_steps == 0;
-            const bool cp_time = spec.output.checkpoint_every_minutes > 0 &&
-                                 since_cp > 60.0 * spec.output.checkpoint_every_minutes;
-            if (cp_steps || cp_time) {
-                checkpoint();
-                last_checkpoint = now;
-            }
+            const auto now = Clock::now();
+            progress.maybe_report(log, st, prm, sum.particles, now);
+            if (checkpoints.due(st.step, now)) out.checkpoint();
         }
     } catch (const SimulationError& e) {
         log.clear_progress();
         log.line(fmt::format("FAILED: {}", e.what()));
         if (jet) {  // the jet's record up to the blow-up (its summary and run.h5 /jet)
             try {
-                jet->finish(hdf5_out);
+                jet->finish(out.hdf5());
             } catch (const std::exception& w) {
                 log.line(fmt::format("the jet table could not be written: {}", w.what()));
             }
@@ -429,36 +512,84 @@ RunSummary run_simulation(const RunOptions& opts) {
                              st.n_outputs));
         throw;
     } catch (const WriteError& e) {
-        stop_on_write_error(log, dir, st, saved, e);
+        out.stop(e);
     }
     log.clear_progress();
-
-    sum.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
+    sum.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     sum.steps = st.step - step0;
     sum.total_steps = st.step;
     sum.time = st.time;
     sum.legacy_time = st.legacy_time;
     sum.removed = st.n_removed;
-    if (jet) sum.removed_drops = jet->removed_drops(), sum.removed_drop_particles = jet->removed_drop_particles();
-    or_stop(checkpoint);
+}
+
+// ---- the end of a run ----
+
+// The last checkpoint, EPART (legacy output, not after a signal), the jet's record and the
+// summary line.
+void finish_run(const RunOptions& opts, const CaseSpec& spec, Solver& solver, RunOutputs& out,
+                std::optional<JetRun>& jet, RunLog& log, RunSummary& sum) {
+    const RunState& st = solver.state();
+    if (jet)
+        sum.removed_drops = jet->removed_drops(),
+        sum.removed_drop_particles = jet->removed_drop_particles();
+    out.or_stop([&] { out.checkpoint(); });
     if (sum.interrupted) {
         log.line(fmt::format("stopped by signal {} at step {} t = {:.6g} s; checkpoint written: "
                              "continue with `sphjet run --resume {}`",
-                             g_stop_signal.load(), st.step, st.time, dir.string()));
-    } else if (legacy_out) {
-        or_stop([&] { write_part(dir / "EPART", solver.particles()); });
+                             g_stop_signal.load(), st.step, st.time, opts.out_dir.string()));
+    } else if (out.legacy()) {
+        out.or_stop([&] { write_part(opts.out_dir / "EPART", solver.particles()); });
     }
     sum.outputs = st.n_outputs;
-    if (jet) or_stop([&] { jet->finish(hdf5_out); });
+    if (jet) out.or_stop([&] { jet->finish(out.hdf5()); });
     log.line(fmt::format("done: {} steps ({} in all) to t = {:.6g} s (SPHysics clock {:.6g} s) in "
                          "{:.2f} s wall; {:.3g} particle-steps/s; {} outputs; {} particles left "
                          "the domain{}",
                          sum.steps, sum.total_steps, sum.time, sum.legacy_time, sum.wall_seconds,
                          sum.particle_steps_per_second(), sum.outputs, sum.removed,
                          spec.breakup && spec.breakup->remove_drops_below_h > 0
-                             ? fmt::format("; {} drop(s) ({} particles) below {:g} h removed", sum.removed_drops,
-                                           sum.removed_drop_particles, spec.breakup->remove_drops_below_h)
+                             ? fmt::format("; {} drop(s) ({} particles) below {:g} h removed",
+                                           sum.removed_drops, sum.removed_drop_particles,
+                                           spec.breakup->remove_drops_below_h)
                              : std::string()));
+}
+
+}  // namespace
+
+RunSummary run_simulation(const RunOptions& opts) {
+    const fs::path dir = opts.out_dir;
+    RunStart start = opts.resume ? start_from_checkpoint(dir) : start_fresh(opts);
+    CaseSpec& spec = start.spec;
+    if (opts.tmax) spec.params.tmax = *opts.tmax;
+    if (opts.format) spec.output.format = *opts.format;
+    if (spec.output.format != OutputFormat::Hdf5 && !opts.resume) {
+        // The legacy post-processing chain reads INDAT and IPART beside the PART files.
+        write_legacy_inputs(dir, spec.params, start.particles, spec.legacy);
+    }
+
+    if (opts.threads > 0) Solver::set_threads(opts.threads);
+    Solver solver(spec.params, spec.output, std::move(start.particles));
+    if (opts.resume) restore_core_state(solver, start);
+
+    RunLog log(dir / "run.log", opts.resume);
+    if (!opts.resume) {
+        write_file_atomically(dir / "case.toml", write_modern_case(spec), "the case copy");
+    }
+    log_start(log, opts, spec.params, solver);
+
+    RunOutputs out(opts, spec, solver, log);
+    std::optional<JetRun> jet;
+    if (spec.nozzle)
+        jet.emplace(spec, dir, opts.resume, solver.particles(), solver.state().time,
+                    solver.state().step, [&log](const std::string& s) { log.line(s); });
+
+    const StopSignals signals;  // until the last checkpoint and the summary are written
+    RunSummary sum;
+    sum.particles = solver.particles().size();
+    sum.fluid = solver.particles().n_fluid();
+    step_until_done(opts, spec, solver, out, jet, log, sum);
+    finish_run(opts, spec, solver, out, jet, log, sum);
     return sum;
 }
 

@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <stdexcept>
 #include <system_error>
 
 #include "io/h5_util.hpp"
+#include "io/particle_group.hpp"
 #include "model/errors.hpp"
 
 namespace sphjet {
@@ -34,16 +34,7 @@ void visit_state(S& s, F&& f) {
 }
 
 void check_sizes(const ParticleSet& ps, std::span<const ExtraField> extra) {
-    const std::size_t n = ps.size();
-    const std::array<std::size_t, 9> sizes{ps.z.size(),   ps.u.size(),    ps.w.size(),
-                                           ps.rho.size(), ps.p.size(),    ps.m.size(),
-                                           ps.id.size(),  ps.kind.size(), ps.active.size()};
-    for (const std::size_t s : sizes) {
-        if (s != n) {
-            throw std::invalid_argument(
-                fmt::format("write_checkpoint: particle arrays differ in length ({} vs {})", s, n));
-        }
-    }
+    particle_group::check_lengths(ps, "write_checkpoint");
     for (const ExtraField& e : extra) {
         if (e.name.empty() || e.name.find_first_of("/.") != std::string::npos) {
             throw std::invalid_argument("write_checkpoint: bad extra array name '" + e.name + "'");
@@ -86,16 +77,7 @@ void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState
             h5::write_attr(g, "nb", static_cast<std::int64_t>(ps.nb));
             h5::write_attr(g, "nbf", static_cast<std::int64_t>(ps.nbf));
             h5::write_attr(g, "n_wall", static_cast<std::int64_t>(ps.wall.size()));
-            h5::write_array(g, "x", std::span<const double>(ps.x), "m", kSum);
-            h5::write_array(g, "z", std::span<const double>(ps.z), "m", kSum);
-            h5::write_array(g, "u", std::span<const double>(ps.u), "m/s", kSum);
-            h5::write_array(g, "w", std::span<const double>(ps.w), "m/s", kSum);
-            h5::write_array(g, "rho", std::span<const double>(ps.rho), "kg/m^3", kSum);
-            h5::write_array(g, "p", std::span<const double>(ps.p), "Pa", kSum);
-            h5::write_array(g, "m", std::span<const double>(ps.m), "kg", kSum);
-            h5::write_array(g, "id", std::span<const std::int64_t>(ps.id), "1", kSum);
-            h5::write_array(g, "kind", std::span<const std::int32_t>(ps.kind), "1", kSum);
-            h5::write_array(g, "active", std::span<const std::int32_t>(ps.active), "1", kSum);
+            particle_group::write(g, ps, kSum);
             std::vector<std::int32_t> prev(ps.wall.size()), next(ps.wall.size());
             for (std::size_t i = 0; i < ps.wall.size(); ++i) {
                 prev[i] = ps.wall[i].prev;
@@ -149,16 +131,7 @@ Checkpoint read_checkpoint(const fs::path& dir_or_file) {
         const auto n_wall = static_cast<std::size_t>(h5::read_attr_int64(g, "n_wall"));
         ps.nb = static_cast<std::size_t>(h5::read_attr_int64(g, "nb"));
         ps.nbf = static_cast<std::size_t>(h5::read_attr_int64(g, "nbf"));
-        ps.x = h5::read_doubles(g, "x", n);
-        ps.z = h5::read_doubles(g, "z", n);
-        ps.u = h5::read_doubles(g, "u", n);
-        ps.w = h5::read_doubles(g, "w", n);
-        ps.rho = h5::read_doubles(g, "rho", n);
-        ps.p = h5::read_doubles(g, "p", n);
-        ps.m = h5::read_doubles(g, "m", n);
-        ps.id = h5::read_int64(g, "id", n);
-        ps.kind = h5::read_int32(g, "kind", n);
-        ps.active = h5::read_int32(g, "active", n);
+        particle_group::read(g, ps, n);
         const auto prev = h5::read_int32(g, "wall_prev", n_wall);
         const auto next = h5::read_int32(g, "wall_next", n_wall);
         ps.wall.resize(n_wall);

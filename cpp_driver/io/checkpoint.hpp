@@ -11,8 +11,8 @@
 // Layout (h5dump -H):
 //   /              attrs format = "sphjet-checkpoint", format_version, code_version,
 //                  git_hash, written_utc
-//   /particles     attrs n, nb, nbf, n_wall; datasets x z u w rho p m (float64 [n]),
-//                  id (int64 [n]), kind active (int32 [n]), wall_prev wall_next (int32 [n_wall])
+//   /particles     attrs n, nb, nbf, n_wall; the particle arrays as in snapshots
+//                  (io/particle_group.hpp), checksummed; wall_prev wall_next (int32 [n_wall])
 //   /run_state     attrs: every RunState field
 //   /parameters    attrs: every SimParams field (as in run.h5)
 //   /extra/<name>  float64 arrays of any length the caller adds (integrator or analysis state)

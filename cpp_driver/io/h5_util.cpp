@@ -649,15 +649,10 @@ const std::vector<const Param*>& param_rows() {
     return rows;
 }
 
-// The "<name>_name" attribute of an enum parameter: its case-file name, "unknown" for a value
-// outside the table; the lattice keeps the long names its files have carried.
+// The "<name>_name" attribute of an enum parameter: its case-file name (or the row's
+// h5_choices name), "unknown" for a value outside the table.
 std::string enum_name(const Param& r, std::int64_t v) {
-    if (r.attr == "lattice") {
-        if (v == static_cast<std::int64_t>(Lattice::SimpleCubic)) return "simple_cubic";
-        if (v == static_cast<std::int64_t>(Lattice::BodyCentred)) return "body_centred";
-        return "unknown";
-    }
-    return choice_name(r.choices, v);
+    return choice_name(r.h5_choices.empty() ? r.choices : r.h5_choices, v);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "io/h5_util.hpp"
+#include "io/particle_group.hpp"
 #include "io/xdmf.hpp"
 #include "model/case_spec.hpp"
 #include "model/errors.hpp"
@@ -25,38 +26,11 @@ namespace {
 constexpr std::int64_t kFormatVersion = 1;
 const char* const kRunName = "run.h5";
 
-struct StdField {
-    const char* name;
-    const char* units;
-};
-constexpr std::array<StdField, 10> kStdFields{{{"x", "m"},
-                                               {"z", "m"},
-                                               {"u", "m/s"},
-                                               {"w", "m/s"},
-                                               {"rho", "kg/m^3"},
-                                               {"p", "Pa"},
-                                               {"m", "kg"},
-                                               {"id", "1"},
-                                               {"kind", "1"},
-                                               {"active", "1"}}};
-
-bool is_std_field(std::string_view name) {
-    return std::any_of(kStdFields.begin(), kStdFields.end(),
-                       [&](const StdField& f) { return name == f.name; });
-}
+bool is_std_field(std::string_view name) { return particle_group::find(name) != nullptr; }
 
 void check_sizes(const ParticleSet& ps, std::span<const ExtraField> extra) {
+    particle_group::check_lengths(ps, "Hdf5Writer");
     const std::size_t n = ps.size();
-    const std::array<std::size_t, 10> sizes{
-        ps.x.size(), ps.z.size(), ps.u.size(),  ps.w.size(),    ps.rho.size(),
-        ps.p.size(), ps.m.size(), ps.id.size(), ps.kind.size(), ps.active.size()};
-    for (std::size_t k = 0; k < sizes.size(); ++k) {
-        if (sizes[k] != n) {
-            throw std::invalid_argument(
-                fmt::format("Hdf5Writer: particle array {} has {} values, x has {}",
-                            kStdFields[k].name, sizes[k], n));
-        }
-    }
     for (const ExtraField& e : extra) {
         if (e.name.empty() || e.name.find_first_of("/.") != std::string::npos ||
             is_std_field(e.name)) {
@@ -116,10 +90,10 @@ bool has_normal(const SnapshotInfo& s) {
     return has_extra(s, "normal_x") && has_extra(s, "normal_z");
 }
 
-xdmf::NumberType number_type(std::string_view field) {
-    return field == "id"                           ? xdmf::NumberType::Int64
-           : (field == "kind" || field == "active") ? xdmf::NumberType::Int32
-                                                    : xdmf::NumberType::Float64;
+xdmf::NumberType number_type(particle_group::Type t) {
+    return t == particle_group::Type::Int64   ? xdmf::NumberType::Int64
+           : t == particle_group::Type::Int32 ? xdmf::NumberType::Int32
+                                              : xdmf::NumberType::Float64;
 }
 
 // The grid of one snapshot: its points, vectors and connectivity in group `views`, its
@@ -137,8 +111,8 @@ xdmf::Grid grid_of(const SnapshotInfo& s, const std::string& name, std::size_t n
     g.fields.push_back({"velocity", views + "/velocity", xdmf::NumberType::Float64, true});
     if (has_normal(s))
         g.fields.push_back({"normal", views + "/normal", xdmf::NumberType::Float64, true});
-    for (const StdField& f : kStdFields) {
-        g.fields.push_back({f.name, scalars + "/" + f.name, number_type(f.name), false});
+    for (const particle_group::Field& f : particle_group::fields()) {
+        g.fields.push_back({f.name, scalars + "/" + f.name, number_type(f.type), false});
     }
     for (const std::string& e : s.extra) {
         g.fields.push_back({e, scalars + "/" + e, xdmf::NumberType::Float64, false});
@@ -213,14 +187,10 @@ void write_revolved(hid_t file, const ParticleSet& ps, std::span<const ExtraFiel
     std::vector<double> m_copy(ps.m);
     for (double& m : m_copy) m /= sectors;
     h5::write_array(g, "m_copy", std::span<const double>(m_copy), "kg");
-    for (const StdField& f : kStdFields) {
+    for (const particle_group::Field& f : particle_group::fields()) {
         const std::string name = f.name;
-        const xdmf::NumberType t = number_type(name);
-        const hid_t type = t == xdmf::NumberType::Int64   ? H5T_STD_I64LE
-                           : t == xdmf::NumberType::Int32 ? H5T_STD_I32LE
-                                                          : H5T_IEEE_F64LE;
         const std::string source = name == "m" ? "/revolved/m_copy" : "/particles/" + name;
-        h5::write_repeat_view(g, name, source, type, n, copies);
+        h5::write_repeat_view(g, name, source, particle_group::h5_type(f.type), n, copies);
     }
     for (const ExtraField& e : extra) {
         h5::write_repeat_view(g, e.name, "/particles/" + e.name, H5T_IEEE_F64LE, n, copies);
@@ -257,9 +227,7 @@ void write_run_file(const fs::path& dir, const SimParams& params, const std::str
 
 std::string default_units(std::string_view field) {
     if (field == "curvature") return "1/m";
-    for (const StdField& f : kStdFields) {
-        if (field == f.name) return f.units;
-    }
+    if (const particle_group::Field* f = particle_group::find(field)) return f->units;
     return "1";  // colour, normal_x, normal_z and anything else
 }
 
@@ -370,17 +338,7 @@ fs::path Hdf5Writer::write(const ParticleSet& ps, const RunState& state,
         h5::write_attr(f, "written_utc", h5::utc_now());
         {
             h5::Group g = h5::create_group(f, "particles");
-            const auto units = [](const char* name) { return default_units(name); };
-            h5::write_array(g, "x", std::span<const double>(ps.x), units("x").c_str());
-            h5::write_array(g, "z", std::span<const double>(ps.z), units("z").c_str());
-            h5::write_array(g, "u", std::span<const double>(ps.u), units("u").c_str());
-            h5::write_array(g, "w", std::span<const double>(ps.w), units("w").c_str());
-            h5::write_array(g, "rho", std::span<const double>(ps.rho), units("rho").c_str());
-            h5::write_array(g, "p", std::span<const double>(ps.p), units("p").c_str());
-            h5::write_array(g, "m", std::span<const double>(ps.m), units("m").c_str());
-            h5::write_array(g, "id", std::span<const std::int64_t>(ps.id), "1");
-            h5::write_array(g, "kind", std::span<const std::int32_t>(ps.kind), "1");
-            h5::write_array(g, "active", std::span<const std::int32_t>(ps.active), "1");
+            particle_group::write(g, ps);
             for (const ExtraField& e : extra) {
                 const std::string u = e.units.empty() ? default_units(e.name) : e.units;
                 h5::write_array(g, e.name, e.values, u.c_str());
@@ -433,16 +391,7 @@ Snapshot read_snapshot(const fs::path& path) {
     ps.nb = static_cast<std::size_t>(h5::read_attr_int64(f, "nb"));
     ps.nbf = static_cast<std::size_t>(h5::read_attr_int64(f, "nbf"));
     h5::Group g = h5::open_group(f, "particles");
-    ps.x = h5::read_doubles(g, "x", n);
-    ps.z = h5::read_doubles(g, "z", n);
-    ps.u = h5::read_doubles(g, "u", n);
-    ps.w = h5::read_doubles(g, "w", n);
-    ps.rho = h5::read_doubles(g, "rho", n);
-    ps.p = h5::read_doubles(g, "p", n);
-    ps.m = h5::read_doubles(g, "m", n);
-    ps.id = h5::read_int64(g, "id", n);
-    ps.kind = h5::read_int32(g, "kind", n);
-    ps.active = h5::read_int32(g, "active", n);
+    particle_group::read(g, ps, n);
     for (const std::string& name : h5::link_names(g)) {
         if (!is_std_field(name)) s.extra.emplace_back(name, h5::read_doubles(g, name, n));
     }

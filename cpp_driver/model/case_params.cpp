@@ -23,6 +23,9 @@ constexpr Choice kObstacleKinds[] = {{"solid", 1}, {"walls", 2}};
 constexpr Choice kGateFacings[] = {{"left", -1}, {"right", 1}};
 constexpr Choice kDiscLattices[] = {{"case", 0}, {"rings", 1}};
 constexpr Choice kNozzleAxes[] = {{"down", 0}, {"up", 1}, {"left", 2}, {"right", 3}};
+// The lattice's "lattice_name" attribute in HDF5 files: the long names its files have carried.
+constexpr Choice kLatticeH5Names[] = {{"simple_cubic", static_cast<std::int64_t>(Lattice::SimpleCubic)},
+                                      {"body_centred", static_cast<std::int64_t>(Lattice::BodyCentred)}};
 
 template <NamedEnum E>
 constexpr std::span<const Choice> names() {
@@ -79,7 +82,7 @@ const Param kParams[] = {
      .echo = "m^2/s, repulsive walls only"},
     {.key = "numerics.lattice", .attr = "lattice", .type = K::String, .member = member<&SimParams::lattice>(),
      .choices = names<Lattice>(), .doc = "lattice the fluid shapes are filled on",
-     .legacy = "`Initial Fluid Particle Structure: 1= SC, 2= BCC`"},
+     .legacy = "`Initial Fluid Particle Structure: 1= SC, 2= BCC`", .h5_choices = kLatticeH5Names},
 
     // [fluid]
     {.key = "fluid.rho0", .attr = "rho0", .type = K::Float, .unit = "kg/m^3", .member = member<&SimParams::rho0>(),

@@ -127,6 +127,7 @@ struct Param {
     bool required = false;
     unsigned hand = 0;         // kHandRead, kHandEcho: code of its own reads / echoes it
     bool h5_optional = false;  // absent from files older than it: read as the default
+    std::span<const Choice> h5_choices;  // the "<attr>_name" names in HDF5 files when not choices
 };
 inline constexpr unsigned kHandRead = 1;  // derived or cross-checked: the case builder reads it
 inline constexpr unsigned kHandEcho = 2;  // the writer has a line of its own for it

@@ -1,0 +1,281 @@
+#!/usr/bin/env python3
+"""Unit tests of tools/study_runs.py, the module the studies share (running their runs,
+reading a run's run.log and jet.csv into its summary). Synthetic run directories and a stand-in
+for sphjet (a small script that writes a run.log); no simulation. Each test states what it
+checks; the numbers compared are exact (they are parsed from text or counted), except where a
+test says otherwise.
+
+usage: test_study_runs.py   (unittest; exit 0 when every test passes)
+"""
+import io
+import os
+import stat
+import sys
+import tempfile
+import textwrap
+import unittest
+from contextlib import redirect_stderr, redirect_stdout
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
+sys.path.insert(0, os.path.join(REPO, "tools"))
+
+import study_runs as sr  # noqa: E402
+
+CASE_LINE = "case: c.toml | particles 120 (boundary 20, fluid 100) | h = 0.002 m"
+JET_HEADER = "time,step,broken,L_over_d0,u_flux,jet_tip_over_d0,n_drops,head_drop_d_over_d0"
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(textwrap.dedent(text).lstrip("\n"))
+
+
+def done_line(steps, total, t, wall, rate):
+    return (f"done: {steps} steps ({total} in all) to t = {t} s (SPHysics clock {t} s) in "
+            f"{wall} s wall; {rate} particle-steps/s; 3 outputs; 0 particles left the domain")
+
+
+class RunLogTests(unittest.TestCase):
+    """What run.log says of a run: finished or not, blown up, its numbers."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def log(self, *lines):
+        write(os.path.join(self.dir, "run.log"), "\n".join(lines) + "\n")
+
+    def test_last_session_starts_at_the_last_start_or_resume(self):
+        lines = ["sphjet 1 starting", "a", "sphjet 1 resuming", "b"]
+        self.assertEqual(sr.last_session(lines), ["sphjet 1 resuming", "b"])
+        self.assertEqual(sr.last_session(["x", "y"]), ["x", "y"])
+
+    def test_done_after_a_signal_is_not_finished(self):
+        # sphjet writes `done:` also when stopped by a signal: the run goes on at the next `run`
+        self.log("sphjet 1 starting", CASE_LINE, "stopped by signal 15 at step 5",
+                 done_line(5, 5, 0.01, 2.0, 300.0))
+        self.assertFalse(sr.finished(self.dir))
+        self.log("sphjet 1 starting", CASE_LINE, "stopped by signal 15 at step 5",
+                 done_line(5, 5, 0.01, 2.0, 300.0), "sphjet 1 resuming",
+                 done_line(7, 12, 0.02, 3.0, 280.0))
+        self.assertTrue(sr.finished(self.dir))
+
+    def test_a_blow_up_is_finished_and_named(self):
+        failed = "FAILED: state check at step 40 (t = 0.012 s): density out of band"
+        self.log("sphjet 1 starting", CASE_LINE, failed)
+        self.assertEqual(sr.blew_up(self.dir), failed)
+        self.assertTrue(sr.finished(self.dir))
+
+    def test_parse_log_sums_sessions(self):
+        # 10 + 20 s of wall time over two sessions; particle-steps/s over both:
+        # 120 particles x (5 + 7) steps / 30 s = 48
+        self.log("sphjet 1 starting", CASE_LINE, done_line(5, 5, 0.01, 10, 60.0),
+                 "sphjet 1 resuming", CASE_LINE, done_line(7, 12, 0.02, 20, 42.0))
+        got = sr.parse_log(self.dir)
+        self.assertEqual((got["particles"], got["boundary"], got["fluid"]), (120, 20, 100))
+        self.assertEqual((got["steps"], got["sessions"], got["t_end"]), (12, 2, 0.02))
+        self.assertEqual(got["wall_s"], 30.0)
+        self.assertEqual(got["particle_steps_per_s"], 48.0)
+        self.assertTrue(got["finished"])
+
+    def test_parse_log_without_a_log(self):
+        got = sr.parse_log(self.dir)
+        self.assertIsNone(got["wall_s"])
+        self.assertEqual(got["sessions"], 0)
+        self.assertFalse(got["finished"])
+
+
+class RunCommandTests(unittest.TestCase):
+    """Which sphjet command a run directory gets, and which runs a plan selects."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = os.path.join(self.tmp.name, "r")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_new_resume_done(self):
+        state, argv = sr.run_command("sphjet", "c.toml", self.dir, ["a.b=1"], 2, None)
+        self.assertEqual(state, "new")
+        self.assertEqual(argv, ["sphjet", "run", "c.toml", "--out", self.dir, "-j", "2",
+                                "--set", "a.b=1"])
+        # an aborted start without a checkpoint: nothing to keep, so --force
+        write(os.path.join(self.dir, "run.log"), "sphjet 1 starting\n")
+        state, argv = sr.run_command("sphjet", "c.toml", self.dir, [], 2, 0.5)
+        self.assertEqual(state, "new")
+        self.assertEqual(argv[-3:], ["--force", "--tmax", "0.5"])
+        write(os.path.join(self.dir, "checkpoint.h5"), "")
+        state, argv = sr.run_command("sphjet", "c.toml", self.dir, ["a.b=1"], 1, None)
+        self.assertEqual((state, argv), ("resume", ["sphjet", "run", "--resume", self.dir, "-j", "1"]))
+        write(os.path.join(self.dir, "run.log"), f"sphjet 1 starting\n{done_line(1, 1, 0.1, 1, 1)}\n")
+        self.assertEqual(sr.run_command("sphjet", "c.toml", self.dir, [], 1, None), ("done", None))
+
+    def test_select_runs(self):
+        plan = [("a", "a1", []), ("a", "a2", []), ("b", "b1", [])]
+        self.assertEqual([r[1] for r in sr.select_runs(plan, ["a"], None, "x", True)], ["a1", "a2"])
+        self.assertEqual([r[1] for r in sr.select_runs(plan, ["a", "b"], ["b1"], "x", True)], ["b1"])
+        with self.assertRaisesRegex(sr.StudyError, "--only nope: not in the plan"):
+            sr.select_runs(plan, ["a"], ["nope"], "x", True)
+        with self.assertRaisesRegex(sr.StudyError, "not found or not executable"):
+            sr.select_runs(plan, ["a"], None, os.path.join(self.tmp.name, "none"), False)
+
+
+FAKE_SPHJET = """\
+#!/usr/bin/env python3
+# Stands in for sphjet run: writes a run.log with one session; exit code from FAKE_RC.
+import os, sys
+a = sys.argv[1:]
+out = a[a.index("--resume") + 1] if "--resume" in a else a[a.index("--out") + 1]
+os.makedirs(out, exist_ok=True)
+rc = int(os.environ.get("FAKE_RC", "0"))
+with open(os.path.join(out, "run.log"), "a") as f:
+    f.write("sphjet 1 " + ("resuming" if "--resume" in a else "starting") + "\\n")
+    if rc == 0:
+        f.write("done: 3 steps (3 in all) to t = 0.1 s (SPHysics clock 0.1 s) in 1 s wall; "
+                "9 particle-steps/s; 1 outputs; 0 particles left the domain\\n")
+sys.exit(rc)
+"""
+
+
+class CommandLineTests(unittest.TestCase):
+    """A study's `run` options, as both studies give them."""
+
+    def test_run_arguments(self):
+        ap, sub = sr.study_parser("First paragraph.\n\nThe rest.")
+        add = sub.add_parser("run")
+        sr.add_run_arguments(add, ("a", "b"), "/repo")
+        args = ap.parse_args(["run", "--set-name", "a", "--only", "r1", "r2", "-j", "3", "--tmax", "0.1"])
+        self.assertEqual((args.cmd, args.set_name, args.only, args.threads, args.tmax, args.dry_run),
+                         ("run", ["a"], ["r1", "r2"], 3, 0.1, False))
+        self.assertEqual(args.sphjet, os.path.join("/repo", "build", "cpp_driver", "sphjet"))
+        self.assertEqual((ap.description, ap.epilog), ("First paragraph.", "The rest."))
+        with redirect_stderr(io.StringIO()), self.assertRaises(SystemExit):
+            ap.parse_args(["run", "--set-name", "c"])   # not a set of the study
+
+
+class RunAllTests(unittest.TestCase):
+    """The study loop with a stand-in sphjet: runs what is missing, skips what is finished,
+    stops on the first failure with its exit code."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.sphjet = os.path.join(self.tmp.name, "sphjet")
+        write(self.sphjet, FAKE_SPHJET)
+        os.chmod(self.sphjet, os.stat(self.sphjet).st_mode | stat.S_IXUSR)
+        self.sdir = os.path.join(self.tmp.name, "study")
+
+    def tearDown(self):
+        os.environ.pop("FAKE_RC", None)
+        self.tmp.cleanup()
+
+    def run_all(self, todo, dry_run=False):
+        out, err = io.StringIO(), io.StringIO()
+        with redirect_stdout(out), redirect_stderr(err):
+            rc = sr.run_all(todo, self.sdir, "c.toml", self.sphjet, 1, None, dry_run,
+                            "study.py run", "a study", self.tmp.name)
+        return rc, out.getvalue(), err.getvalue()
+
+    def test_runs_then_skips(self):
+        todo = [("r1", ["a=1"]), ("r2", [])]
+        rc, out, _ = self.run_all(todo, dry_run=True)
+        self.assertEqual(rc, 0)
+        self.assertIn("dry run: 2 of 2 run(s) to do", out)
+        self.assertFalse(os.path.exists(os.path.join(self.sdir, "r1")))
+        rc, out, _ = self.run_all(todo)
+        self.assertEqual(rc, 0)
+        self.assertIn("[1/2] r1: done", out)
+        self.assertIn("2 run(s) made, 0 already finished, 2 in all", out)
+        self.assertTrue(sr.finished(os.path.join(self.sdir, "r1")))
+        rc, out, _ = self.run_all(todo)
+        self.assertEqual(rc, 0)
+        self.assertIn("[2/2] r2: finished, skipped", out)
+        self.assertIn("0 run(s) made, 2 already finished", out)
+
+    def test_first_failure_stops_with_its_code(self):
+        os.environ["FAKE_RC"] = "3"
+        rc, out, err = self.run_all([("r1", []), ("r2", [])])
+        self.assertEqual(rc, 3)
+        self.assertIn("[1/2] r1: FAILED with exit code 3", err)
+        self.assertNotIn("r2", out)
+
+
+class SummaryTests(unittest.TestCase):
+    """run_summary and the row tests: a run's status when it has no directory, no jet.csv or an
+    unreadable one, and the rows handed to the study's reduction otherwise."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = os.path.join(self.tmp.name, "run")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def jet(self, text):
+        write(os.path.join(self.dir, "jet.csv"), text)
+
+    def test_missing_and_no_jet_csv(self):
+        r = {"status": "missing", "notes": []}
+        self.assertIsNone(sr.run_summary(self.dir, r, lambda rows: 1))
+        self.assertEqual(r["status"], "missing")
+        write(os.path.join(self.dir, "run.log"),
+              f"sphjet 1 starting\n{CASE_LINE}\n{done_line(4, 4, 0.1, 2, 240)}\n")
+        self.assertIsNone(sr.run_summary(self.dir, r, lambda rows: 1))
+        self.assertEqual(r["status"], "no jet.csv")
+        self.assertEqual(r["particles"], 120)   # run.log read all the same
+        self.assertTrue(r["finished"])
+
+    def test_rows_reach_the_reduction(self):
+        self.jet(f"""
+            {JET_HEADER}
+            0.01,10,0,0,0.06,0.5,0,0
+            0.02,20,1,8.5,0.07,9.0,2,1.9
+            0.03,30,1.0,7.5,0.07,9.5,3,1.8
+            """)
+        r = {"status": "missing", "notes": []}
+        rows = sr.run_summary(self.dir, r, lambda rows: rows, need=JET_HEADER.split(","))
+        self.assertEqual(len(rows), 3)
+        self.assertEqual(sr.first_breakup(rows)["step"], "20")
+        self.assertEqual([sr.is_broken(x) for x in rows], [False, True, True])
+        self.assertEqual(r["notes"], [])
+
+    def test_unreadable(self):
+        # a column missing from `need`, and a value that is not a number in the reduction
+        self.jet("time,step\n0.01,10\n")
+        r = {"status": "missing", "notes": []}
+        self.assertIsNone(sr.run_summary(self.dir, r, lambda rows: rows, need=("time", "broken")))
+        self.assertEqual(r["status"], "unreadable")
+        self.assertEqual(r["notes"], [f"{os.path.join(self.dir, 'jet.csv')}: expected columns "
+                                      f"time, broken, found time, step"])
+        self.jet(f"{JET_HEADER}\n0.01,10,yes,0,0,0,0,0\n")
+        r = {"status": "missing", "notes": []}
+        self.assertIsNone(sr.run_summary(self.dir, r, sr.first_breakup))
+        self.assertEqual(r["status"], "unreadable")
+        self.assertIn("could not convert string to float: 'yes'", r["notes"][0])
+
+    def test_no_breakup_and_drops_at(self):
+        self.assertIsNone(sr.first_breakup([{"broken": "0"}, {"broken": "0.0"}]))
+        drops = [{"step": "20", "d": "1"}, {"step": "30", "d": "2"}, {"step": "20", "d": "3"}]
+        self.assertEqual([x["d"] for x in sr.drops_at(drops, "20")], ["1", "3"])
+        self.assertEqual(sr.drops_at(drops, "40"), [])
+
+
+class TableTests(unittest.TestCase):
+    def test_fmt(self):
+        self.assertEqual(sr.fmt(None), "-")
+        self.assertEqual(sr.fmt(1.234), "1.23")
+        self.assertEqual(sr.fmt(3, "d"), "3")
+        self.assertEqual(sr.fmt(None, none="n/a"), "n/a")
+
+    def test_md_table(self):
+        self.assertEqual(sr.md_table(["a", "b"], [[1, "x"], [2.5, None]]),
+                         "| a | b |\n|---|---|\n| 1 | x |\n| 2.5 | None |\n")
+
+
+if __name__ == "__main__":
+    unittest.main()
