@@ -41,9 +41,9 @@ contains
     logical :: mls, sing
 
     n_singular = 0
-    if (prm%density_filter /= FILTER_SHEPARD .and. prm%density_filter /= FILTER_MLS) return
-    mls = prm%density_filter == FILTER_MLS
-    call gather_sorted(st, prm%h, s, prm)
+    if (all(prm%numerics%density_filter /= [FILTER_SHEPARD, FILTER_MLS])) return
+    mls = prm%numerics%density_filter == FILTER_MLS
+    call gather_sorted(st, prm%numerics%h, s, prm)
     n = s%n
     w0 = kernel_w0(kern)
     allocate(body%v(n), body%rnew(n), body%beta(3, n))
@@ -87,8 +87,8 @@ contains
       else
         st%rho(i) = (acc(2, k) + w0 * s%m(k)) / (acc(1, k) + w0 * v(k))
       end if
-      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+      st%p(i) = tait_pressure(st%rho(i), prm%eos%rho0, prm%eos%b, prm%eos%gamma)
+      st%c(i) = tait_sound_speed(st%rho(i), prm%eos%rho0, prm%eos%c0)
     end do
   end subroutine apply_density_filter
 

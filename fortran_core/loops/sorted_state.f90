@@ -1,11 +1,11 @@
 !> The active particles gathered in cell order (contiguous per cell), the layout every pair
 !> traversal works on; rates are accumulated here and scattered back afterwards.
 !>
-!> Image particles (axisymmetric mode and periodic z; sph_params_t%geometry, %periodic_z):
+!> Image particles (axisymmetric mode and periodic z; sph_params_t%geometry%kind, %periodic_z):
 !> gather_sorted then adds, as extra sorted slots, the mirror image of every active particle
 !> within 2h + skin of the axis x = 0 at the build (x -> -x, u -> -u, the rest equal) and the
-!> periodic image of every particle or axis image within 2h + skin of z = dom_zmin or
-!> dom_zmax at the build (z -+ lz). An image slot has grid%order(k) > st%n, src(k) its source
+!> periodic image of every particle or axis image within 2h + skin of z = domain%zmin or
+!> domain%zmax at the build (z -+ lz). An image slot has grid%order(k) > st%n, src(k) its source
 !> particle, usign(k) its x (and u) sign and zshift(k) its z shift, fixed at the build; at
 !> every gather it is put at (usign x, z + zshift) of its source's current position. The
 !> pair sums treat it as any neighbour and what accumulates in its slot is discarded: every
@@ -196,8 +196,8 @@ contains
     images = .false.
     axi = .false.
     if (present(prm)) then
-      axi = prm%geometry == GEOM_AXISYMMETRIC
-      images = axi .or. prm%periodic_z /= 0
+      axi = prm%geometry%kind == GEOM_AXISYMMETRIC
+      images = axi .or. prm%geometry%periodic_z /= 0
     end if
     if (images) then
       call update_list(st, h, s, prm)
@@ -327,7 +327,7 @@ contains
     integer :: i, k, n
     n = st%n
     call image_particles(xl(1:n), zl(1:n), st%active(1:n), 2.0_rp * h + skin, prm, &
-                         prm%geometry == GEOM_AXISYMMETRIC, xe, ze, ae, isrc, sg, dz)
+                         prm%geometry%kind == GEOM_AXISYMMETRIC, xe, ze, ae, isrc, sg, dz)
     allocate(fe(size(xe)))
     fe(1:n) = st%kind(1:n) == KIND_FLUID
     do i = n + 1, size(xe)
@@ -721,10 +721,10 @@ contains
     real(rp) :: lz, zlo, zhi, sgn
     logical :: per
     n = size(xl)
-    per = prm%periodic_z /= 0
-    lz = prm%dom_zmax - prm%dom_zmin
-    zlo = prm%dom_zmin + reach
-    zhi = prm%dom_zmax - reach
+    per = prm%geometry%periodic_z /= 0
+    lz = prm%domain%zmax - prm%domain%zmin
+    zlo = prm%domain%zmin + reach
+    zhi = prm%domain%zmax - reach
     ! at most one axis image per particle, and two periodic images per particle or axis image
     cap = n
     if (axi) cap = cap + n
