@@ -13,7 +13,8 @@ module sphjet_capi
                           CURV_NORMALS_ALL, CURV_NORMALS_BAND
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
-  use sorted_state, only: sorted_t, gather_sorted, R_AX, R_AZ
+  use sorted_state, only: sorted_t, R_AX, R_AZ
+  use list_rebuild, only: gather_sorted
   use traversal, only: pair_list_t, build_row_pairs, PAIRS_ALL
   use rates, only: compute_rates
   use predictor_corrector, only: pc_step, update_eos

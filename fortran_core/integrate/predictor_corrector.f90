@@ -15,7 +15,8 @@ module predictor_corrector
                           SPH_OK, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t, team_work_t, in_team, one_thread, set_open_team, thread_lists
+  use sorted_state, only: sorted_t, thread_lists
+  use omp_team, only: team_work_t, in_team, one_thread, set_open_team
   use rates, only: compute_rates
   use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
@@ -113,7 +114,7 @@ contains
 
     ! Planar runs without surface tension on several threads: both stages in one parallel
     ! region, whose threads run the particle loops of the gather, the sweeps, the scatter
-    ! and the integrator as its orphaned worksharing loops (sorted_state.f90, in_team), so
+    ! and the integrator as its orphaned worksharing loops (omp_team.f90, in_team), so
     ! that a step has the barriers those loops need and no more (libgomp's passive waits
     ! make each barrier a futex sleep and wake-up).
     if (.not. one_thread() .and. prm%geometry%kind /= GEOM_AXISYMMETRIC .and. prm%geometry%periodic_z == 0 &

@@ -6,7 +6,8 @@ module filter_loops
   use sphjet_kinds, only: rp, ip, KIND_FLUID, FILTER_SHEPARD, FILTER_MLS
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, gather_sorted
+  use sorted_state, only: sorted_t
+  use list_rebuild, only: gather_sorted
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID, SWEEP_FRESH, &
                        SWEEP_KEEP, SWEEP_REUSE
   use density_filter, only: mls_beta
@@ -81,7 +82,7 @@ contains
     do k = 1, n
       if (.not. s%fluid(k)) cycle
       i = s%grid%order(k)
-      if (i > st%n) cycle   ! an image slot (sorted_state.f90)
+      if (i > st%n) cycle   ! an image slot (particle_images.f90)
       if (mls) then
         st%rho(i) = rnew(k) + beta(1, k) * w0 * s%m(k)
       else

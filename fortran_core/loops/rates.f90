@@ -14,8 +14,8 @@ module rates
                           VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
-  use sorted_state, only: sorted_t, gather_sorted, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, &
-                          R_XU, R_XW
+  use sorted_state, only: sorted_t, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, R_XU, R_XW
+  use list_rebuild, only: gather_sorted
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_FRESH
   use viscosity, only: artificial_pi, laminar_factor
@@ -100,7 +100,7 @@ contains
     end if
 
     ! tensile R and the wall geometry in sorted order (an axis image's normal is mirrored);
-    ! in an open team (sorted_state.f90) by one of its threads
+    ! in an open team (omp_team.f90) by one of its threads
     body%inv_wdp = 0.0_rp
     if (body%tensile) then
       call kernel_eval(kern, tensile_q(kern%kind) * prm%numerics%h, wdp, fdummy)

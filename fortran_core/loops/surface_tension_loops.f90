@@ -32,7 +32,9 @@ module surface_tension_loops
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, copy_to_images, team_work_t, in_team, R_AX, R_AZ
+  use sorted_state, only: sorted_t, R_AX, R_AZ
+  use particle_images, only: copy_to_images
+  use omp_team, only: team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
@@ -176,7 +178,7 @@ contains
     call sweep(PASS_COLOUR, kern, s, wk, reuse, axi)
     if (axi) wk%c2 = wk%c2 * wk%gi
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
-    ! beyond the image band (sorted_state.f90); nothing to do without images
+    ! beyond the image band (particle_images.f90); nothing to do without images
     if (s%n > s%n_real) then
       call copy_to_images(s, wk%c, .false.)
       if (axi) call copy_to_images(s, wk%c2, .false.)
