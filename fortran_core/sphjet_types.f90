@@ -7,50 +7,105 @@ module sphjet_types
   use sphjet_kinds, only: rp, ip, i8
   implicit none
   private
-  public :: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
+  public :: sph_params_t, sph_numerics_t, sph_time_step_t, sph_eos_t, sph_domain_t, &
+            sph_viscosity_t, sph_boundary_t, sph_surface_tension_t, sph_nozzle_t, &
+            sph_geometry_t, sph_gravity_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
 
-  !> Scalar parameters of a run (C struct sph_params_t).
-  type, bind(C) :: sph_params_t
+  !> Kernel, smoothing length and the corrections applied to the SPH sums
+  !> (C struct sph_numerics_t).
+  type, bind(C) :: sph_numerics_t
     integer(c_int) :: kernel = 5             !< 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland
-    integer(c_int) :: viscosity = 1          !< 1 artificial, 2 laminar
-    integer(c_int) :: boundary = 2           !< 1 repulsive (Monaghan-Kos), 2 dynamic
     integer(c_int) :: density_filter = 0     !< 0 none, 1 Shepard, 2 MLS
     integer(c_int) :: tensile = 0            !< 1: tensile-instability correction on
-    integer(c_int) :: dbc_period = 1         !< steps between dynamic-boundary density updates
-    integer(c_int) :: variable_dt = 1        !< 1: dt from CFL each step
-    integer(c_int) :: remove_out_of_domain = 1 !< 1: remove leavers and count, 0: error
-    integer(c_int) :: st_delta = 0           !< CSF delta in eq 24: 0 pressure-consistent, 1 colour gradient (paper)
-    integer(c_int) :: geometry = 0           !< 0 planar (x, z); 1 axisymmetric (x = r >= 0, axis x = 0)
-    integer(c_int) :: periodic_z = 0         !< 1: periodic in z with period dom_zmax - dom_zmin
     real(c_double) :: h = 0.0_rp             !< smoothing length [m]
+    real(c_double) :: xsph_eps = 0.5_rp      !< XSPH epsilon
+  end type sph_numerics_t
+
+  !> Time-step control (C struct sph_time_step_t).
+  type, bind(C) :: sph_time_step_t
+    integer(c_int) :: variable_dt = 1        !< 1: dt from CFL each step
+    real(c_double) :: cfl = 0.2_rp           !< Courant number
+    real(c_double) :: dt_min = 0.0_rp        !< a step below this is a collapse [s]
+  end type sph_time_step_t
+
+  !> Tait equation of state (C struct sph_eos_t).
+  type, bind(C) :: sph_eos_t
     real(c_double) :: rho0 = 1000.0_rp       !< reference density [kg/m^3]
     real(c_double) :: b = 0.0_rp             !< Tait B [Pa]
     real(c_double) :: gamma = 7.0_rp         !< Tait exponent
     real(c_double) :: c0 = 0.0_rp            !< sound speed at rho0 [m/s]
+  end type sph_eos_t
+
+  !> Where and in what state a particle may be (C struct sph_domain_t).
+  type, bind(C) :: sph_domain_t
+    integer(c_int) :: remove_out = 1         !< 1: remove leavers and count, 0: error
+    real(c_double) :: xmin = 0.0_rp, xmax = 0.0_rp  !< fluid beyond leaves the domain [m]
+    real(c_double) :: zmin = 0.0_rp, zmax = 0.0_rp
+    real(c_double) :: rho_min = 0.0_rp, rho_max = 0.0_rp  !< sane density band [kg/m^3]
+  end type sph_domain_t
+
+  !> Fluid viscosity (C struct sph_viscosity_t).
+  type, bind(C) :: sph_viscosity_t
+    integer(c_int) :: model = 1              !< 1 artificial, 2 laminar
+    real(c_double) :: value = 0.0_rp         !< alpha (artificial) or nu [m^2/s] (laminar)
+  end type sph_viscosity_t
+
+  !> Boundary particles: the wall model and the moving gate (C struct sph_boundary_t).
+  type, bind(C) :: sph_boundary_t
+    integer(c_int) :: model = 2              !< 1 repulsive (Monaghan-Kos), 2 dynamic
+    integer(c_int) :: dbc_period = 1         !< steps between dynamic-boundary density updates
     real(c_double) :: coef = 10.0_rp         !< speed-of-sound coefficient (repulsive walls)
     real(c_double) :: h_swl = 1.0_rp         !< still-water depth [m] (repulsive walls)
-    real(c_double) :: visc_value = 0.0_rp    !< alpha (artificial) or nu [m^2/s] (laminar)
-    real(c_double) :: wall_viscosity = 0.0_rp !< nu of the repulsive-wall viscous term [m^2/s]
-    real(c_double) :: xsph_eps = 0.5_rp      !< XSPH epsilon
-    real(c_double) :: cfl = 0.2_rp           !< Courant number
-    real(c_double) :: gx = 0.0_rp, gz = -9.81_rp  !< gravity [m/s^2]
-    real(c_double) :: sigma = 0.0_rp         !< surface tension [N/m]; 0 = off
-    real(c_double) :: dom_xmin = 0.0_rp, dom_xmax = 0.0_rp  !< fluid beyond leaves the domain [m]
-    real(c_double) :: dom_zmin = 0.0_rp, dom_zmax = 0.0_rp
-    real(c_double) :: rho_min = 0.0_rp, rho_max = 0.0_rp    !< sane density band [kg/m^3]
-    real(c_double) :: dt_min = 0.0_rp        !< a step below this is a collapse [s]
+    real(c_double) :: viscosity = 0.0_rp     !< nu of the repulsive-wall viscous term [m^2/s]
     real(c_double) :: gate_vx = 0.0_rp       !< moving boundary (gate) velocity from gate_t_start [m/s]
     real(c_double) :: gate_vz = 0.0_rp
     real(c_double) :: gate_t_start = 0.0_rp  !< time the gate starts moving [s]
     real(c_double) :: gate_z_cap = 0.0_rp    !< a gate particle rises no higher [m]
-    real(c_double) :: drive_u = 0.0_rp       !< driven nozzle: plug speed along the axis [m/s]; 0 = no nozzle
-    real(c_double) :: drive_x0 = 0.0_rp, drive_z0 = 0.0_rp  !< orifice centre [m]
-    real(c_double) :: drive_ex = 0.0_rp, drive_ez = -1.0_rp !< unit jet axis (flow direction)
-    real(c_double) :: drive_half_width = 0.0_rp  !< plug half-width across the axis [m]
-    real(c_double) :: axis_m1 = 0.0_rp       !< rings pair: a ring lighter is in the first column [kg]
-    integer(c_int) :: axis_pair = 0          !< axisymmetric pair: 0 smoothed radius, 1 rings
+  end type sph_boundary_t
+
+  !> CSF surface tension (C struct sph_surface_tension_t).
+  type, bind(C) :: sph_surface_tension_t
+    integer(c_int) :: delta = 0              !< CSF delta in eq 24: 0 pressure-consistent,
+                                             !< 1 colour gradient (paper)
     integer(c_int) :: rings_curvature = 0    !< rings pair's surface rows: 0 neighbours' mean, 1 own
     integer(c_int) :: curvature_normals = 0  !< free-surface curvature's normals: 0 all, 1 within h
+    real(c_double) :: sigma = 0.0_rp         !< surface tension [N/m]; 0 = off
+  end type sph_surface_tension_t
+
+  !> Driven nozzle (C struct sph_nozzle_t).
+  type, bind(C) :: sph_nozzle_t
+    real(c_double) :: u = 0.0_rp             !< plug speed along the axis [m/s]; 0 = no nozzle
+    real(c_double) :: x0 = 0.0_rp, z0 = 0.0_rp  !< orifice centre [m]
+    real(c_double) :: ex = 0.0_rp, ez = -1.0_rp !< unit jet axis (flow direction)
+    real(c_double) :: half_width = 0.0_rp    !< plug half-width across the axis [m]
+  end type sph_nozzle_t
+
+  !> Planar or axisymmetric, periodicity, and the axisymmetric pair (C struct sph_geometry_t).
+  type, bind(C) :: sph_geometry_t
+    integer(c_int) :: kind = 0               !< 0 planar (x, z); 1 axisymmetric (x = r >= 0, axis x = 0)
+    integer(c_int) :: periodic_z = 0         !< 1: periodic in z with period domain%zmax - domain%zmin
+    integer(c_int) :: axis_pair = 0          !< axisymmetric pair: 0 smoothed radius, 1 rings
+    real(c_double) :: axis_m1 = 0.0_rp       !< rings pair: a ring lighter is in the first column [kg]
+  end type sph_geometry_t
+
+  !> Body force (C struct sph_gravity_t).
+  type, bind(C) :: sph_gravity_t
+    real(c_double) :: gx = 0.0_rp, gz = -9.81_rp  !< gravity [m/s^2]
+  end type sph_gravity_t
+
+  !> Scalar parameters of a run, one member per concern (C struct sph_params_t). A new
+  !> parameter goes into the group of its concern, here and in capi/sphjet_core.h.
+  type, bind(C) :: sph_params_t
+    type(sph_numerics_t) :: numerics
+    type(sph_time_step_t) :: time_step
+    type(sph_eos_t) :: eos
+    type(sph_domain_t) :: domain
+    type(sph_viscosity_t) :: viscosity
+    type(sph_boundary_t) :: boundary
+    type(sph_surface_tension_t) :: surface_tension
+    type(sph_nozzle_t) :: nozzle
+    type(sph_geometry_t) :: geometry
+    type(sph_gravity_t) :: gravity
   end type sph_params_t
 
   !> The particle arrays (C struct sph_arrays_t). All arrays have n entries, particles in

@@ -28,54 +28,64 @@ DomainBounds run_domain(const SimParams& p, const ParticleSet& ps) {
 
 sph_params_t core_params(const SimParams& p, const OutputSpec& out, const DomainBounds& dom) {
     sph_params_t c{};
-    c.kernel = static_cast<int>(p.kernel);
-    c.viscosity = static_cast<int>(p.viscosity);
-    c.boundary = static_cast<int>(p.boundary);
-    c.density_filter = static_cast<int>(p.density_filter);
-    c.tensile = p.tensile_on() ? 1 : 0;
-    c.dbc_period = std::max(p.dbc_period, 1);
-    c.variable_dt = p.variable_dt ? 1 : 0;
-    c.remove_out_of_domain = out.remove_out_of_domain ? 1 : 0;
-    c.st_delta = static_cast<int>(p.st_delta);
-    c.geometry = static_cast<int>(p.geometry);
-    c.periodic_z = p.periodic_z ? 1 : 0;
-    c.axis_pair = static_cast<int>(p.axis_pair);
-    c.rings_curvature = static_cast<int>(p.rings_curvature);
-    c.curvature_normals = static_cast<int>(p.curvature_normals);
+    c.numerics.kernel = static_cast<int>(p.kernel);
+    c.numerics.density_filter = static_cast<int>(p.density_filter);
+    c.numerics.tensile = p.tensile_on() ? 1 : 0;
+    c.numerics.h = p.h;
+    c.numerics.xsph_eps = p.xsph_eps;
+
+    c.time_step.variable_dt = p.variable_dt ? 1 : 0;
+    c.time_step.cfl = p.cfl;
+    c.time_step.dt_min = out.dt_min;
+
+    c.eos.rho0 = p.rho0;
+    c.eos.b = p.B;
+    c.eos.gamma = p.gamma;
+    c.eos.c0 = p.c0();
+
+    c.domain.remove_out = out.remove_out_of_domain ? 1 : 0;
+    c.domain.xmin = dom.xmin;
+    c.domain.xmax = dom.xmax;
+    c.domain.zmin = dom.zmin;
+    c.domain.zmax = dom.zmax;
+    c.domain.rho_min = out.rho_min_factor * p.rho0;
+    c.domain.rho_max = out.rho_max_factor * p.rho0;
+
+    c.viscosity.model = static_cast<int>(p.viscosity);
+    c.viscosity.value = p.visc_value;
+
+    c.boundary.model = static_cast<int>(p.boundary);
+    c.boundary.dbc_period = std::max(p.dbc_period, 1);
+    c.boundary.coef = p.coef;
+    c.boundary.h_swl = p.h_swl > 0 ? p.h_swl : 1.0;
+    c.boundary.viscosity = p.wall_viscosity;
+    c.boundary.gate_vx = p.gate_vx;
+    c.boundary.gate_vz = p.gate_vz;
+    c.boundary.gate_t_start = p.gate_t_start;
+    c.boundary.gate_z_cap = p.gate_z_cap;
+
+    c.surface_tension.delta = static_cast<int>(p.st_delta);
+    c.surface_tension.rings_curvature = static_cast<int>(p.rings_curvature);
+    c.surface_tension.curvature_normals = static_cast<int>(p.curvature_normals);
+    c.surface_tension.sigma = p.sigma;
+
+    c.nozzle.u = p.drive_u;
+    c.nozzle.x0 = p.drive_x0;
+    c.nozzle.z0 = p.drive_z0;
+    c.nozzle.ex = p.drive_ex;
+    c.nozzle.ez = p.drive_ez;
+    c.nozzle.half_width = p.drive_half_width;
+
+    c.geometry.kind = static_cast<int>(p.geometry);
+    c.geometry.periodic_z = p.periodic_z ? 1 : 0;
+    c.geometry.axis_pair = static_cast<int>(p.axis_pair);
     // the rings pair's axis correction tells the first column (r = dx/2) by its ring mass,
     // pi rho0 dx^2 dz against 3 pi rho0 dx^2 dz for the second (axisymmetric_loops.f90)
-    c.axis_m1 = p.axis_pair == AxisPair::Rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dx * p.dz : 0.0;
-    c.h = p.h;
-    c.rho0 = p.rho0;
-    c.b = p.B;
-    c.gamma = p.gamma;
-    c.c0 = p.c0();
-    c.coef = p.coef;
-    c.h_swl = p.h_swl > 0 ? p.h_swl : 1.0;
-    c.visc_value = p.visc_value;
-    c.wall_viscosity = p.wall_viscosity;
-    c.xsph_eps = p.xsph_eps;
-    c.cfl = p.cfl;
-    c.gx = p.gx;
-    c.gz = p.gz;
-    c.sigma = p.sigma;
-    c.dom_xmin = dom.xmin;
-    c.dom_xmax = dom.xmax;
-    c.dom_zmin = dom.zmin;
-    c.dom_zmax = dom.zmax;
-    c.rho_min = out.rho_min_factor * p.rho0;
-    c.rho_max = out.rho_max_factor * p.rho0;
-    c.dt_min = out.dt_min;
-    c.gate_vx = p.gate_vx;
-    c.gate_vz = p.gate_vz;
-    c.gate_t_start = p.gate_t_start;
-    c.gate_z_cap = p.gate_z_cap;
-    c.drive_u = p.drive_u;
-    c.drive_x0 = p.drive_x0;
-    c.drive_z0 = p.drive_z0;
-    c.drive_ex = p.drive_ex;
-    c.drive_ez = p.drive_ez;
-    c.drive_half_width = p.drive_half_width;
+    c.geometry.axis_m1 =
+        p.axis_pair == AxisPair::Rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dx * p.dz : 0.0;
+
+    c.gravity.gx = p.gx;
+    c.gravity.gz = p.gz;
     return c;
 }
 
@@ -211,7 +221,7 @@ StepReport Solver::step(bool fields) {
     info.dbc_counter = state_.dbc_counter;
     // A disturbed nozzle: the plug speed over this step (SimParams::drive_eps).
     if (params_.drive_eps != 0.0)
-        prm_.drive_u = params_.drive_u * (1.0 + params_.drive_eps * std::sin(params_.drive_omega * state_.time));
+        prm_.nozzle.u = params_.drive_u * (1.0 + params_.drive_eps * std::sin(params_.drive_omega * state_.time));
     const int status = sph_step(ws_, &prm_, &arr_, &info);
     if (status == SPH_ERR_DT_COLLAPSE) {
         fail(status, -1,

@@ -16,29 +16,28 @@ enum class DensityFilter : int { None = 0, Shepard = 1, MLS = 2 };
 enum class ViscosityModel : int { Artificial = 1, Laminar = 2 };
 enum class BoundaryType : int { Repulsive = 1, Dynamic = 2 };
 enum class Lattice : int { SimpleCubic = 1, BodyCentred = 2 };
-// The delta of the CSF force (paper eq 24, a_s = -(sigma/rho) kappa delta): the numbering is
-// the core's (sph_params_t::st_delta). ColourGradient is eq 24 as printed (delta = the colour
-// gradient n of eq 18); PressureConsistent replaces it by 2 sum_b V_b grad_a W_ab so that the
-// force balances the discrete pressure force at the Laplace pressure at a free surface
+// The delta of the CSF force (paper eq 24, a_s = -(sigma/rho) kappa delta): the numbering is the
+// core's (sph_params_t::surface_tension.delta). ColourGradient is eq 24 as printed (delta = the
+// colour gradient n of eq 18); PressureConsistent replaces it by 2 sum_b V_b grad_a W_ab so that
+// the force balances the discrete pressure force at the Laplace pressure at a free surface
 // (fortran_core/loops/surface_tension_loops.f90, cases/CASE_FORMAT.md).
 enum class SurfaceTensionDelta : int { PressureConsistent = 0, ColourGradient = 1 };
-// Planar (x, z) or axisymmetric (r, z): then x is the radius r >= 0, the symmetry axis is the
-// line x = 0 and a particle is a ring whose mass is its true 3D mass (core: sph_params_t::geometry,
+// Planar (x, z) or axisymmetric (r, z): then x is the radius r >= 0, the symmetry axis is the line
+// x = 0 and a particle is a ring whose mass is its true 3D mass (core: sph_params_t::geometry.kind,
 // fortran_core/physics/axisymmetric.f90, cases/axisymmetric/README.md).
 enum class Geometry : int { Planar = 0, Axisymmetric = 1 };
-// The axisymmetric pressure and continuity pair (core: sph_params_t::axis_pair,
+// The axisymmetric pressure and continuity pair (core: sph_params_t::geometry.axis_pair,
 // cases/axisymmetric/README.md): the smoothed-radius pair (the default) or the rings pair,
 // the 3D SPH density of the rings with the midpoint rule's end correction at the axis.
 enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
 // The curvature in the rings pair's CSF force of the rows below the surface (core:
-// sph_params_t::rings_curvature): their neighbours' weighted mean (the default; holds a
-// drop's pole) or each row's own (longer round jets; cases/round_jet/README.md).
+// sph_params_t::surface_tension.rings_curvature): their neighbours' weighted mean (the default;
+// holds a drop's pole) or each row's own (longer round jets; cases/round_jet/README.md).
 enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 // Whose unit normals enter the free-surface curvature's sums (core:
-// sph_params_t::curvature_normals; surface_tension.delta = "pressure_consistent"): every
-// particle that passes the normal filter (the default), or only those within h of the surface
-// (depth from the colour), whose normals follow the surface's shape
-// (physics/surface_tension.f90).
+// sph_params_t::surface_tension.curvature_normals; surface_tension.delta = "pressure_consistent"):
+// every particle that passes the normal filter (the default), or only those within h of the surface
+// (depth from the colour), whose normals follow the surface's shape (physics/surface_tension.f90).
 enum class CurvatureNormals : int { All = 0, SurfaceBand = 1 };
 
 // The case file's name of each value of an enum, written once: the modern reader accepts these

@@ -13,7 +13,8 @@ module sphjet_capi
                           CURV_NORMALS_ALL, CURV_NORMALS_BAND
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
-  use sorted_state, only: sorted_t, gather_sorted, R_AX, R_AZ
+  use sorted_state, only: sorted_t, R_AX, R_AZ
+  use list_rebuild, only: gather_sorted
   use traversal, only: pair_list_t, build_row_pairs, PAIRS_ALL
   use rates, only: compute_rates
   use predictor_corrector, only: pc_step, update_eos
@@ -89,24 +90,25 @@ contains
   !> Checks the options and values every routine relies on.
   logical function params_ok(prm)
     type(sph_params_t), intent(in) :: prm
-    params_ok = kernel_valid(prm%kernel) .and. prm%h > 0.0_rp .and. prm%rho0 > 0.0_rp &
-      .and. prm%b >= 0.0_rp .and. prm%c0 >= 0.0_rp .and. prm%gamma > 0.0_rp &
-      .and. any(prm%boundary == [BC_REPULSIVE, BC_DYNAMIC]) &
-      .and. any(prm%viscosity == [VISC_ARTIFICIAL, VISC_LAMINAR]) &
-      .and. prm%density_filter >= FILTER_NONE .and. prm%density_filter <= FILTER_MLS &
-      .and. prm%cfl > 0.0_rp .and. prm%sigma >= 0.0_rp &
-      .and. any(prm%st_delta == [ST_DELTA_PRESSURE, ST_DELTA_COLOUR]) &
-      .and. any(prm%geometry == [GEOM_PLANAR, GEOM_AXISYMMETRIC]) &
-      .and. any(prm%periodic_z == [0, 1]) &
-      .and. any(prm%axis_pair == [AXIS_PAIR_SMOOTHED_RADIUS, AXIS_PAIR_RINGS]) &
-      .and. any(prm%rings_curvature == [RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN]) &
-      .and. any(prm%curvature_normals == [CURV_NORMALS_ALL, CURV_NORMALS_BAND]) &
-      .and. prm%axis_m1 >= 0.0_rp
+    params_ok = kernel_valid(prm%numerics%kernel) .and. prm%numerics%h > 0.0_rp &
+      .and. prm%eos%rho0 > 0.0_rp &
+      .and. prm%eos%b >= 0.0_rp .and. prm%eos%c0 >= 0.0_rp .and. prm%eos%gamma > 0.0_rp &
+      .and. any(prm%boundary%model == [BC_REPULSIVE, BC_DYNAMIC]) &
+      .and. any(prm%viscosity%model == [VISC_ARTIFICIAL, VISC_LAMINAR]) &
+      .and. prm%numerics%density_filter >= FILTER_NONE .and. prm%numerics%density_filter <= FILTER_MLS &
+      .and. prm%time_step%cfl > 0.0_rp .and. prm%surface_tension%sigma >= 0.0_rp &
+      .and. any(prm%surface_tension%delta == [ST_DELTA_PRESSURE, ST_DELTA_COLOUR]) &
+      .and. any(prm%geometry%kind == [GEOM_PLANAR, GEOM_AXISYMMETRIC]) &
+      .and. any(prm%geometry%periodic_z == [0, 1]) &
+      .and. any(prm%geometry%axis_pair == [AXIS_PAIR_SMOOTHED_RADIUS, AXIS_PAIR_RINGS]) &
+      .and. any(prm%surface_tension%rings_curvature == [RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN]) &
+      .and. any(prm%surface_tension%curvature_normals == [CURV_NORMALS_ALL, CURV_NORMALS_BAND]) &
+      .and. prm%geometry%axis_m1 >= 0.0_rp
     ! a period must hold the images of both ends apart (two kernel supports)
-    if (prm%periodic_z /= 0) params_ok = params_ok .and. &
-      prm%dom_zmax - prm%dom_zmin > 4.0_rp * prm%h
-    if (prm%boundary == BC_REPULSIVE) params_ok = params_ok .and. prm%h_swl > 0.0_rp &
-      .and. prm%coef > 0.0_rp
+    if (prm%geometry%periodic_z /= 0) params_ok = params_ok .and. &
+      prm%domain%zmax - prm%domain%zmin > 4.0_rp * prm%numerics%h
+    if (prm%boundary%model == BC_REPULSIVE) params_ok = params_ok .and. prm%boundary%h_swl > 0.0_rp &
+      .and. prm%boundary%coef > 0.0_rp
   end function params_ok
 
   !> Sets pressure and sound speed from density (all particles) and, for repulsive walls,
@@ -120,7 +122,7 @@ contains
     integer :: i, ip_, in_
     status = SPH_ERR_ARGUMENT
     if (.not. params_ok(prm)) return
-    repulsive = prm%boundary == BC_REPULSIVE
+    repulsive = prm%boundary%model == BC_REPULSIVE
     call bind_state(arr, st, .false., repulsive, ok)
     if (.not. ok) return
     call update_eos(prm, st, 1, st%n)
@@ -131,7 +133,7 @@ contains
         if (ip_ < 1 .or. ip_ > st%nb .or. in_ < 1 .or. in_ > st%nb) return
         if (ip_ == i .and. in_ == i) return
         call wall_normal(st%x(ip_), st%z(ip_), st%x(i), st%z(i), st%x(in_), st%z(in_), &
-                         ip_ == i, in_ == i, prm%h, st%wall_nx(i), st%wall_nz(i), &
+                         ip_ == i, in_ == i, prm%numerics%h, st%wall_nx(i), st%wall_nz(i), &
                          st%wall_dback(i), st%wall_dfwd(i))
       end do
     end if
@@ -154,10 +156,10 @@ contains
     if (.not. c_associated(ws_handle)) return
     if (.not. params_ok(prm)) return
     if (.not. (info%dt > 0.0_rp)) return
-    call bind_state(arr, st, .true., prm%boundary == BC_REPULSIVE, ok)
+    call bind_state(arr, st, .true., prm%boundary%model == BC_REPULSIVE, ok)
     if (.not. ok) return
     call c_f_pointer(ws_handle, ws)
-    kern = kernel_setup(prm%kernel, prm%h)
+    kern = kernel_setup(prm%numerics%kernel, prm%numerics%h)
     info%n_removed = 0
     info%bad_particle = -1
     info%bad_cause = SPH_OK
@@ -165,7 +167,7 @@ contains
     call pc_step(prm, kern, st, ws%sorted, info, status)
     call omp_set_num_threads(nt)
     if (status /= SPH_OK) return
-    if (prm%variable_dt /= 0 .and. info%dt_next < prm%dt_min) then
+    if (prm%time_step%variable_dt /= 0 .and. info%dt_next < prm%time_step%dt_min) then
       status = SPH_ERR_DT_COLLAPSE
       info%bad_cause = status
     end if
@@ -190,7 +192,7 @@ contains
     if (.not. ok) return
     call c_f_pointer(ws_handle, ws)
     nt = share_threads(st%n)
-    call apply_density_filter(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted, ns)
+    call apply_density_filter(prm, kernel_setup(prm%numerics%kernel, prm%numerics%h), st, ws%sorted, ns)
     call omp_set_num_threads(nt)
     n_singular = ns
     status = SPH_OK
@@ -228,10 +230,10 @@ contains
     visc_max = 0.0_rp
     if (.not. c_associated(ws_handle)) return
     if (.not. params_ok(prm)) return
-    call bind_state(arr, st, .true., prm%boundary == BC_REPULSIVE, ok)
+    call bind_state(arr, st, .true., prm%boundary%model == BC_REPULSIVE, ok)
     if (.not. ok) return
     call c_f_pointer(ws_handle, ws)
-    call compute_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted, visc_max)
+    call compute_rates(prm, kernel_setup(prm%numerics%kernel, prm%numerics%h), st, ws%sorted, visc_max)
     status = SPH_OK
   end function sph_compute_rates
 
@@ -258,12 +260,12 @@ contains
     if (st%n > 0 .and. .not. (associated(st%colour) .and. associated(st%st_nx) .and. &
                               associated(st%st_nz) .and. associated(st%kappa))) return
     ! the rings pair's CSF force needs its rates (axisymmetric_loops.f90): fields only
-    if (prm%axis_pair == AXIS_PAIR_RINGS .and. c_associated(arr%ax)) return
+    if (prm%geometry%axis_pair == AXIS_PAIR_RINGS .and. c_associated(arr%ax)) return
     call c_f_pointer(ws_handle, ws)
-    call gather_sorted(st, prm%h, ws%sorted, prm)
-    if (prm%axis_pair == AXIS_PAIR_RINGS .and. allocated(ws%sorted%axi_dx)) &
+    call gather_sorted(st, prm%numerics%h, ws%sorted, prm)
+    if (prm%geometry%axis_pair == AXIS_PAIR_RINGS .and. allocated(ws%sorted%axi_dx)) &
       deallocate(ws%sorted%axi_dx, ws%sorted%axi_dz)   ! not this state's
-    call surface_tension_rates(prm, kernel_setup(prm%kernel, prm%h), st, ws%sorted)
+    call surface_tension_rates(prm, kernel_setup(prm%numerics%kernel, prm%numerics%h), st, ws%sorted)
     if (c_associated(arr%ax) .and. c_associated(arr%az)) then
       call c_f_pointer(arr%ax, ax, [st%n])
       call c_f_pointer(arr%az, az, [st%n])
@@ -320,7 +322,7 @@ contains
     integer :: row, k, ia, ib
     status = SPH_ERR_ARGUMENT
     npairs = 0
-    if (.not. (prm%h > 0.0_rp)) return
+    if (.not. (prm%numerics%h > 0.0_rp)) return
     call bind_state(arr, st, .false., .false., ok)
     if (.not. ok) return
     ! a list of exactly the pairs closer than 2h, boundary-boundary pairs included
@@ -328,10 +330,10 @@ contains
     st%list_z => null()
     s%skin_per_h = 0.0_rp
     s%all_pairs = .true.
-    call gather_sorted(st, prm%h, s)
+    call gather_sorted(st, prm%numerics%h, s)
     status = SPH_OK
     do row = 0, s%grid%ncz - 1
-      call build_row_pairs(s, row, 4.0_rp * prm%h * prm%h, PAIRS_ALL, pl)
+      call build_row_pairs(s, row, 4.0_rp * prm%numerics%h * prm%numerics%h, PAIRS_ALL, pl)
       do k = 1, pl%n
         npairs = npairs + 1
         if (npairs > capacity) then
@@ -354,9 +356,9 @@ contains
     real(c_double), intent(out) :: p(n), c(n)
     integer(c_int) :: status
     status = SPH_ERR_ARGUMENT
-    if (n < 0 .or. .not. (prm%rho0 > 0.0_rp)) return
-    p = tait_pressure(rho, prm%rho0, prm%b, prm%gamma)
-    c = tait_sound_speed(rho, prm%rho0, prm%c0)
+    if (n < 0 .or. .not. (prm%eos%rho0 > 0.0_rp)) return
+    p = tait_pressure(rho, prm%eos%rho0, prm%eos%b, prm%eos%gamma)
+    c = tait_sound_speed(rho, prm%eos%rho0, prm%eos%c0)
     status = SPH_OK
   end function sph_eos
 

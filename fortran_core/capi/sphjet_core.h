@@ -21,53 +21,100 @@ enum {
     SPH_ERR_CAPACITY = 6       /* output buffer too small */
 };
 
-typedef struct sph_params_t {
+/* The scalar parameters of a run, one struct per concern (sphjet_types.f90 mirrors each).
+ * A new parameter goes into the struct of its concern, in the same place on both sides:
+ * kernel, smoothing and SPH corrections in numerics; the step control in time_step; the
+ * equation of state in eos; the domain box and the density band in domain; the fluid's
+ * viscosity in viscosity; the wall model, its viscous term and the gate in boundary; CSF in
+ * surface_tension; the driven nozzle in nozzle; planar/axisymmetric and periodicity in
+ * geometry; body forces in gravity. A concern with none of these gets its own struct. */
+typedef struct sph_numerics_t {
     int kernel;               /* 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland */
-    int viscosity;            /* 1 artificial, 2 laminar */
-    int boundary;             /* 1 repulsive (Monaghan-Kos), 2 dynamic */
     int density_filter;       /* 0 none, 1 Shepard, 2 MLS */
     int tensile;              /* 1: tensile-instability correction on */
-    int dbc_period;           /* steps between dynamic-boundary density updates */
-    int variable_dt;          /* 1: dt from the CFL condition each step */
-    int remove_out_of_domain; /* 1: remove leavers and count them; 0: fail */
-    int st_delta;             /* CSF delta in eq 24: 0 pressure-consistent (free surface), 1 colour gradient (paper) */
-    int geometry;             /* 0 planar (x, z); 1 axisymmetric (x = r >= 0, symmetry axis x = 0) */
-    int periodic_z;           /* 1: periodic in z with period dom_zmax - dom_zmin */
     double h;                 /* smoothing length [m] */
+    double xsph_eps;          /* XSPH epsilon */
+} sph_numerics_t;
+
+typedef struct sph_time_step_t {
+    int variable_dt;          /* 1: dt from the CFL condition each step */
+    double cfl;               /* Courant number */
+    double dt_min;            /* a step below this is a collapse [s] */
+} sph_time_step_t;
+
+typedef struct sph_eos_t {    /* Tait equation of state */
     double rho0;              /* reference density [kg/m^3] */
     double b;                 /* Tait B [Pa] */
     double gamma;             /* Tait exponent */
     double c0;                /* sound speed at rho0 [m/s] */
-    double coef;              /* speed-of-sound coefficient (repulsive walls) */
-    double h_swl;             /* still-water depth [m] (repulsive walls) */
-    double visc_value;        /* alpha (artificial) or nu [m^2/s] (laminar) */
-    double wall_viscosity;    /* nu of the repulsive-wall viscous term [m^2/s] */
-    double xsph_eps;          /* XSPH epsilon */
-    double cfl;               /* Courant number */
-    double gx;                /* gravity [m/s^2] */
-    double gz;
-    double sigma;             /* surface tension [N/m]; 0 = off */
-    double dom_xmin;          /* fluid beyond these bounds leaves the domain [m] */
-    double dom_xmax;
-    double dom_zmin;
-    double dom_zmax;
+} sph_eos_t;
+
+typedef struct sph_domain_t {
+    int remove_out;           /* 1: remove leavers and count them; 0: fail */
+    double xmin;              /* fluid beyond these bounds leaves the domain [m] */
+    double xmax;
+    double zmin;
+    double zmax;
     double rho_min;           /* sane density band [kg/m^3]; rho_max <= 0 disables */
     double rho_max;
-    double dt_min;            /* a step below this is a collapse [s] */
+} sph_domain_t;
+
+typedef struct sph_viscosity_t {
+    int model;                /* 1 artificial, 2 laminar */
+    double value;             /* alpha (artificial) or nu [m^2/s] (laminar) */
+} sph_viscosity_t;
+
+typedef struct sph_boundary_t {
+    int model;                /* 1 repulsive (Monaghan-Kos), 2 dynamic */
+    int dbc_period;           /* steps between dynamic-boundary density updates */
+    double coef;              /* speed-of-sound coefficient (repulsive walls) */
+    double h_swl;             /* still-water depth [m] (repulsive walls) */
+    double viscosity;         /* nu of the repulsive-wall viscous term [m^2/s] */
     double gate_vx;           /* moving boundary (gate) velocity from gate_t_start [m/s] */
     double gate_vz;
     double gate_t_start;      /* time the gate starts moving [s] */
     double gate_z_cap;        /* a gate particle rises no higher [m] */
-    double drive_u;           /* driven nozzle: plug speed along the axis [m/s]; 0 = no nozzle */
-    double drive_x0;          /* orifice centre [m] */
-    double drive_z0;
-    double drive_ex;          /* unit jet axis (flow direction) */
-    double drive_ez;
-    double drive_half_width;  /* plug half-width across the axis [m] */
-    double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
-    int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
+} sph_boundary_t;
+
+typedef struct sph_surface_tension_t {
+    int delta;                /* CSF delta in eq 24: 0 pressure-consistent (free surface), 1 colour gradient (paper) */
     int rings_curvature;      /* rings pair's surface rows: 0 neighbours' mean, 1 own */
     int curvature_normals;    /* free-surface curvature's normals: 0 all, 1 within h of the surface */
+    double sigma;             /* surface tension [N/m]; 0 = off */
+} sph_surface_tension_t;
+
+typedef struct sph_nozzle_t {
+    double u;                 /* driven nozzle: plug speed along the axis [m/s]; 0 = no nozzle */
+    double x0;                /* orifice centre [m] */
+    double z0;
+    double ex;                /* unit jet axis (flow direction) */
+    double ez;
+    double half_width;        /* plug half-width across the axis [m] */
+} sph_nozzle_t;
+
+typedef struct sph_geometry_t {
+    int kind;                 /* 0 planar (x, z); 1 axisymmetric (x = r >= 0, symmetry axis x = 0) */
+    int periodic_z;           /* 1: periodic in z with period domain.zmax - domain.zmin */
+    int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
+    double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
+} sph_geometry_t;
+
+typedef struct sph_gravity_t {
+    double gx;                /* gravity [m/s^2] */
+    double gz;
+} sph_gravity_t;
+
+typedef struct sph_params_t {
+    sph_numerics_t numerics;
+    sph_time_step_t time_step;
+    sph_eos_t eos;
+    sph_domain_t domain;
+    sph_viscosity_t viscosity;
+    sph_boundary_t boundary;
+    sph_surface_tension_t surface_tension;
+    sph_nozzle_t nozzle;
+    sph_geometry_t geometry;
+    sph_gravity_t gravity;
 } sph_params_t;
 
 typedef struct sph_arrays_t {

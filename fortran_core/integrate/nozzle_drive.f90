@@ -19,10 +19,10 @@ contains
     type(sph_params_t), intent(in) :: prm
     real(rp), intent(in) :: x, z
     real(rp) :: rx, rz
-    rx = x - prm%drive_x0
-    rz = z - prm%drive_z0
-    in_driven_nozzle = rx * prm%drive_ex + rz * prm%drive_ez < 0.0_rp .and. &
-                       abs(rx * prm%drive_ez - rz * prm%drive_ex) <= prm%drive_half_width
+    rx = x - prm%nozzle%x0
+    rz = z - prm%nozzle%z0
+    in_driven_nozzle = rx * prm%nozzle%ex + rz * prm%nozzle%ez < 0.0_rp .and. &
+                       abs(rx * prm%nozzle%ez - rz * prm%nozzle%ex) <= prm%nozzle%half_width
   end function in_driven_nozzle
 
 end module nozzle_drive

@@ -15,7 +15,8 @@ module predictor_corrector
                           SPH_OK, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t, team_work_t, in_team, one_thread, set_open_team, thread_lists
+  use sorted_state, only: sorted_t, thread_lists
+  use omp_team, only: team_work_t, in_team, one_thread, set_open_team
   use rates, only: compute_rates
   use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
@@ -58,8 +59,8 @@ contains
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
-    st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-    st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+    st%p(i) = tait_pressure(st%rho(i), prm%eos%rho0, prm%eos%b, prm%eos%gamma)
+    st%c(i) = tait_sound_speed(st%rho(i), prm%eos%rho0, prm%eos%c0)
   end subroutine eos_one
 
   !> Whether particle i is fluid still in the domain (the particles the integrator advances).
@@ -91,20 +92,21 @@ contains
     work%prm = prm
     work%st => st
     work%dt2 = dt2
-    dbc = prm%boundary == BC_DYNAMIC
+    dbc = prm%boundary%model == BC_DYNAMIC
     vmax_p = 0.0_rp
     vmax_c = 0.0_rp
     dt_p = dt
     dt_c = dt
     ! The gate's speed in the next step (it moves from t_start on), for the step bound.
     vgate = 0.0_rp
-    if (st%nb > 0 .and. info%time + dt >= prm%gate_t_start) vgate = sqrt(prm%gate_vx**2 + prm%gate_vz**2)
+    if (st%nb > 0 .and. info%time + dt >= prm%boundary%gate_t_start) &
+      vgate = sqrt(prm%boundary%gate_vx**2 + prm%boundary%gate_vz**2)
 
     ! The DBC density update of this step (boundary particles, every dbc_period steps)
     dbc_now = .false.
     if (dbc) then
       info%dbc_counter = info%dbc_counter + 1
-      if (mod(info%dbc_counter, int(max(prm%dbc_period, 1), i8)) == 0) then
+      if (mod(info%dbc_counter, int(max(prm%boundary%dbc_period, 1), i8)) == 0) then
         dbc_now = .true.
         info%dbc_counter = 0
       end if
@@ -112,11 +114,11 @@ contains
 
     ! Planar runs without surface tension on several threads: both stages in one parallel
     ! region, whose threads run the particle loops of the gather, the sweeps, the scatter
-    ! and the integrator as its orphaned worksharing loops (sorted_state.f90, in_team), so
+    ! and the integrator as its orphaned worksharing loops (omp_team.f90, in_team), so
     ! that a step has the barriers those loops need and no more (libgomp's passive waits
     ! make each barrier a futex sleep and wake-up).
-    if (.not. one_thread() .and. prm%geometry /= GEOM_AXISYMMETRIC .and. prm%periodic_z == 0 &
-        .and. .not. prm%sigma > 0.0_rp) then
+    if (.not. one_thread() .and. prm%geometry%kind /= GEOM_AXISYMMETRIC .and. prm%geometry%periodic_z == 0 &
+        .and. .not. prm%surface_tension%sigma > 0.0_rp) then
       call thread_lists(s)
       !$omp parallel
       call set_open_team(.true.)
@@ -130,7 +132,7 @@ contains
     ! the next step from each stage's rates; the corrector's viscous bound takes the max of
     ! both stages' pairs
     vmax = max(vmax_p, vmax_c)
-    if (prm%variable_dt /= 0) then
+    if (prm%time_step%variable_dt /= 0) then
       call cfl_time_step(prm, work%scan(PREDICT), vmax_p, vgate, dtf, dtcv, dt_p)
       call cfl_time_step(prm, work%scan(CORRECT), vmax, vgate, dtf, dtcv, dt_c)
       info%dt_f = dtf
@@ -142,7 +144,7 @@ contains
     call fold_into_domain(prm, st)   ! axis reflection, periodic z (nothing in planar runs)
 
     info%visc_dt = vmax
-    info%dt_next = merge(min(dt_p, dt_c), dt, prm%variable_dt /= 0)
+    info%dt_next = merge(min(dt_p, dt_c), dt, prm%time_step%variable_dt /= 0)
     call check_domain(prm, st, info%n_removed, info%bad_particle, status)
     ! A removal changes the active set: the next gather lists the pairs again, from the
     ! positions then (list_x = NaN, which a checkpoint keeps, so a resumed run does the same).
@@ -182,7 +184,7 @@ contains
     if (dbc_now) then
       !$omp single
       do i = 1, st%nb
-        st%rho(i) = max(st%rhoo(i) + work%dt2 * st%ar(i), prm%rho0)
+        st%rho(i) = max(st%rhoo(i) + work%dt2 * st%ar(i), prm%eos%rho0)
       end do
       call update_eos(prm, st, 1, st%nb)
       !$omp end single
@@ -197,8 +199,8 @@ contains
     if (dbc_now) then
       !$omp single
       do i = 1, st%nb
-        st%rho(i) = max(st%rhoo(i) + work%dt2 * st%ar(i), prm%rho0)
-        st%rho(i) = max(2.0_rp * st%rho(i) - st%rhoo(i), prm%rho0)
+        st%rho(i) = max(st%rhoo(i) + work%dt2 * st%ar(i), prm%eos%rho0)
+        st%rho(i) = max(2.0_rp * st%rho(i) - st%rhoo(i), prm%eos%rho0)
       end do
       call update_eos(prm, st, 1, st%nb)
       !$omp end single
@@ -238,12 +240,13 @@ contains
         if (moving_fluid(st, j)) call cfl_add(mine, st, j)
       end do
       if (j1 >= j0) then
-        call half_steps(j1 - j0 + 1, st%active(j0:j1), st%kind(j0:j1), dt2, prm%gx, prm%gz, &
+        call half_steps(j1 - j0 + 1, st%active(j0:j1), st%kind(j0:j1), dt2, &
+                        prm%gravity%gx, prm%gravity%gz, &
                         st%rhoo(j0:j1), st%ar(j0:j1), st%xo(j0:j1), st%zo(j0:j1), &
                         st%uo(j0:j1), st%wo(j0:j1), st%xsph_u(j0:j1), st%xsph_w(j0:j1), &
                         st%ax(j0:j1), st%az(j0:j1), st%rho(j0:j1), st%x(j0:j1), &
                         st%z(j0:j1), st%u(j0:j1), st%w(j0:j1))
-        if (prm%drive_u > 0.0_rp) then
+        if (prm%nozzle%u > 0.0_rp) then
           do j = j0, j1
             if (moving_fluid(st, j)) then
               if (in_driven_nozzle(prm, st%xo(j), st%zo(j))) call plug_step(prm, st, j, dt2)
@@ -251,7 +254,7 @@ contains
           end do
         end if
         call stage_ends(which == CORRECT, j1 - j0 + 1, st%active(j0:j1), st%kind(j0:j1), &
-                        prm%rho0, prm%b, prm%gamma, prm%c0, st%rhoo(j0:j1), st%xo(j0:j1), &
+                        prm%eos%rho0, prm%eos%b, prm%eos%gamma, prm%eos%c0, st%rhoo(j0:j1), st%xo(j0:j1), &
                         st%zo(j0:j1), st%uo(j0:j1), st%wo(j0:j1), st%rho(j0:j1), &
                         st%x(j0:j1), st%z(j0:j1), st%u(j0:j1), st%w(j0:j1), st%p(j0:j1), &
                         st%c(j0:j1))
@@ -345,26 +348,26 @@ contains
     integer :: i
     logical :: rigid
     real(rp) :: dzm, zlow
-    if (time < prm%gate_t_start) return
-    rigid = prm%boundary == BC_REPULSIVE
-    dzm = prm%gate_vz * dt
+    if (time < prm%boundary%gate_t_start) return
+    rigid = prm%boundary%model == BC_REPULSIVE
+    dzm = prm%boundary%gate_vz * dt
     if (rigid .and. dzm > 0.0_rp) then
       zlow = huge(1.0_rp)
       do i = 1, st%nb
         if (st%kind(i) == KIND_MOVING_BOUNDARY) zlow = min(zlow, st%z(i))
       end do
-      dzm = min(dzm, max(prm%gate_z_cap - zlow, 0.0_rp))
+      dzm = min(dzm, max(prm%boundary%gate_z_cap - zlow, 0.0_rp))
     end if
     do i = 1, st%nb
       if (st%kind(i) /= KIND_MOVING_BOUNDARY) cycle
-      st%x(i) = st%x(i) + prm%gate_vx * dt
-      st%u(i) = prm%gate_vx
+      st%x(i) = st%x(i) + prm%boundary%gate_vx * dt
+      st%u(i) = prm%boundary%gate_vx
       if (rigid) then
         st%z(i) = st%z(i) + dzm
         st%w(i) = dzm / dt
       else
-        st%z(i) = min(st%z(i) + dzm, prm%gate_z_cap)
-        st%w(i) = prm%gate_vz
+        st%z(i) = min(st%z(i) + dzm, prm%boundary%gate_z_cap)
+        st%w(i) = prm%boundary%gate_vz
       end if
     end do
   end subroutine move_gate
@@ -378,8 +381,8 @@ contains
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
     real(rp), intent(in) :: dt2
-    st%u(i) = prm%drive_u * prm%drive_ex
-    st%w(i) = prm%drive_u * prm%drive_ez
+    st%u(i) = prm%nozzle%u * prm%nozzle%ex
+    st%w(i) = prm%nozzle%u * prm%nozzle%ez
     st%x(i) = st%xo(i) + dt2 * st%u(i)
     st%z(i) = st%zo(i) + dt2 * st%w(i)
     ! The corrector's u = 2 u^{n+1/2} - u^n must give the plug's velocity also for a

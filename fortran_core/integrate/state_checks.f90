@@ -11,8 +11,8 @@ module state_checks
 
 contains
 
-  !> Fluid particles beyond [dom_xmin, dom_xmax] x [dom_zmin, dom_zmax] leave the domain.
-  !> With remove_out_of_domain they become inactive (velocity zeroed) and are counted;
+  !> Fluid particles beyond [domain%xmin, xmax] x [domain%zmin, zmax] leave the domain.
+  !> With domain%remove_out they become inactive (velocity zeroed) and are counted;
   !> otherwise the first one is reported (status SPH_ERR_OUT_OF_DOMAIN, bad = its index).
   subroutine check_domain(prm, st, n_removed, bad, status)
     type(sph_params_t), intent(in) :: prm
@@ -26,9 +26,9 @@ contains
     status = SPH_OK
     do i = st%nb + 1, st%n
       if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
-      if (st%x(i) > prm%dom_xmax .or. st%x(i) < prm%dom_xmin .or. &
-          st%z(i) < prm%dom_zmin .or. st%z(i) > prm%dom_zmax) then
-        if (prm%remove_out_of_domain /= 0) then
+      if (st%x(i) > prm%domain%xmax .or. st%x(i) < prm%domain%xmin .or. &
+          st%z(i) < prm%domain%zmin .or. st%z(i) > prm%domain%zmax) then
+        if (prm%domain%remove_out /= 0) then
           st%active(i) = 0
           st%u(i) = 0.0_rp
           st%w(i) = 0.0_rp
@@ -44,17 +44,17 @@ contains
 
   !> After a step, before check_domain: in axisymmetric mode a fluid particle that crossed the
   !> axis is reflected (x -> -x, u -> -u: it is now where its mirror image was); with a periodic
-  !> z a fluid particle beyond dom_zmax (below dom_zmin) re-enters at the other end, z -+ lz.
+  !> z a fluid particle beyond domain%zmax (below zmin) re-enters at the other end, z -+ lz.
   subroutine fold_into_domain(prm, st)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer :: i
     real(rp) :: lz
     logical :: axi, per
-    axi = prm%geometry == GEOM_AXISYMMETRIC
-    per = prm%periodic_z /= 0
+    axi = prm%geometry%kind == GEOM_AXISYMMETRIC
+    per = prm%geometry%periodic_z /= 0
     if (.not. (axi .or. per)) return
-    lz = prm%dom_zmax - prm%dom_zmin
+    lz = prm%domain%zmax - prm%domain%zmin
     !$omp parallel do schedule(static)
     do i = st%nb + 1, st%n
       if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
@@ -63,9 +63,9 @@ contains
         st%u(i) = -st%u(i)
       end if
       if (per) then
-        if (st%z(i) >= prm%dom_zmax) then
+        if (st%z(i) >= prm%domain%zmax) then
           st%z(i) = st%z(i) - lz
-        else if (st%z(i) < prm%dom_zmin) then
+        else if (st%z(i) < prm%domain%zmin) then
           st%z(i) = st%z(i) + lz
         end if
       end if
@@ -91,7 +91,8 @@ contains
         status = SPH_ERR_NONFINITE
         return
       end if
-      if (prm%rho_max > 0.0_rp .and. (st%rho(i) < prm%rho_min .or. st%rho(i) > prm%rho_max)) then
+      if (prm%domain%rho_max > 0.0_rp .and. &
+          (st%rho(i) < prm%domain%rho_min .or. st%rho(i) > prm%domain%rho_max)) then
         bad = i - 1
         status = SPH_ERR_DENSITY
         return

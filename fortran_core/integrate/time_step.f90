@@ -70,25 +70,26 @@ contains
     real(rp) :: fmag
 
     if (scan%i > 0) then
-      fmag = sqrt((scan%ax + prm%gx)**2 + (scan%az + prm%gz)**2)
+      fmag = sqrt((scan%ax + prm%gravity%gx)**2 + (scan%az + prm%gravity%gz)**2)
     else
-      fmag = sqrt(prm%gx**2 + prm%gz**2)
+      fmag = sqrt(prm%gravity%gx**2 + prm%gravity%gz**2)
     end if
     if (fmag > 0.0_rp) then
-      dt_f = sqrt(prm%h / fmag)
+      dt_f = sqrt(prm%numerics%h / fmag)
     else
       dt_f = huge(1.0_rp)
     end if
     if (scan%cmax > 0.0_rp) then
-      dt_cv = prm%h / (scan%cmax + prm%h * vmax)
+      dt_cv = prm%numerics%h / (scan%cmax + prm%numerics%h * vmax)
     else
       dt_cv = dt_f
     end if
-    dt_new = prm%cfl * min(dt_f, dt_cv)
-    if (prm%sigma > 0.0_rp) dt_new = min(dt_new, csf_dt(prm%rho0, prm%h, prm%sigma))
+    dt_new = prm%time_step%cfl * min(dt_f, dt_cv)
+    if (prm%surface_tension%sigma > 0.0_rp) &
+      dt_new = min(dt_new, csf_dt(prm%eos%rho0, prm%numerics%h, prm%surface_tension%sigma))
     ! A moving gate crosses at most CFL h per step (legacy has no such bound: a gate faster
     ! than about h / dt then jumps over fluid particles and the run blows up).
-    if (vgate > 0.0_rp) dt_new = min(dt_new, prm%cfl * prm%h / vgate)
+    if (vgate > 0.0_rp) dt_new = min(dt_new, prm%time_step%cfl * prm%numerics%h / vgate)
   end subroutine cfl_time_step
 
 end module time_step

@@ -10,7 +10,7 @@
 !>                du/dr|_a = sum_b A_b (u_b - u_a) dW_ab/dx_a)
 !> Artificial viscosity gets no hoop term: it is numerical damping of the meridian plane,
 !> not a model of a physical viscosity. Image slots (order > n_state) are left alone.
-!> With domain.axis_pair = "rings" (prm%axis_pair = AXIS_PAIR_RINGS) the continuity and the
+!> With domain.axis_pair = "rings" (prm%geometry%axis_pair = AXIS_PAIR_RINGS) the continuity and the
 !> pressure are the rings pair's instead (ring_rates; physics/axisymmetric.f90), and the
 !> pressure pair's truncation vector, which the CSF force needs, is left in s%axi_dx, s%axi_dz.
 module axisymmetric_loops
@@ -85,15 +85,15 @@ contains
     logical :: laminar
 
     n = s%n
-    laminar = prm%viscosity == VISC_LAMINAR .and. prm%visc_value > 0.0_rp
-    if (prm%axis_pair == AXIS_PAIR_RINGS) then
+    laminar = prm%viscosity%model == VISC_LAMINAR .and. prm%viscosity%value > 0.0_rp
+    if (prm%geometry%axis_pair == AXIS_PAIR_RINGS) then
       call ring_rates(prm, kern, s, n_state, laminar, kept)
       return
     end if
     allocate(gi(n), hoop(n))
     call axis_weights_of(kern, s%x(1:n), gi, hoop)
     call body%start(s, laminar)
-    body%mu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h)
+    body%mu = mass_per_radian(s%m(1:n), s%x(1:n), prm%numerics%h)
     body%pg = body%pg * gi
     call body%sweep(kern, kept)
     !$omp parallel do schedule(static)
@@ -111,9 +111,9 @@ contains
   !> side of each ring), periodic images are not. The lattice's error at the axis is the
   !> midpoint rule's, (dx^2/24) F'(0) per row of rings (Euler-Maclaurin, F = 2 pi r f): to that
   !> order the first column's rings (r = dx/2, ring mass pi rho0 dx^2 dz, the next column's 3
-  !> times that: told by a mass below prm%axis_m1 = 2 pi rho0 dx^2 dz) count with 11/12 of
+  !> times that: told by a mass below prm%geometry%axis_m1 = 2 pi rho0 dx^2 dz) count with 11/12 of
   !> their mass in every sum of the pair (so that it still conserves its energy, with that
-  !> mass as the rings' inertia in it). prm%axis_m1 = 0 leaves the masses alone.
+  !> mass as the rings' inertia in it). prm%geometry%axis_m1 = 0 leaves the masses alone.
   subroutine ring_rates(prm, kern, s, n_state, laminar, kept)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
@@ -135,14 +135,14 @@ contains
     end if
     !$omp end critical (ring_tables_cache)
     call body%start(s, laminar)
-    body%m = 2.0_rp * pi * mass_per_radian(s%m(1:n), s%x(1:n), prm%h)
+    body%m = 2.0_rp * pi * mass_per_radian(s%m(1:n), s%x(1:n), prm%numerics%h)
     ! the midpoint rule's end correction at the axis (above)
-    where (body%m < prm%axis_m1) body%m = body%m * (11.0_rp / 12.0_rp)
+    where (body%m < prm%geometry%axis_m1) body%m = body%m * (11.0_rp / 12.0_rp)
     body%vr = body%m / s%rho(1:n)
     body%real_ = sign(1.0_rp, s%x(1:n)) > 0.0_rp   ! not an axis image
     allocate(body%ddx(n), body%ddz(n), source=0.0_rp)
     body%kind = kern%kind
-    body%h = prm%h
+    body%h = prm%numerics%h
     call body%sweep(kern, kept)
     if (allocated(s%axi_dx)) then
       if (size(s%axi_dx) < n) deallocate(s%axi_dx, s%axi_dz)
@@ -154,7 +154,7 @@ contains
       s%axi_dz(k) = 0.0_rp
       if (s%grid%order(k) > n_state) cycle
       ! the ring's own far side: dWr(0, r^2)/dr = 2 r Fp
-      call ring_kernel_derivs(0.0_rp, s%x(k)**2, prm%h, ring_gs(:, :, kern%kind), &
+      call ring_kernel_derivs(0.0_rp, s%x(k)**2, prm%numerics%h, ring_gs(:, :, kern%kind), &
                               ring_gp(:, :, kern%kind), fs, fp)
       self = 2.0_rp * s%x(k) * fp
       s%rate(R_AR, k) = body%cont(k) + body%m(k) * s%u(k) * self
@@ -337,7 +337,7 @@ contains
       s%rate(R_AX, k) = s%rate(R_AX, k) + self%pax(k) + fx
       s%rate(R_AZ, k) = s%rate(R_AZ, k) + self%paz(k)
       if (self%laminar) then
-        call viscous_hoop(prm%visc_value, s%u(k), self%dudr(k), self%dwdr(k), s%x(k), prm%h, &
+        call viscous_hoop(prm%viscosity%value, s%u(k), self%dudr(k), self%dwdr(k), s%x(k), prm%numerics%h, &
                           hx, hz)
         s%rate(R_AX, k) = s%rate(R_AX, k) + hx
         s%rate(R_AZ, k) = s%rate(R_AZ, k) + hz

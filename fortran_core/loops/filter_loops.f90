@@ -6,7 +6,8 @@ module filter_loops
   use sphjet_kinds, only: rp, ip, KIND_FLUID, FILTER_SHEPARD, FILTER_MLS
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, gather_sorted
+  use sorted_state, only: sorted_t
+  use list_rebuild, only: gather_sorted
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID, SWEEP_FRESH, &
                        SWEEP_KEEP, SWEEP_REUSE
   use density_filter, only: mls_beta
@@ -41,9 +42,9 @@ contains
     logical :: mls, sing
 
     n_singular = 0
-    if (prm%density_filter /= FILTER_SHEPARD .and. prm%density_filter /= FILTER_MLS) return
-    mls = prm%density_filter == FILTER_MLS
-    call gather_sorted(st, prm%h, s, prm)
+    if (all(prm%numerics%density_filter /= [FILTER_SHEPARD, FILTER_MLS])) return
+    mls = prm%numerics%density_filter == FILTER_MLS
+    call gather_sorted(st, prm%numerics%h, s, prm)
     n = s%n
     w0 = kernel_w0(kern)
     allocate(body%v(n), body%rnew(n), body%beta(3, n))
@@ -81,14 +82,14 @@ contains
     do k = 1, n
       if (.not. s%fluid(k)) cycle
       i = s%grid%order(k)
-      if (i > st%n) cycle   ! an image slot (sorted_state.f90)
+      if (i > st%n) cycle   ! an image slot (particle_images.f90)
       if (mls) then
         st%rho(i) = rnew(k) + beta(1, k) * w0 * s%m(k)
       else
         st%rho(i) = (acc(2, k) + w0 * s%m(k)) / (acc(1, k) + w0 * v(k))
       end if
-      st%p(i) = tait_pressure(st%rho(i), prm%rho0, prm%b, prm%gamma)
-      st%c(i) = tait_sound_speed(st%rho(i), prm%rho0, prm%c0)
+      st%p(i) = tait_pressure(st%rho(i), prm%eos%rho0, prm%eos%b, prm%eos%gamma)
+      st%c(i) = tait_sound_speed(st%rho(i), prm%eos%rho0, prm%eos%c0)
     end do
   end subroutine apply_density_filter
 

@@ -14,8 +14,8 @@ module rates
                           VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
-  use sorted_state, only: sorted_t, gather_sorted, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, &
-                          R_XU, R_XW
+  use sorted_state, only: sorted_t, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, R_XU, R_XW
+  use list_rebuild, only: gather_sorted
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_FRESH
   use viscosity, only: artificial_pi, laminar_factor
@@ -75,35 +75,35 @@ contains
     real(rp) :: wdp, fdummy
     logical :: st_on
 
-    body%h = prm%h
-    body%eta2 = 0.01_rp * prm%h * prm%h
-    body%alpha = prm%visc_value
-    body%repulsive = prm%boundary == BC_REPULSIVE
-    body%laminar = prm%viscosity == VISC_LAMINAR
-    body%artificial = prm%viscosity == VISC_ARTIFICIAL
-    body%tensile = prm%tensile /= 0
-    body%alpha_art = merge(prm%visc_value, 0.0_rp, body%artificial)
-    body%nu_lam = merge(prm%visc_value, 0.0_rp, body%laminar)
-    body%beta = prm%coef / 10.0_rp
-    body%c0 = prm%c0
-    body%h_swl = prm%h_swl
-    body%gz = prm%gz
-    body%wall_viscosity = prm%wall_viscosity
+    body%h = prm%numerics%h
+    body%eta2 = 0.01_rp * prm%numerics%h * prm%numerics%h
+    body%alpha = prm%viscosity%value
+    body%repulsive = prm%boundary%model == BC_REPULSIVE
+    body%laminar = prm%viscosity%model == VISC_LAMINAR
+    body%artificial = prm%viscosity%model == VISC_ARTIFICIAL
+    body%tensile = prm%numerics%tensile /= 0
+    body%alpha_art = merge(prm%viscosity%value, 0.0_rp, body%artificial)
+    body%nu_lam = merge(prm%viscosity%value, 0.0_rp, body%laminar)
+    body%beta = prm%boundary%coef / 10.0_rp
+    body%c0 = prm%eos%c0
+    body%h_swl = prm%boundary%h_swl
+    body%gz = prm%gravity%gz
+    body%wall_viscosity = prm%boundary%viscosity
 
-    call gather_sorted(st, prm%h, s, prm)
+    call gather_sorted(st, prm%numerics%h, s, prm)
     n = s%n
     body%s => s
-    body%axi_pressure = prm%geometry == GEOM_AXISYMMETRIC
+    body%axi_pressure = prm%geometry%kind == GEOM_AXISYMMETRIC
     if (body%axi_pressure) then
       allocate(body%zero(n))
       body%zero = 0.0_rp
     end if
 
     ! tensile R and the wall geometry in sorted order (an axis image's normal is mirrored);
-    ! in an open team (sorted_state.f90) by one of its threads
+    ! in an open team (omp_team.f90) by one of its threads
     body%inv_wdp = 0.0_rp
     if (body%tensile) then
-      call kernel_eval(kern, tensile_q(kern%kind) * prm%h, wdp, fdummy)
+      call kernel_eval(kern, tensile_q(kern%kind) * prm%numerics%h, wdp, fdummy)
       body%inv_wdp = 1.0_rp / wdp
     end if
     if (body%tensile .or. body%repulsive) then
@@ -125,7 +125,7 @@ contains
 
     ! the pairs are kept for the sweeps that follow at the same positions: the axisymmetric
     ! sums and the surface tension passes (surface_tension_loops.f90)
-    st_on = prm%sigma > 0.0_rp
+    st_on = prm%surface_tension%sigma > 0.0_rp
     call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, &
                     merge(SWEEP_KEEP, SWEEP_FRESH, st_on .or. body%axi_pressure))
 
@@ -135,7 +135,7 @@ contains
     if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
 
     ! back to particle order (inactive particles get zero rates)
-    call scatter_rates(s, st, prm%xsph_eps)
+    call scatter_rates(s, st, prm%numerics%xsph_eps)
   end subroutine compute_rates
 
   !> The pairs of one row task in two passes over chunks of CHUNK pairs (the chunk's columns

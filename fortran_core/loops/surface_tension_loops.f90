@@ -32,7 +32,9 @@ module surface_tension_loops
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
-  use sorted_state, only: sorted_t, copy_to_images, team_work_t, in_team, R_AX, R_AZ
+  use sorted_state, only: sorted_t, R_AX, R_AZ
+  use particle_images, only: copy_to_images
+  use omp_team, only: team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
   use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
@@ -44,7 +46,7 @@ module surface_tension_loops
   private
   public :: surface_tension_rates
 
-  !> The delta of eq 24, chosen at run time by prm%st_delta (case key surface_tension.delta):
+  !> The delta of eq 24, chosen at run time by prm%surface_tension%delta (case key surface_tension.delta):
   !>  ST_DELTA_COLOUR (1, "colour_gradient"): a_s = -(sigma/rho) kappa n with n the colour
   !>    gradient of eq 18, exactly as the paper prints it. Eqs 14-24 come from two-phase CSF
   !>    (Morris 2000), where the colour jumps 1 -> 0 across particles on both sides of the
@@ -151,24 +153,24 @@ contains
     reuse = .false.
     if (present(kept)) reuse = kept
     n = s%n
-    if (.not. (prm%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
+    if (.not. (prm%surface_tension%sigma > 0.0_rp) .and. .not. associated(st%colour)) return
     allocate(wk%v(n), wk%c(n), wk%ng(N_NG, n), wk%nhx(n), wk%nhz(n), wk%flag(n), &
              wk%num(n), wk%den(n), wk%tden(n), kappa(n))
     w0 = kernel_w0(kern)
-    eps = csf_threshold(prm%h)
-    colour_delta = prm%st_delta == ST_DELTA_COLOUR   ! chosen outside the loops
-    axi = prm%geometry == GEOM_AXISYMMETRIC
+    eps = csf_threshold(prm%numerics%h)
+    colour_delta = prm%surface_tension%delta == ST_DELTA_COLOUR   ! chosen outside the loops
+    axi = prm%geometry%kind == GEOM_AXISYMMETRIC
     loops = csf_loops_t(prm=prm, kern=kern, s=s, wk=wk, kappa=kappa, w0=w0, eps=eps, &
                         colour_delta=colour_delta, axi=axi)
 
-    surface_mean = prm%geometry == GEOM_AXISYMMETRIC .and. prm%axis_pair == AXIS_PAIR_RINGS &
-                   .and. prm%st_delta /= ST_DELTA_COLOUR &
-                   .and. prm%rings_curvature == RINGS_CURVATURE_MEAN
+    surface_mean = prm%geometry%kind == GEOM_AXISYMMETRIC .and. prm%geometry%axis_pair == AXIS_PAIR_RINGS &
+                   .and. prm%surface_tension%delta /= ST_DELTA_COLOUR &
+                   .and. prm%surface_tension%rings_curvature == RINGS_CURVATURE_MEAN
     if (surface_mean) allocate(wk%kown(n), wk%wt(n), source=0.0_rp)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
-      wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%h) / s%rho(1:n)
+      wk%vmu = mass_per_radian(s%m(1:n), s%x(1:n), prm%numerics%h) / s%rho(1:n)
     end if
 
     ! colour (eq 14), self term included
@@ -176,7 +178,7 @@ contains
     call sweep(PASS_COLOUR, kern, s, wk, reuse, axi)
     if (axi) wk%c2 = wk%c2 * wk%gi
     ! image slots (axis, periodic z) take their source's sums: their own lack the neighbours
-    ! beyond the image band (sorted_state.f90); nothing to do without images
+    ! beyond the image band (particle_images.f90); nothing to do without images
     if (s%n > s%n_real) then
       call copy_to_images(s, wk%c, .false.)
       if (axi) call copy_to_images(s, wk%c2, .false.)
@@ -186,7 +188,7 @@ contains
     call sweep(PASS_NORMAL, kern, s, wk, .true., axi)
     if (axi) then   ! d_a = sum_b (m_b / (2 pi rho_b)) (1/g_a + 1/g_b) grad_a W_ab - (g'_a/g_a) e_r
       wk%ng(NG_GX, :) = wk%ng(NG_GX, :) - sign(1.0_rp, s%x(1:n)) * hoop
-      if (prm%axis_pair == AXIS_PAIR_RINGS) then
+      if (prm%geometry%axis_pair == AXIS_PAIR_RINGS) then
         ! the rings pair's own, from the rates of this evaluation (axisymmetric_rates); the
         ! fields-only call of the initial state (sph_surface_tension_fields, no acceleration
         ! asked for) has no rates: no force
@@ -199,7 +201,7 @@ contains
         end if
       end if
       ! the radial part damped next to the axis (axis_detection_factor)
-      wk%n2x = wk%n2x * wk%gi * axis_detection_factor(s%x(1:n), prm%h)
+      wk%n2x = wk%n2x * wk%gi * axis_detection_factor(s%x(1:n), prm%numerics%h)
       wk%n2z = wk%n2z * wk%gi
     end if
     if (s%n > s%n_real) then
@@ -224,14 +226,15 @@ contains
         depth_cached(kern%kind) = .true.
       end if
       !$omp end critical (csf_depth_cache)
-      if (prm%curvature_normals == CURV_NORMALS_BAND) then
+      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND) then
         ! the normals within CURV_BAND_H h of the surface (physics/surface_tension.f90); the
         ! image slots have their sources' colour and filter flag already
         allocate(wk%band(n))
         !$omp parallel do schedule(static)
         do k = 1, n
           wk%band(k) = merge(wk%flag(k), 0.0_rp, &
-                             csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h) < CURV_BAND_H * prm%h)
+                             csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h) &
+                             < CURV_BAND_H * prm%numerics%h)
         end do
         !$omp end parallel do
         call sweep(PASS_BAND_CURVATURE, kern, s, wk, .true., axi)
@@ -261,8 +264,8 @@ contains
       do k = 1, n
         if (wk%flag(k) == 0.0_rp .or. s%grid%order(k) > st%n) cycle
         if (wk%den(k) > 0.0_rp) kappa(k) = wk%num(k) / wk%den(k)
-        if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
-          call csf_acceleration(prm%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%ng(NG_GX, k), &
+        if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
+          call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%ng(NG_GX, k), &
                                 wk%wt(k) * wk%ng(NG_GZ, k), ax, az)
           s%rate(R_AX, k) = s%rate(R_AX, k) + ax
           s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
@@ -348,37 +351,37 @@ contains
           if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
             if (colour_delta) then
               kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
-              kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
+              kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%numerics%h)
             else   ! each moved from the particle's row to the surface by k / (1 - k delta)
               kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
-              kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%h)
-              depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h)
+              kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%numerics%h)
+              depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
               kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
             end if
           else if (colour_delta) then   ! eq 23 as printed
             kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
           else                     ! free-surface curvature (physics/surface_tension.f90)
             kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
-                                        csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%h))
+                                        csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h))
           end if
           kappa(k) = kap
           if (allocated(wk%kown)) then   ! the rings pair: force after surface_mean_pairs
             wk%kown(k) = kap
-            wk%wt(k) = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%h)
+            wk%wt(k) = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%numerics%h)
             cycle
           end if
-          if (s%fluid(k) .and. prm%sigma > 0.0_rp) then
+          if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
             if (colour_delta) then
-              call csf_acceleration(prm%sigma, s%rho(k), kap, wk%ng(NG_NX, k), wk%ng(NG_NZ, k), &
-                                    ax, az)
+              call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kap, wk%ng(NG_NX, k), &
+                                    wk%ng(NG_NZ, k), ax, az)
             else
               ! the planar delta is 2 sum_b V_b grad_a W_ab; the axisymmetric one is complete
               if (axi) then
-                wt = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%h)
+                wt = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%numerics%h)
               else
-                wt = 2.0_rp * csf_surface_weight(wk%ng(NG_NX, k), wk%ng(NG_NZ, k), prm%h)
+                wt = 2.0_rp * csf_surface_weight(wk%ng(NG_NX, k), wk%ng(NG_NZ, k), prm%numerics%h)
               end if
-              call csf_acceleration(prm%sigma, s%rho(k), kap, wt * wk%ng(NG_GX, k), &
+              call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kap, wt * wk%ng(NG_GX, k), &
                                   wt * wk%ng(NG_GZ, k), ax, az)
             end if
             s%rate(R_AX, k) = s%rate(R_AX, k) + ax

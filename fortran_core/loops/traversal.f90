@@ -1,6 +1,6 @@
 !> The one pair traversal every pair loop uses (rates, density filters, surface tension, the
 !> neighbour search of the C API). Each unordered pair of particles closer than 2h is visited
-!> once: the neighbour list of sorted_state.f90 (neighbours/verlet_list.f90) holds, per row
+!> once: the neighbour list of list_rebuild.f90 (neighbours/verlet_list.f90) holds, per row
 !> of cells, the pairs that were closer than 2h + skin at its build (a cell with itself and
 !> its east, north-west, north and north-east neighbours), and stays valid over several steps.
 !>
@@ -20,7 +20,8 @@
 module traversal
   use sphjet_kinds, only: rp
   use sphjet_kernels, only: kernel_t, kernel_eval_list
-  use sorted_state, only: sorted_t, thread_lists, one_thread, in_open_team
+  use sorted_state, only: sorted_t, thread_lists
+  use omp_team, only: one_thread, in_open_team
   use pair_list, only: pair_list_t, reserve
   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
@@ -78,7 +79,7 @@ contains
     how = SWEEP_FRESH
     if (present(cache)) how = cache
     if (in_open_team()) then
-      ! every thread of an open team (sorted_state.f90): the thread lists were made before
+      ! every thread of an open team (omp_team.f90): the thread lists were made before
       ! the team opened (pc_step); kept lists are not made here (pc_step opens no team with
       ! surface tension, whose sweeps keep them)
       call sweep_thread(s, kern, mode, how, body, red)
@@ -187,7 +188,7 @@ contains
   end subroutine sweep_thread
 
   !> The pairs of row task `row` (0-based) closer than sqrt(support2) now into pl: the
-  !> row's neighbour list (sorted_state.f90) filtered, in its order (cell west to east, a,
+  !> row's neighbour list (list_rebuild.f90) filtered, in its order (cell west to east, a,
   !> partner cell self, E, NW, N, NE, b).
   subroutine build_row_pairs(s, row, support2, mode, pl, scratch)
     type(sorted_t), intent(in) :: s

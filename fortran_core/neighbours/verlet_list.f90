@@ -8,7 +8,7 @@
 !> sums along its run: Case1 +5%, ObstW +0.5%, 1 thread). The pair sweeps
 !> (loops/traversal.f90) then keep, at each evaluation, the listed pairs that are closer than
 !> 2h now. The list stays exact as long as no particle has moved more than skin/2 from its
-!> position at the build; sorted_state.f90 decides when to build it again.
+!> position at the build; loops/list_rebuild.f90 decides when to build it again.
 module verlet_list
   use sphjet_kinds, only: rp
   use cell_list, only: cell_grid_t
@@ -29,7 +29,7 @@ contains
   !> Lists of the rows 0 .. grid%ncz - 1 into rows(0:): the pairs closer than sqrt(cut2) of
   !> the sorted positions x, z (cells of side at least sqrt(cut2)), with at least one fluid
   !> particle unless all_pairs, and at least one real one (real: not an image slot, see
-  !> loops/sorted_state.f90: a pair of two images adds only to image sums, which are
+  !> loops/particle_images.f90: a pair of two images adds only to image sums, which are
   !> discarded). scratch: one pair list per thread (candidates of a row).
   subroutine build_verlet_rows(grid, x, z, fluid, real, cut2, all_pairs, scratch, rows, team)
     type(cell_grid_t), intent(in) :: grid

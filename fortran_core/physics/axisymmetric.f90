@@ -2,7 +2,7 @@
 !> equations, the derivation and the measurements). Particles live in the meridian half-plane,
 !> x = r >= 0, the symmetry axis is the line x = 0; a particle stands for a ring and carries
 !> its true 3D mass m = rho 2 pi r A (A its area in the meridian plane). The axis is closed by
-!> mirror images (loops/sorted_state.f90): an image carries its source's mass, density and
+!> mirror images (loops/particle_images.f90): an image carries its source's mass, density and
 !> pressure at (-x, z) with the velocity (-u, w).
 !>   density      rho_a = sum_b mu_b W_ab / g_a over the rings and their images, mu = m / 2pi,
 !>                g = the kernel's smoothed radius (axis_weight_tables): the interpolant of

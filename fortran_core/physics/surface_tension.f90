@@ -55,7 +55,7 @@ module surface_tension
             csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
             ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN, CURV_BAND_H
 
-  !> Values of sph_params_t%st_delta (case key surface_tension.delta).
+  !> Values of sph_params_t%surface_tension%delta (case key surface_tension.delta).
   integer, parameter :: ST_DELTA_PRESSURE = 0  !< "pressure_consistent": d = 2 sum_b V_b grad_a W_ab
   integer, parameter :: ST_DELTA_COLOUR = 1    !< "colour_gradient": n of eq 18 (paper eq 24)
 

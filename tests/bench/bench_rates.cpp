@@ -31,8 +31,8 @@ void BM_Rates(benchmark::State& state) {
     auto ps = lattice(side);
     auto arr = ps.bind();
     auto prm = sphjet_test::water_params(kernel, 1.3 * 0.01);
-    prm.viscosity = visc;
-    prm.visc_value = visc == 1 ? 0.1 : 1e-6;
+    prm.viscosity.model = visc;
+    prm.viscosity.value = visc == 1 ? 0.1 : 1e-6;
     if (sph_prepare(&prm, &arr) != SPH_OK) {
         state.SkipWithError("sph_prepare failed");
         return;

@@ -38,26 +38,26 @@ struct CoreParticles {
 
 inline sph_params_t water_params(int kernel, double h) {
     sph_params_t p{};
-    p.kernel = kernel;
-    p.viscosity = 1;
-    p.boundary = 2;
-    p.density_filter = 0;
-    p.tensile = 0;
-    p.dbc_period = 1;
-    p.variable_dt = 1;
-    p.remove_out_of_domain = 1;
-    p.h = h;
-    p.rho0 = 1000;
-    p.gamma = 7;
-    p.c0 = 20;
-    p.b = p.rho0 * p.c0 * p.c0 / p.gamma;
-    p.coef = 10;
-    p.h_swl = 1;
-    p.visc_value = 0.1;
-    p.xsph_eps = 0.5;
-    p.cfl = 0.2;
-    p.gz = -9.81;
-    p.dom_xmin = -1e30; p.dom_xmax = 1e30; p.dom_zmin = -1e30; p.dom_zmax = 1e30;
+    p.numerics.kernel = kernel;
+    p.viscosity.model = 1;
+    p.boundary.model = 2;
+    p.numerics.density_filter = 0;
+    p.numerics.tensile = 0;
+    p.boundary.dbc_period = 1;
+    p.time_step.variable_dt = 1;
+    p.domain.remove_out = 1;
+    p.numerics.h = h;
+    p.eos.rho0 = 1000;
+    p.eos.gamma = 7;
+    p.eos.c0 = 20;
+    p.eos.b = p.eos.rho0 * p.eos.c0 * p.eos.c0 / p.eos.gamma;
+    p.boundary.coef = 10;
+    p.boundary.h_swl = 1;
+    p.viscosity.value = 0.1;
+    p.numerics.xsph_eps = 0.5;
+    p.time_step.cfl = 0.2;
+    p.gravity.gz = -9.81;
+    p.domain.xmin = -1e30; p.domain.xmax = 1e30; p.domain.zmin = -1e30; p.domain.zmax = 1e30;
     return p;
 }
 

@@ -13,10 +13,10 @@ TEST(CoreEos, TaitRoundTripAndSoundSpeed) {
     ASSERT_EQ(sph_eos(&prm, static_cast<int64_t>(rho.size()), rho.data(), p.data(), c.data()),
               SPH_OK);
     EXPECT_EQ(p[1], 0.0);
-    EXPECT_DOUBLE_EQ(c[1], prm.c0);
+    EXPECT_DOUBLE_EQ(c[1], prm.eos.c0);
     for (std::size_t i = 0; i < rho.size(); ++i) {
         // inverse: rho = rho0 (1 + p/B)^(1/gamma); relative 1e-13 (round-off of pow)
-        const double back = prm.rho0 * std::pow(1 + p[i] / prm.b, 1 / prm.gamma);
+        const double back = prm.eos.rho0 * std::pow(1 + p[i] / prm.eos.b, 1 / prm.eos.gamma);
         EXPECT_NEAR(back, rho[i], 1e-13 * rho[i]);
         // dp/drho by central difference equals c^2 (relative 1e-7: difference error)
         double r2[2] = {rho[i] * (1 - 1e-6), rho[i] * (1 + 1e-6)}, p2[2], c2[2];

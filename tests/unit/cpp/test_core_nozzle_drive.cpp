@@ -45,13 +45,13 @@ Block block(double u0, double w_entering) {
 
 sph_params_t drive_params(double u0) {
     sph_params_t p = water_params(5, 0.0013);
-    p.variable_dt = 0;
-    p.drive_u = u0;
-    p.drive_x0 = 0.0;
-    p.drive_z0 = 0.0;
-    p.drive_ex = 0.0;
-    p.drive_ez = -1.0;
-    p.drive_half_width = 0.00325;
+    p.time_step.variable_dt = 0;
+    p.nozzle.u = u0;
+    p.nozzle.x0 = 0.0;
+    p.nozzle.z0 = 0.0;
+    p.nozzle.ex = 0.0;
+    p.nozzle.ez = -1.0;
+    p.nozzle.half_width = 0.00325;
     return p;
 }
 
@@ -85,7 +85,7 @@ TEST(CoreNozzleDrive, NoDriveWhenUIsZero) {
     Block b = block(0.25, 0.0);
     auto arr = b.ps.bind();
     auto prm = drive_params(0.25);
-    prm.drive_u = 0.0;
+    prm.nozzle.u = 0.0;
     ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
     void* ws = sph_workspace_create();
     sph_step_info_t info{};

@@ -34,9 +34,9 @@ TEST_P(CorePairs, MomentumIsConserved) {
     auto ps = cloud(7);
     auto arr = ps.bind();
     auto prm = sphjet_test::water_params(kernel, 1.3 * 0.01);
-    prm.viscosity = visc;
-    prm.visc_value = visc == 1 ? 0.3 : 1e-3;
-    prm.tensile = tensile;
+    prm.viscosity.model = visc;
+    prm.viscosity.value = visc == 1 ? 0.3 : 1e-3;
+    prm.numerics.tensile = tensile;
     ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
     void* ws = sph_workspace_create();
     double vmax = 0;

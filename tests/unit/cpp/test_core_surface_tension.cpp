@@ -104,10 +104,10 @@ CoreParticles ring_disc(int nr, double dx, double xc, double zc) {
 
 sph_params_t drop_params(int kernel, double dx, double sigma) {
     auto p = sphjet_test::water_params(kernel, 1.3 * dx);
-    p.gz = 0;
-    p.sigma = sigma;
-    p.c0 = 5;
-    p.b = p.rho0 * p.c0 * p.c0 / p.gamma;
+    p.gravity.gz = 0;
+    p.surface_tension.sigma = sigma;
+    p.eos.c0 = 5;
+    p.eos.b = p.eos.rho0 * p.eos.c0 * p.eos.c0 / p.eos.gamma;
     return p;
 }
 
@@ -217,7 +217,7 @@ TEST(CoreSurfaceTension, NormalAndForcePointInward) {
         auto ps2 = ps;
         Fields f2;
         auto prm2 = prm;
-        prm2.sigma = 2 * prm.sigma;
+        prm2.surface_tension.sigma = 2 * prm.surface_tension.sigma;
         csf(ps2, f2, prm2);
         int checked = 0;
         for (std::size_t i = 0; i < ps.x.size(); ++i) {
@@ -371,11 +371,11 @@ TEST(CoreSurfaceTension, MissingFieldArraysIsAnError) {
     f.bind(arr, ps.x.size());
     EXPECT_EQ(sph_surface_tension_fields(nullptr, &prm, &arr), SPH_ERR_ARGUMENT);
     auto bad = prm;
-    bad.sigma = -1;
+    bad.surface_tension.sigma = -1;
     EXPECT_EQ(sph_surface_tension_fields(ws, &bad, &arr), SPH_ERR_ARGUMENT);
     for (int delta : {-1, 2}) {  // only 0 (pressure-consistent) and 1 (colour gradient)
         bad = prm;
-        bad.st_delta = delta;
+        bad.surface_tension.delta = delta;
         EXPECT_EQ(sph_surface_tension_fields(ws, &bad, &arr), SPH_ERR_ARGUMENT) << delta;
     }
     EXPECT_EQ(sph_surface_tension_fields(ws, &prm, &arr), SPH_OK);
@@ -398,9 +398,9 @@ TEST(CoreSurfaceTension, TimeStepRespectsCapillaryLimit) {
     info.dt = 1e-6;
     ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
     sph_workspace_destroy(ws);
-    const double dt_st = 0.25 * std::sqrt(prm.rho0 * std::pow(prm.h, 3) /
-                                          (2 * std::numbers::pi * prm.sigma));
-    const double dt_cfl = prm.cfl * std::min(info.dt_f, info.dt_cv);
+    const double dt_st = 0.25 * std::sqrt(prm.eos.rho0 * std::pow(prm.numerics.h, 3) /
+                                          (2 * std::numbers::pi * prm.surface_tension.sigma));
+    const double dt_cfl = prm.time_step.cfl * std::min(info.dt_f, info.dt_cv);
     ASSERT_LT(dt_st, dt_cfl) << "the case must make the capillary term the smallest";
     EXPECT_DOUBLE_EQ(info.dt_new, dt_st);
     EXPECT_LE(info.dt_next, dt_st);
@@ -415,15 +415,15 @@ double laplace_balance(int kernel, int nr, int st_delta) {
     auto ps = ring_disc(nr, dx, xc, zc);
     Fields f;
     auto prm = drop_params(kernel, dx, 1.0);
-    prm.st_delta = st_delta;
+    prm.surface_tension.delta = st_delta;
     csf(ps, f, prm);  // a_s in ps.ax
     auto q = ps;
-    const double p = prm.sigma / R;
-    for (auto& r : q.rho) r = prm.rho0 * std::pow(1 + p / prm.b, 1 / prm.gamma);
+    const double p = prm.surface_tension.sigma / R;
+    for (auto& r : q.rho) r = prm.eos.rho0 * std::pow(1 + p / prm.eos.b, 1 / prm.eos.gamma);
     auto arr = q.bind();
     auto p0 = prm;
-    p0.sigma = 0;
-    p0.tensile = 0;
+    p0.surface_tension.sigma = 0;
+    p0.numerics.tensile = 0;
     EXPECT_EQ(sph_prepare(&p0, &arr), SPH_OK);
     void* ws = sph_workspace_create();
     double v;
@@ -480,7 +480,7 @@ TEST(CoreSurfaceTension, PressureConsistentForceOnlyOnTheOuterRows) {
         auto ps = ring_disc(nr, dx, xc, zc);
         Fields f;
         auto prm = drop_params(kWendland, dx, 1.0);
-        prm.st_delta = st_delta;
+        prm.surface_tension.delta = st_delta;
         csf(ps, f, prm);
         int interior_flagged = 0, interior_forced = 0, outer = 0;
         for (std::size_t i = 0; i < ps.x.size(); ++i) {

@@ -122,7 +122,7 @@ TEST(LegacyCase, Case1SoundSpeedReachesTheEos) {
     const double c0 = 10 * std::sqrt(9.81 * 2.0);
     EXPECT_NEAR(p.c0(), c0, 1e-7 * c0);
     const sph_params_t prm = core_params(p, s.output, DomainBounds{0, 4, 0, 4});
-    EXPECT_EQ(prm.b, p.B);
+    EXPECT_EQ(prm.eos.b, p.B);
     double rho[2] = {p.rho0, 1.01 * p.rho0}, pr[2], c[2];
     ASSERT_EQ(sph_eos(&prm, 2, rho, pr, c), SPH_OK);
     EXPECT_EQ(pr[0], 0.0);

@@ -1,6 +1,7 @@
-!> The compact pair list of one row task (traversal.f90): the pairs within the kernel
+!> The compact pair list of one row task (loops/traversal.f90): the pairs within the kernel
 !> support, their separation, W and F, and scratch columns for the loop body. One list per
-!> thread lives in the work space (sorted_t) so that it is allocated once, not every sweep.
+!> thread lives in the work space (sorted_t, loops/sorted_state.f90) so that it is allocated
+!> once, not every sweep; a list build (verlet_list.f90) uses them for its candidate pairs.
 module pair_list
   use sphjet_kinds, only: rp
   implicit none
