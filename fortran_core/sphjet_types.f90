@@ -19,6 +19,7 @@ module sphjet_types
     integer(c_int) :: tensile = 0            !< 1: tensile-instability correction on
     real(c_double) :: h = 0.0_rp             !< smoothing length [m]
     real(c_double) :: xsph_eps = 0.5_rp      !< XSPH epsilon
+    real(c_double) :: density_diffusion = 0.0_rp !< delta of the density diffusion; 0 = off
   end type sph_numerics_t
 
   !> Time-step control (C struct sph_time_step_t).

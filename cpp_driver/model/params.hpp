@@ -136,6 +136,9 @@ struct SimParams {
     int dbc_period = 1;                // steps between dynamic-boundary density updates
     Lattice lattice = Lattice::BodyCentred;
     double xsph_eps = 0.5;
+    // Density diffusion in the continuity equation (delta-SPH, Molteni & Colagrossi 2009):
+    // its delta; 0 = off (fortran_core/physics/density_diffusion.f90).
+    double density_diffusion = 0.0;
     // Tensile-instability correction (Monaghan 2000): legacy SPHysics turns it on for the
     // Gaussian and cubic-spline kernels and off for the others. -1 = as legacy, 0 off, 1 on.
     int tensile_correction = -1;

@@ -34,6 +34,7 @@ typedef struct sph_numerics_t {
     int tensile;              /* 1: tensile-instability correction on */
     double h;                 /* smoothing length [m] */
     double xsph_eps;          /* XSPH epsilon */
+    double density_diffusion; /* delta of the density diffusion (delta-SPH); 0 = off */
 } sph_numerics_t;
 
 typedef struct sph_time_step_t {

@@ -112,13 +112,14 @@ contains
       end if
     end if
 
-    ! Planar runs without surface tension on several threads: both stages in one parallel
-    ! region, whose threads run the particle loops of the gather, the sweeps, the scatter
-    ! and the integrator as its orphaned worksharing loops (omp_team.f90, in_team), so
-    ! that a step has the barriers those loops need and no more (libgomp's passive waits
-    ! make each barrier a futex sleep and wake-up).
+    ! Planar runs without surface tension or density diffusion on several threads: both
+    ! stages in one parallel region, whose threads run the particle loops of the gather, the
+    ! sweeps, the scatter and the integrator as its orphaned worksharing loops (omp_team.f90,
+    ! in_team), so that a step has the barriers those loops need and no more (libgomp's
+    ! passive waits make each barrier a futex sleep and wake-up).
     if (.not. one_thread() .and. prm%geometry%kind /= GEOM_AXISYMMETRIC .and. prm%geometry%periodic_z == 0 &
-        .and. .not. prm%surface_tension%sigma > 0.0_rp) then
+        .and. .not. prm%surface_tension%sigma > 0.0_rp &
+        .and. .not. prm%numerics%density_diffusion > 0.0_rp) then
       call thread_lists(s)
       !$omp parallel
       call set_open_team(.true.)

@@ -23,6 +23,7 @@ module rates
   use repulsive_wall, only: repulsive_force
   use surface_tension_loops, only: surface_tension_rates
   use axisymmetric_loops, only: axisymmetric_rates
+  use density_diffusion_loops, only: density_diffusion_rates
   implicit none
   private
   public :: compute_rates, tensile_q
@@ -73,7 +74,7 @@ contains
     type(rates_body_t) :: body
     integer :: n, k, i
     real(rp) :: wdp, fdummy
-    logical :: st_on
+    logical :: st_on, diffusion_on
 
     body%h = prm%numerics%h
     body%eta2 = 0.01_rp * prm%numerics%h * prm%numerics%h
@@ -126,13 +127,17 @@ contains
     ! the pairs are kept for the sweeps that follow at the same positions: the axisymmetric
     ! sums and the surface tension passes (surface_tension_loops.f90)
     st_on = prm%surface_tension%sigma > 0.0_rp
+    diffusion_on = prm%numerics%density_diffusion > 0.0_rp
     call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, &
-                    merge(SWEEP_KEEP, SWEEP_FRESH, st_on .or. body%axi_pressure))
+                    merge(SWEEP_KEEP, SWEEP_FRESH, st_on .or. body%axi_pressure .or. diffusion_on))
 
     ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
     if (body%axi_pressure) call axisymmetric_rates(prm, kern, s, st%n, kept=.true.)
 
     if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
+
+    ! density diffusion, added to the density rates the loops above have set
+    if (diffusion_on) call density_diffusion_rates(prm, kern, s, st%n)
 
     ! back to particle order (inactive particles get zero rates)
     call scatter_rates(s, st, prm%numerics%xsph_eps)
