@@ -976,6 +976,30 @@ TEST(ModernCase, AxisPair) {
     EXPECT_NE(e.find("\"smoothed_radius\", \"rings\""), std::string::npos) << e;
 }
 
+// numerics.density_diffusion and resolution.jitter (cases/CASE_FORMAT.md): off by default; read,
+// written back and read again; out of range refused; the diffusion refused in the axisymmetric
+// geometry, naming the key, what was expected and what was found.
+TEST(ModernCase, DensityDiffusionAndJitter) {
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.density_diffusion, 0.0);
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.jitter, 0.0);
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml",
+                                         {"numerics.density_diffusion=0.1", "resolution.jitter=0.01",
+                                          "resolution.jitter_seed=9"});
+    EXPECT_EQ(s.params.density_diffusion, 0.1);
+    EXPECT_EQ(s.params.jitter, 0.01);
+    EXPECT_EQ(s.params.jitter_seed, 9);
+    expect_round_trip(s);
+    std::string e = error_of(kMinimal, {"numerics.density_diffusion=-0.1"});
+    EXPECT_NE(e.find("numerics.density_diffusion"), std::string::npos) << e;
+    e = error_of(kMinimal, {"resolution.jitter=0.5"});
+    EXPECT_NE(e.find("[0, 0.25]"), std::string::npos) << e;
+    e = error_of(kMinimal, {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                            "numerics.lattice=\"sc\"", "numerics.density_diffusion=0.1"});
+    EXPECT_NE(e.find("numerics.density_diffusion"), std::string::npos) << e;
+    EXPECT_NE(e.find("domain.geometry = \"axisymmetric\""), std::string::npos) << e;
+    EXPECT_NE(e.find("found 0.1"), std::string::npos) << e;
+}
+
 // surface_tension.curvature_normals (cases/CASE_FORMAT.md): every filtered normal by default;
 // "surface_band" read, written back and read again; refused with the colour-gradient delta,
 // naming key, expected and found.
