@@ -14,17 +14,11 @@ import re
 import sys
 import tempfile
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from check_layers import read_layers  # noqa: E402  (the same layers.txt format)
+
 MODULE = re.compile(r"^\s*module\s+(\w+)\s*(?:!.*)?$", re.I)
 USE = re.compile(r"^\s*use\s*(?:,\s*\w+\s*::)?\s*(?:::)?\s*(\w+)", re.I)
-
-
-def layer_order(core):
-    names = []
-    for line in (core / "layers.txt").read_text().splitlines():
-        line = line.strip()
-        if line and not line.startswith("#"):
-            names.append(line.split()[0])
-    return {name: i for i, name in enumerate(names)}
 
 
 def folder_of(core, path):
@@ -33,13 +27,13 @@ def folder_of(core, path):
 
 
 def violations(core):
-    rank = layer_order(core)
+    rank = {name: i for i, name in enumerate(read_layers(core))}
     sources = sorted(p for p in core.rglob("*.f90") if p.is_file())
     home = {}  # module name -> folder
     for path in sources:
         for text in path.read_text().splitlines():
             m = MODULE.match(text)
-            if m and m.group(1).lower() != "procedure":
+            if m:
                 home[m.group(1).lower()] = folder_of(core, path)
     found = []
     for path in sources:
@@ -60,35 +54,38 @@ def violations(core):
     return found
 
 
+SELF_TEST_TREE = {
+    "layers.txt": "# order\n.  the root\nlow  the bottom\nhigh the top\n",
+    "kinds.f90": "module kinds\nend module kinds\n",
+    "low/a.f90": "module a\n  use kinds\n  use b, only: x\nend module a\n",
+    "high/b.f90": "module b\n  use, intrinsic :: iso_c_binding\n  use a\n  use omp_lib\nend module b\n",
+}
+
+
 def self_test():
+    """Exactly the one use against the order in SELF_TEST_TREE (low/a.f90 line 3) is found."""
     with tempfile.TemporaryDirectory() as tmp:
-        d = pathlib.Path(tmp)
-        (d / "layers.txt").write_text("# order\n.  the root\nlow  the bottom\nhigh the top\n")
-        (d / "low").mkdir()
-        (d / "high").mkdir()
-        (d / "kinds.f90").write_text("module kinds\nend module kinds\n")
-        (d / "low" / "a.f90").write_text("module a\n  use kinds\n  use b, only: x\nend module a\n")
-        (d / "high" / "b.f90").write_text(
-            "module b\n  use, intrinsic :: iso_c_binding\n  use a\n  use omp_lib\nend module b\n")
-        got = violations(d)
-        ok = len(got) == 1 and "low/a.f90:3" in got[0] and "may not use high" in got[0]
-        print("self-test:", "ok" if ok else f"FAILED, reported {got}")
-        return 0 if ok else 1
+        root = pathlib.Path(tmp)
+        for name, text in SELF_TEST_TREE.items():
+            (root / name).parent.mkdir(exist_ok=True)
+            (root / name).write_text(text)
+        got = violations(root)
+    ok = len(got) == 1 and "low/a.f90:3" in got[0] and "may not use high" in got[0]
+    print("self-test:", "ok" if ok else f"FAILED, reported {got}")
+    return 0 if ok else 1
 
 
-def main():
-    if sys.argv[1:] == ["--self-test"]:
+def main(args):
+    if args == ["--self-test"]:
         return self_test()
-    if len(sys.argv) != 2:
+    if len(args) != 1:
         print(__doc__)
         return 2
-    core = pathlib.Path(sys.argv[1])
-    found = violations(core)
-    for v in found:
-        print(v)
-    print(f"{len(found)} use statement(s) against the layer order of {core / 'layers.txt'}")
+    found = violations(pathlib.Path(args[0]))
+    print("\n".join(found + [f"{len(found)} use statement(s) against the layer order of "
+                             f"{pathlib.Path(args[0]) / 'layers.txt'}"]))
     return 1 if found else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))
