@@ -143,11 +143,11 @@ contains
     type(sorted_t), intent(inout), target :: s
     logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
-    real(rp) :: w0, eps, ax, az
+    real(rp) :: w0, eps
     real(rp), allocatable, target :: kappa(:)
     real(rp), allocatable :: hoop(:)
     type(csf_loops_t) :: loops
-    integer :: n, k, i
+    integer :: n, k
     logical :: colour_delta, axi, reuse, surface_mean
 
     reuse = .false.
@@ -243,38 +243,64 @@ contains
       end if
     end if
     call in_team(loops, FORCE)
-    if (surface_mean) then
-      ! the rings pair: the force of every weighted row with the weighted mean curvature of
-      ! its neighbours, kappa_a = sum_b w_b kappa_b V_b W_ab / sum_b w_b V_b W_ab (b = a
-      ! included; w the force weight, csf_surface_weight): the rows within 2h of the surface
-      ! (four at h = 2 dx) balance one pressure, the surface's, where each row's own curvature
-      ! from its own normals goes wrong next to a pole (cases/axisymmetric/README.md)
-      if (s%n > s%n_real) then
-        call copy_to_images(s, wk%kown, .false.)
-        call copy_to_images(s, wk%wt, .false.)
-      end if
-      !$omp parallel do schedule(static)
-      do k = 1, n
-        wk%num(k) = wk%wt(k) * wk%kown(k) * wk%v(k) * w0
-        wk%den(k) = wk%wt(k) * wk%v(k) * w0
-      end do
-      !$omp end parallel do
-      call sweep(PASS_SURFACE_MEAN, kern, s, wk, .true., axi)
-      !$omp parallel do schedule(static) private(ax, az)
-      do k = 1, n
-        if (wk%flag(k) == 0.0_rp .or. s%grid%order(k) > st%n) cycle
-        if (wk%den(k) > 0.0_rp) kappa(k) = wk%num(k) / wk%den(k)
-        if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
-          call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%ng(NG_GX, k), &
-                                wk%wt(k) * wk%ng(NG_GZ, k), ax, az)
-          s%rate(R_AX, k) = s%rate(R_AX, k) + ax
-          s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
-        end if
-      end do
-      !$omp end parallel do
-    end if
+    if (surface_mean) call surface_mean_force(prm, kern, st, s, wk, kappa, w0, axi)
 
-    ! fields in particle order
+    call fields_to_particles(st, s, wk, kappa)
+
+  end subroutine surface_tension_rates
+
+  !> The rings pair (surface_tension.rings_curvature = "neighbour_mean"): the force of every
+  !> weighted row with the weighted mean curvature of its neighbours, kappa_a = sum_b w_b
+  !> kappa_b V_b W_ab / sum_b w_b V_b W_ab (b = a included; w the force weight,
+  !> csf_surface_weight): the rows within 2h of the surface (four at h = 2 dx) balance one
+  !> pressure, the surface's, where each row's own curvature from its own normals goes wrong
+  !> next to a pole (cases/axisymmetric/README.md).
+  subroutine surface_mean_force(prm, kern, st, s, wk, kappa, w0, axi)
+    type(sph_params_t), intent(in) :: prm
+    type(kernel_t), intent(in) :: kern
+    type(state_t), intent(in) :: st
+    type(sorted_t), intent(inout) :: s
+    type(csf_work_t), intent(inout), target :: wk
+    real(rp), intent(inout) :: kappa(:)
+    real(rp), intent(in) :: w0
+    logical, intent(in) :: axi
+    integer :: n, k
+    real(rp) :: ax, az
+    n = s%n
+    if (s%n > s%n_real) then
+      call copy_to_images(s, wk%kown, .false.)
+      call copy_to_images(s, wk%wt, .false.)
+    end if
+    !$omp parallel do schedule(static)
+    do k = 1, n
+      wk%num(k) = wk%wt(k) * wk%kown(k) * wk%v(k) * w0
+      wk%den(k) = wk%wt(k) * wk%v(k) * w0
+    end do
+    !$omp end parallel do
+    call sweep(PASS_SURFACE_MEAN, kern, s, wk, .true., axi)
+    !$omp parallel do schedule(static) private(ax, az)
+    do k = 1, n
+      if (wk%flag(k) == 0.0_rp .or. s%grid%order(k) > st%n) cycle
+      if (wk%den(k) > 0.0_rp) kappa(k) = wk%num(k) / wk%den(k)
+      if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
+        call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%ng(NG_GX, k), &
+                              wk%wt(k) * wk%ng(NG_GZ, k), ax, az)
+        s%rate(R_AX, k) = s%rate(R_AX, k) + ax
+        s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
+      end if
+    end do
+    !$omp end parallel do
+  end subroutine surface_mean_force
+
+  !> The colour, normal and curvature of the real slots into the particle-order fields of st
+  !> (when it has them).
+  subroutine fields_to_particles(st, s, wk, kappa)
+    type(state_t), intent(inout) :: st
+    type(sorted_t), intent(in) :: s
+    type(csf_work_t), intent(in) :: wk
+    real(rp), intent(in) :: kappa(:)
+    integer :: i, k, n
+    n = s%n
     if (associated(st%colour) .and. associated(st%st_nx) .and. associated(st%st_nz) &
         .and. associated(st%kappa)) then
       !$omp parallel do schedule(static)
@@ -297,7 +323,7 @@ contains
       !$omp end parallel do
     end if
 
-  end subroutine surface_tension_rates
+  end subroutine fields_to_particles
 
   subroutine csf_particle_loops(self, which)
     class(csf_loops_t), intent(inout) :: self

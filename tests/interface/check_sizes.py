@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""The driver's file and function sizes.
+"""The sources' file and function sizes (the driver's C++ and the core's Fortran).
 
-check_sizes.py DRIVER_DIR: no .cpp/.hpp file in DRIVER_DIR is over MAX_FILE_LINES lines and
-no function body over MAX_FUNCTION_LINES lines (from the line of its opening brace to the
-line of its closing one), except those named in EXCEPTIONS with their reason. Prints each
+check_sizes.py DIR: no .cpp/.hpp/.h/.f90 file in DIR is over MAX_FILE_LINES lines and no
+function body over MAX_FUNCTION_LINES lines (C++: from the line of its opening brace to the
+line of its closing one; Fortran: from `subroutine`/`function` to its `end`, a contained
+procedure counted on its own and inside its host), except those named in EXCEPTIONS with
+their reason. Prints each
 one over (file:line, the function, its length) and exits 1; an exception that no longer
 applies (its function is gone or short now) is reported too, so that the list stays true.
 check_sizes.py --self-test: runs the scan on a small file with one long function, one short
@@ -80,18 +82,39 @@ def functions(text):
     return found
 
 
+F_START = re.compile(r'^\s*(?:(?:pure|elemental|impure|recursive|module|non_recursive)\s+|'
+                     r'(?:integer|real|logical|complex|character|type)\s*(?:\([^)]*\))?\s+)*'
+                     r'(subroutine|function)\s+(\w+)', re.I)
+F_END = re.compile(r'^\s*end\s+(subroutine|function)\b', re.I)
+
+
+def fortran_procedures(text):
+    """(name, first line, line count) of each subroutine and function in Fortran text."""
+    found, stack = [], []
+    for number, raw in enumerate(text.split('\n'), start=1):
+        line = raw.split('!', 1)[0]
+        if F_END.match(line):
+            if stack:
+                name, first = stack.pop()
+                found.append((name, first, number - first + 1))
+        elif (m := F_START.match(line)) is not None:
+            stack.append((m.group(2), number))
+    return found
+
+
 def scan(driver):
     """([(relative path, line, what, length, limit)], every function) of the tree."""
     over, every = [], []
     for path in sorted(driver.rglob('*')):
-        if path.suffix not in ('.cpp', '.hpp', '.h') or not path.is_file():
+        if path.suffix not in ('.cpp', '.hpp', '.h', '.f90') or not path.is_file():
             continue
         rel = path.relative_to(driver).as_posix()
         text = path.read_text()
         lines = text.count('\n')
         if lines > MAX_FILE_LINES:
             over.append((rel, 1, '(the file)', lines, MAX_FILE_LINES))
-        for name, line, length in functions(text):
+        procs = fortran_procedures(text) if path.suffix == '.f90' else functions(text)
+        for name, line, length in procs:
             every.append((rel, line, name, length))
             if length > MAX_FUNCTION_LINES:
                 over.append((rel, line, name, length, MAX_FUNCTION_LINES))
@@ -123,18 +146,24 @@ def self_test():
     long_init = 'const int table[] = {\n' + '    1,\n' * 200 + '};\n'
     text = ('// a comment with a brace {\nnamespace n {\n' + long_class + long_init + short_fn +
             'const char* s = "}{";\n' + long_fn + '}  // namespace n\n')
+    long_sub = ('  pure subroutine long_sub(a)  ! a comment: end subroutine\n' +
+                '    a = a + 1\n' * 160 + '  end subroutine long_sub\n')
+    short_fn = ('  real(rp) function short_f(x) result(y)\n    y = x\n  end function short_f\n')
+    fortran = 'module m\ncontains\n' + short_fn + long_sub + 'end module m\n'
     with tempfile.TemporaryDirectory() as tmp:
         d = pathlib.Path(tmp)
         (d / 'a.cpp').write_text(text)
+        (d / 'b.f90').write_text(fortran)
         over, every = scan(d)
         names = {name: length for _, _, name, length in every}
-        ok = ([o[2] for o in over] == ['long_one'] and names.get('long_one') == 163 and
-              names.get('Short::value') == 4 and len(every) == 2)
+        ok = ([o[2] for o in over] == ['long_one', 'long_sub'] and names.get('long_one') == 163 and
+              names.get('Short::value') == 4 and names.get('long_sub') == 162 and
+              names.get('short_f') == 3 and len(every) == 4)
         if not ok:
             print(f'self-test failed: over {over}, functions {every}')
             return 1
-    print('self-test passed: the long function is found, the class, initialiser and short '
-          'function are not')
+    print('self-test passed: the long C++ function and Fortran subroutine are found, the class, '
+          'initialiser and short functions are not')
     return 0
 
 
