@@ -12,12 +12,12 @@
 module predictor_corrector
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, &
-                          SPH_OK, GEOM_AXISYMMETRIC
+                          SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t, thread_lists
   use omp_team, only: team_work_t, in_team, one_thread, set_open_team
-  use rates, only: compute_rates
+  use rates, only: compute_rates, rates_keep_pairs
   use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
   use state_checks, only: check_domain, fold_into_domain
@@ -112,14 +112,13 @@ contains
       end if
     end if
 
-    ! Planar runs without surface tension or density diffusion on several threads: both
-    ! stages in one parallel region, whose threads run the particle loops of the gather, the
-    ! sweeps, the scatter and the integrator as its orphaned worksharing loops (omp_team.f90,
-    ! in_team), so that a step has the barriers those loops need and no more (libgomp's
-    ! passive waits make each barrier a futex sleep and wake-up).
-    if (.not. one_thread() .and. prm%geometry%kind /= GEOM_AXISYMMETRIC .and. prm%geometry%periodic_z == 0 &
-        .and. .not. prm%surface_tension%sigma > 0.0_rp &
-        .and. .not. prm%numerics%density_diffusion > 0.0_rp) then
+    ! Runs on several threads whose rates sweep keeps no pairs (rates_keep_pairs: planar,
+    ! without surface tension or density diffusion) and not periodic: both stages in one
+    ! parallel region, whose threads run the particle loops of the gather, the sweeps, the
+    ! scatter and the integrator as its orphaned worksharing loops (omp_team.f90, in_team),
+    ! so that a step has the barriers those loops need and no more (libgomp's passive waits
+    ! make each barrier a futex sleep and wake-up).
+    if (.not. one_thread() .and. .not. rates_keep_pairs(prm) .and. prm%geometry%periodic_z == 0) then
       call thread_lists(s)
       !$omp parallel
       call set_open_team(.true.)

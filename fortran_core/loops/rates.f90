@@ -26,7 +26,7 @@ module rates
   use density_diffusion_loops, only: density_diffusion_rates
   implicit none
   private
-  public :: compute_rates, tensile_q
+  public :: compute_rates, tensile_q, rates_keep_pairs
 
   !> Pairs per chunk of the two-pass body (rates_visit).
   integer, parameter :: CHUNK = 128
@@ -64,6 +64,17 @@ contains
     end select
   end function tensile_q
 
+  !> Whether the rates sweep keeps its pairs for the sweeps that follow at the same positions
+  !> (SWEEP_KEEP): the axisymmetric sums, the surface tension passes and the density
+  !> diffusion reuse them. Kept pairs are made outside an open team only (traversal.f90), so
+  !> pc_step opens none for such a run.
+  pure logical function rates_keep_pairs(prm)
+    type(sph_params_t), intent(in) :: prm
+    rates_keep_pairs = prm%surface_tension%sigma > 0.0_rp .or. &
+                       prm%geometry%kind == GEOM_AXISYMMETRIC .or. &
+                       prm%numerics%density_diffusion > 0.0_rp
+  end function rates_keep_pairs
+
   subroutine compute_rates(prm, kern, st, s, vmax)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
@@ -74,7 +85,7 @@ contains
     type(rates_body_t) :: body
     integer :: n, k, i
     real(rp) :: wdp, fdummy
-    logical :: st_on, diffusion_on
+    logical :: st_on
 
     body%h = prm%numerics%h
     body%eta2 = 0.01_rp * prm%numerics%h * prm%numerics%h
@@ -127,9 +138,8 @@ contains
     ! the pairs are kept for the sweeps that follow at the same positions: the axisymmetric
     ! sums and the surface tension passes (surface_tension_loops.f90)
     st_on = prm%surface_tension%sigma > 0.0_rp
-    diffusion_on = prm%numerics%density_diffusion > 0.0_rp
     call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, &
-                    merge(SWEEP_KEEP, SWEEP_FRESH, st_on .or. body%axi_pressure .or. diffusion_on))
+                    merge(SWEEP_KEEP, SWEEP_FRESH, rates_keep_pairs(prm)))
 
     ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
     if (body%axi_pressure) call axisymmetric_rates(prm, kern, s, st%n, kept=.true.)
@@ -137,7 +147,7 @@ contains
     if (st_on) call surface_tension_rates(prm, kern, st, s, kept=.true.)
 
     ! density diffusion, added to the density rates the loops above have set
-    if (diffusion_on) call density_diffusion_rates(prm, kern, s, st%n)
+    if (prm%numerics%density_diffusion > 0.0_rp) call density_diffusion_rates(prm, kern, s)
 
     ! back to particle order (inactive particles get zero rates)
     call scatter_rates(s, st, prm%numerics%xsph_eps)
