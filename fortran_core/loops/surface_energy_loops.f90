@@ -13,7 +13,7 @@ module surface_energy_loops
   use particle_images, only: copy_to_images
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_FLUID, SWEEP_FRESH
   use axisymmetric, only: axis_radius
-  use surface_energy, only: surface_energy_kappa, hessian_times
+  use surface_energy, only: surface_energy_kappa, hessian_times, energy_density, area_eps, read_switch, no_pi
   implicit none
   private
   public :: surface_energy_rates
@@ -26,7 +26,7 @@ module surface_energy_loops
     real(rp), allocatable :: v(:), w(:), gx(:), gz(:), fx(:), fz(:)
     !> sum_a w_a V_a g_a . grad_a W_ak, then the surface tension pi_k / rho_k^2 (pressure units
     !> over rho^2) and the planar masses
-    real(rp), allocatable :: sg(:), pt(:), m(:), tx(:), tz(:), rt(:)
+    real(rp), allocatable :: sg(:), pt(:), m(:), tx(:), tz(:), rt(:), qx(:), qz(:), ph(:)
     real(rp) :: inv_wdp = 0.0_rp
   end type se_work_t
 
@@ -60,17 +60,19 @@ contains
     axi = prm%geometry%kind == GEOM_AXISYMMETRIC
     !$omp critical (surface_energy_kappa_cache)
     if (kind_cached /= kern%kind .or. h_cached /= kern%h .or. dx_cached /= prm%surface_tension%dx) then
-      kappa_cached = surface_energy_kappa(kern, prm%surface_tension%dx)
+      call read_switch()
+      kappa_cached = surface_energy_kappa(kern, prm%surface_tension%dx, area_eps / kern%h)
       kind_cached = kern%kind
       h_cached = kern%h
       dx_cached = prm%surface_tension%dx
     end if
     kap = kappa_cached
     !$omp end critical (surface_energy_kappa_cache)
-    allocate(wk%v(n), wk%w(n), wk%gx(n), wk%gz(n), wk%fx(n), wk%fz(n), wk%sg(n), wk%pt(n), wk%m(n), wk%tx(n), wk%tz(n), wk%rt(n))
+    allocate(wk%v(n), wk%w(n), wk%gx(n), wk%gz(n), wk%fx(n), wk%fz(n), wk%sg(n), wk%pt(n), wk%m(n), wk%tx(n), wk%tz(n), wk%rt(n), wk%qx(n), wk%qz(n), wk%ph(n))
     !$omp parallel do schedule(static)
     do k = 1, n
       wk%v(k) = s%m(k) / s%rho(k)
+      if (no_pi) wk%v(k) = s%m(k) / prm%eos%rho0
       wk%w(k) = 1.0_rp
       if (axi) wk%w(k) = axis_radius(s%x(k), prm%numerics%h)
       wk%gx(k) = 0.0_rp
@@ -93,6 +95,12 @@ contains
       call copy_to_images(s, wk%gx, .true.)
       call copy_to_images(s, wk%gz, .false.)
     end if
+    ! Phi(g) and q = dPhi/dg (image slots included: they have their sources' g)
+    !$omp parallel do schedule(static)
+    do k = 1, n
+      call energy_density(wk%gx(k), wk%gz(k), area_eps / kern%h, wk%ph(k), wk%qx(k), wk%qz(k))
+    end do
+    !$omp end parallel do
     body%pass = PASS_FORCE
     call pair_sweep(s, kern, PAIRS_FLUID, body, red, SWEEP_FRESH)
 
@@ -101,8 +109,7 @@ contains
     ! -sigma kappa_s (w_k |g_k|^2 + 2 sum_a w_a V_a g_a . grad_a W_ak) / w_k, applied as a pressure
     !$omp parallel do schedule(static)
     do k = 1, n
-      wk%pt(k) = -coef * (wk%w(k) * (wk%gx(k)**2 + wk%gz(k)**2) + 2.0_rp * wk%sg(k)) / wk%w(k) &
-                 / s%rho(k)**2
+      wk%pt(k) = -coef * (wk%w(k) * wk%ph(k) + wk%sg(k)) / wk%w(k) / s%rho(k)**2
       wk%rt(k) = 0.2_rp * max(-(s%p(k) / s%rho(k)**2 + wk%pt(k)), 0.0_rp)
     end do
     !$omp end parallel do
@@ -114,16 +121,15 @@ contains
       wk%inv_wdp = 1.0_rp / wdp
     end block
     body%pass = PASS_TENSION
-    call pair_sweep(s, kern, PAIRS_FLUID, body, red, SWEEP_FRESH)
+    if (.not. no_pi) call pair_sweep(s, kern, PAIRS_FLUID, body, red, SWEEP_FRESH)
     !$omp parallel do schedule(static) private(hoop)
     do k = 1, s%n_real
       if (.not. s%fluid(k)) cycle
       hoop = 0.0_rp
       if (axi .and. abs(s%x(k)) > 0.25_rp * prm%numerics%h) &
-        hoop = sign(1.0_rp, s%x(k)) * (wk%gx(k)**2 + wk%gz(k)**2)
-      s%rate(R_AX, k) = s%rate(R_AX, k) + coef / (s%rho(k) * wk%w(k)) * (2.0_rp * wk%fx(k) - hoop) &
-                        + wk%tx(k)
-      s%rate(R_AZ, k) = s%rate(R_AZ, k) + coef / (s%rho(k) * wk%w(k)) * (2.0_rp * wk%fz(k)) + wk%tz(k)
+        hoop = sign(1.0_rp, s%x(k)) * wk%ph(k)
+      s%rate(R_AX, k) = s%rate(R_AX, k) + coef / (s%rho(k) * wk%w(k)) * (wk%fx(k) - hoop) + wk%tx(k)
+      s%rate(R_AZ, k) = s%rate(R_AZ, k) + coef / (s%rho(k) * wk%w(k)) * wk%fz(k) + wk%tz(k)
     end do
     !$omp end parallel do
   end subroutine surface_energy_rates
@@ -149,16 +155,16 @@ contains
           a = pl%a(p)
           b = pl%b(p)
           d2 = kernel_d2(self%kern, sqrt(pl%r2(p)))
-          ux = wk%w(a) * wk%gx(a) - wk%w(b) * wk%gx(b)
-          uz = wk%w(a) * wk%gz(a) - wk%w(b) * wk%gz(b)
+          ux = wk%w(a) * wk%qx(a) - wk%w(b) * wk%qx(b)
+          uz = wk%w(a) * wk%qz(a) - wk%w(b) * wk%qz(b)
           call hessian_times(pl%f(p), d2, pl%dx(p), pl%dz(p), pl%r2(p), ux, uz, hx, hz)
           wk%fx(a) = wk%fx(a) - wk%v(b) * hx
           wk%fz(a) = wk%fz(a) - wk%v(b) * hz
           wk%fx(b) = wk%fx(b) + wk%v(a) * hx
           wk%fz(b) = wk%fz(b) + wk%v(a) * hz
           ! grad_a W_ab = F (x_a - x_b): s_b gets a's term, s_a b's
-          wk%sg(b) = wk%sg(b) + wk%w(a) * wk%v(a) * pl%f(p) * (wk%gx(a) * pl%dx(p) + wk%gz(a) * pl%dz(p))
-          wk%sg(a) = wk%sg(a) - wk%w(b) * wk%v(b) * pl%f(p) * (wk%gx(b) * pl%dx(p) + wk%gz(b) * pl%dz(p))
+          wk%sg(b) = wk%sg(b) + wk%w(a) * wk%v(a) * pl%f(p) * (wk%qx(a) * pl%dx(p) + wk%qz(a) * pl%dz(p))
+          wk%sg(a) = wk%sg(a) - wk%w(b) * wk%v(b) * pl%f(p) * (wk%qx(b) * pl%dx(p) + wk%qz(b) * pl%dz(p))
         end do
       else   ! the tension's pressure pair, in the force sums f (accelerations)
         do p = 1, pl%n

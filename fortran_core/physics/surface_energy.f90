@@ -19,17 +19,19 @@ module surface_energy
   use sphjet_kernels, only: kernel_t, kernel_eval
   implicit none
   private
-  public :: surface_energy_kappa, hessian_times
+  public :: surface_energy_kappa, hessian_times, energy_density, area_eps, read_switch, no_pi
+  logical, save :: no_pi = .false.
+  real(rp), save :: area_eps = -1.0_rp   ! experiment: < 0 gradient energy, else eps h of the area form
 
 contains
 
   !> kappa_s [m]: 1 / (dx sum_j |g_j|^2) over the rows j of a flat free surface of the square
   !> lattice of spacing dx (rows at depth j dx, j >= 0, every column filled), so that the energy
   !> per unit length of that surface is sigma.
-  function surface_energy_kappa(kern, dx) result(kappa)
+  function surface_energy_kappa(kern, dx, eps) result(kappa)
     type(kernel_t), intent(in) :: kern
-    real(rp), intent(in) :: dx
-    real(rp) :: kappa, gz, r, w, f, total
+    real(rp), intent(in) :: dx, eps
+    real(rp) :: kappa, gz, r, w, f, total, ph, qx, qz
     integer :: nr, i, j, k
     nr = ceiling(2.0_rp * kern%h / dx) + 1
     total = 0.0_rp
@@ -44,10 +46,37 @@ contains
           gz = gz + dx * dx * f * real(k - j, rp) * dx   ! z_a - z_b = (k - j) dx
         end do
       end do
-      total = total + gz * gz   ! the x part cancels by symmetry
+      call energy_density(0.0_rp, gz, eps, ph, qx, qz)
+      total = total + ph   ! the x part cancels by symmetry
     end do
     kappa = 1.0_rp / (dx * total)
   end function surface_energy_kappa
+
+  subroutine read_switch()
+    character(len=32) :: v
+    integer :: st
+    call get_environment_variable("SPHJET_SE_AREA", v, status=st)
+    if (st == 0) read(v, *) area_eps
+    call get_environment_variable("SPHJET_SE_NOPI", v, status=st)
+    no_pi = st == 0
+  end subroutine read_switch
+
+  !> Phi(g) and q = dPhi/dg: |g|^2 and 2 g (eps < 0), or sqrt(|g|^2 + eps^2) - eps and g / sqrt(..).
+  pure subroutine energy_density(gx, gz, eps, ph, qx, qz)
+    real(rp), intent(in) :: gx, gz, eps
+    real(rp), intent(out) :: ph, qx, qz
+    real(rp) :: r
+    if (eps < 0.0_rp) then
+      ph = gx * gx + gz * gz
+      qx = 2.0_rp * gx
+      qz = 2.0_rp * gz
+    else
+      r = sqrt(gx * gx + gz * gz + eps * eps)
+      ph = r - eps
+      qx = gx / r
+      qz = gz / r
+    end if
+  end subroutine energy_density
 
   !> H u, H = F I + (W'' - F) e e^T the Hessian of W at the separation (dx, dz) (r^2 = r2, e its
   !> unit vector, F = (dW/dr)/r, d2 = d^2W/dr^2).
