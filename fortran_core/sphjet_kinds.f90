@@ -29,7 +29,6 @@ module sphjet_kinds
   integer(ip), parameter, public :: AXIS_PAIR_SMOOTHED_RADIUS = 0, AXIS_PAIR_RINGS = 1  !< %axis_pair
   integer(ip), parameter, public :: RINGS_CURVATURE_MEAN = 0, RINGS_CURVATURE_OWN = 1  !< %rings_curvature
   integer(ip), parameter, public :: CURV_NORMALS_ALL = 0, CURV_NORMALS_BAND = 1  !< %curvature_normals
-  integer(ip), parameter, public :: ST_MODEL_CSF = 0, ST_MODEL_ENERGY = 1  !< %surface_tension%model
   integer(ip), parameter, public :: KIND_FIXED_BOUNDARY = 0, KIND_MOVING_BOUNDARY = 1, &
                                     KIND_FLUID = 2
 end module sphjet_kinds

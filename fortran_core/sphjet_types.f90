@@ -71,8 +71,6 @@ module sphjet_types
     integer(c_int) :: rings_curvature = 0    !< rings pair's surface rows: 0 neighbours' mean, 1 own
     integer(c_int) :: curvature_normals = 0  !< free-surface curvature's normals: 0 all, 1 within h
     real(c_double) :: sigma = 0.0_rp         !< surface tension [N/m]; 0 = off
-    integer(c_int) :: model = 0              !< 0 CSF (paper), 1 surface energy
-    real(c_double) :: dx = 0.0_rp            !< lattice spacing of the energy's calibration [m]
   end type sph_surface_tension_t
 
   !> Driven nozzle (C struct sph_nozzle_t).

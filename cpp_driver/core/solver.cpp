@@ -69,8 +69,6 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.surface_tension.rings_curvature = static_cast<int>(p.rings_curvature);
     c.surface_tension.curvature_normals = static_cast<int>(p.curvature_normals);
     c.surface_tension.sigma = p.sigma;
-    c.surface_tension.model = static_cast<int>(p.st_model);
-    c.surface_tension.dx = p.dx;
 
     c.nozzle.u = p.drive_u;
     c.nozzle.x0 = p.drive_x0;

@@ -182,13 +182,6 @@ const Param kParams[] = {
      .member = member<&SimParams::sigma>(), .range = kNonNegative, .def = "0 (off)",
      .doc = "surface tension coefficient, CSF (Morris 2000)", .legacy = "(none: legacy has no surface tension)",
      .echo = "N/m, CSF (Morris 2000); 0 = off"},
-    {.key = "surface_tension.model", .attr = "st_model", .type = K::String, .member = member<&SimParams::st_model>(),
-     .choices = names<SurfaceTensionModel>(), .def = "csf",
-     .doc = "the surface tension force: the paper's CSF, or minus the gradient of a surface energy",
-     .legacy = "(none)",
-     .echo = "{choices} (csf: paper eqs 14-24; energy: a pair force from a surface energy, cannot feed a "
-             "disturbance)",
-     .h5_optional = true},
     {.key = "surface_tension.delta", .attr = "st_delta", .type = K::String, .member = member<&SimParams::st_delta>(),
      .choices = names<SurfaceTensionDelta>(), .doc = "the delta of the CSF force", .legacy = "(none)",
      .echo = "{choices} (pressure_consistent: free surface, right Laplace jump; colour_gradient: paper eq 24 as "

@@ -39,10 +39,6 @@ enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 // every particle that passes the normal filter (the default), or only those within h of the surface
 // (depth from the colour), whose normals follow the surface's shape (physics/surface_tension.f90).
 enum class CurvatureNormals : int { All = 0, SurfaceBand = 1 };
-// The surface tension force (core: sph_params_t::surface_tension.model): the paper's CSF force
-// (eqs 14-24) or minus the gradient of a discrete surface energy, a pair force that cannot feed a
-// disturbance (fortran_core/physics/surface_energy.f90).
-enum class SurfaceTensionModel : int { Csf = 0, Energy = 1 };
 
 // The case file's name of each value of an enum, written once: the modern reader accepts these
 // (through kChoicesOf in model/case_params.hpp), and to_string, the case echo, the HDF5
@@ -108,11 +104,6 @@ template <>
 struct EnumNames<CurvatureNormals> {
     static constexpr NameTable<CurvatureNormals, 2> list{
         {{"all", CurvatureNormals::All}, {"surface_band", CurvatureNormals::SurfaceBand}}};
-};
-template <>
-struct EnumNames<SurfaceTensionModel> {
-    static constexpr NameTable<SurfaceTensionModel, 2> list{
-        {{"csf", SurfaceTensionModel::Csf}, {"energy", SurfaceTensionModel::Energy}}};
 };
 
 template <class E>
@@ -211,8 +202,6 @@ struct SimParams {
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
     // The normals of the free-surface curvature (case key surface_tension.curvature_normals).
     CurvatureNormals curvature_normals = CurvatureNormals::All;
-    // The surface tension force (case key surface_tension.model).
-    SurfaceTensionModel st_model = SurfaceTensionModel::Csf;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -82,8 +82,6 @@ typedef struct sph_surface_tension_t {
     int rings_curvature;      /* rings pair's surface rows: 0 neighbours' mean, 1 own */
     int curvature_normals;    /* free-surface curvature's normals: 0 all, 1 within h of the surface */
     double sigma;             /* surface tension [N/m]; 0 = off */
-    int model;                /* 0 CSF (paper), 1 surface energy */
-    double dx;                /* lattice spacing of the energy's calibration [m] */
 } sph_surface_tension_t;
 
 typedef struct sph_nozzle_t {

@@ -4,7 +4,7 @@ module kernel_cubic
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: cubic_norm, cubic_f, cubic_dfdq, cubic_d2fdq2
+  public :: cubic_norm, cubic_f, cubic_dfdq
 
   real(rp), parameter :: cubic_norm = 10.0_rp / (7.0_rp * pi)
 
@@ -33,18 +33,5 @@ contains
       df = 0.0_rp
     end if
   end function cubic_dfdq
-
-  pure elemental function cubic_d2fdq2(q) result(d2)
-    real(rp), intent(in) :: q
-    real(rp) :: d2
-    if (q < 1.0_rp) then
-      d2 = -3.0_rp + 4.5_rp * q
-    else if (q < 2.0_rp) then
-      d2 = 1.5_rp * (2.0_rp - q)
-    else
-      d2 = 0.0_rp
-    end if
-  end function cubic_d2fdq2
-
 
 end module kernel_cubic

@@ -4,7 +4,7 @@ module kernel_gaussian
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: gaussian_norm, gaussian_f, gaussian_dfdq, gaussian_d2fdq2
+  public :: gaussian_norm, gaussian_f, gaussian_dfdq
 
   real(rp), parameter :: gaussian_norm = 1.0_rp / pi
 
@@ -21,12 +21,5 @@ contains
     real(rp) :: df
     df = merge(-2.0_rp * q * exp(-q * q), 0.0_rp, q < 2.0_rp)
   end function gaussian_dfdq
-
-  pure elemental function gaussian_d2fdq2(q) result(d2)
-    real(rp), intent(in) :: q
-    real(rp) :: d2
-    d2 = merge((4.0_rp * q * q - 2.0_rp) * exp(-q * q), 0.0_rp, q < 2.0_rp)
-  end function gaussian_d2fdq2
-
 
 end module kernel_gaussian

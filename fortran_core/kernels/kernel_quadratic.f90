@@ -3,7 +3,7 @@ module kernel_quadratic
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: quadratic_norm, quadratic_f, quadratic_dfdq, quadratic_d2fdq2
+  public :: quadratic_norm, quadratic_f, quadratic_dfdq
 
   real(rp), parameter :: quadratic_norm = 3.0_rp / (2.0_rp * pi)
 
@@ -20,12 +20,5 @@ contains
     real(rp) :: df
     df = -max(1.0_rp - 0.5_rp * q, 0.0_rp)
   end function quadratic_dfdq
-
-  pure elemental function quadratic_d2fdq2(q) result(d2)
-    real(rp), intent(in) :: q
-    real(rp) :: d2
-    d2 = merge(0.5_rp, 0.0_rp, q < 2.0_rp)
-  end function quadratic_d2fdq2
-
 
 end module kernel_quadratic

@@ -6,7 +6,7 @@ module kernel_wendland
   use sphjet_kinds, only: rp, pi
   implicit none
   private
-  public :: wendland_norm, wendland_f, wendland_dfdq_q, wendland_d2fdq2
+  public :: wendland_norm, wendland_f, wendland_dfdq_q
 
   real(rp), parameter :: wendland_norm = 7.0_rp / (4.0_rp * pi)  !< times 1/h^2 in 2D
 
@@ -26,14 +26,5 @@ contains
     t = max(1.0_rp - 0.5_rp * q, 0.0_rp)
     dfq = -5.0_rp * t**3
   end function wendland_dfdq_q
-
-  !> d^2 f / dq^2 = 5 (1 - q/2)^2 (2q - 1): W'' = norm/h^4 times this.
-  pure elemental function wendland_d2fdq2(q) result(d2)
-    real(rp), intent(in) :: q
-    real(rp) :: d2, t
-    t = max(1.0_rp - 0.5_rp * q, 0.0_rp)
-    d2 = 5.0_rp * t * t * (2.0_rp * q - 1.0_rp)
-  end function wendland_d2fdq2
-
 
 end module kernel_wendland

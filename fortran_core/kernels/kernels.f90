@@ -3,14 +3,14 @@
 !> grad_a W_ab = F (r_a - r_b).
 module sphjet_kernels
   use sphjet_kinds, only: rp, ip, KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_WENDLAND
-  use kernel_wendland, only: wendland_norm, wendland_f, wendland_dfdq_q, wendland_d2fdq2
-  use kernel_cubic, only: cubic_norm, cubic_f, cubic_dfdq, cubic_d2fdq2
-  use kernel_quadratic, only: quadratic_norm, quadratic_f, quadratic_dfdq, quadratic_d2fdq2
-  use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq, gaussian_d2fdq2
+  use kernel_wendland, only: wendland_norm, wendland_f, wendland_dfdq_q
+  use kernel_cubic, only: cubic_norm, cubic_f, cubic_dfdq
+  use kernel_quadratic, only: quadratic_norm, quadratic_f, quadratic_dfdq
+  use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq
   implicit none
   private
   public :: kernel_t, kernel_setup, kernel_eval, kernel_eval_list, kernel_w0, kernel_valid, &
-            kernel_profile, kernel_d2
+            kernel_profile
 
   type :: kernel_t
     integer(ip) :: kind = KERNEL_WENDLAND
@@ -109,21 +109,6 @@ contains
       end do
     end select
   end subroutine kernel_eval_list
-
-  !> The kernel's second derivative d^2W/dr^2 at distance r (0 beyond 2h): with F it gives the
-  !> Hessian of W_ab, F I + (W'' - F) e e^T (e the unit separation).
-  pure function kernel_d2(k, r) result(d2)
-    type(kernel_t), intent(in) :: k
-    real(rp), intent(in) :: r
-    real(rp) :: d2, q
-    q = r * k%inv_h
-    select case (k%kind)
-    case (KERNEL_WENDLAND);  d2 = k%adq * wendland_d2fdq2(q)
-    case (KERNEL_CUBIC);     d2 = k%adq * cubic_d2fdq2(q)
-    case (KERNEL_QUADRATIC); d2 = k%adq * quadratic_d2fdq2(q)
-    case default;            d2 = k%adq * gaussian_d2fdq2(q)
-    end select
-  end function kernel_d2
 
   !> W(0), the self contribution of summation formulas.
   pure function kernel_w0(k) result(w0)

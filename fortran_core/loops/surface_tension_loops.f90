@@ -27,10 +27,9 @@
 !> colour is 6% high on the lattice row next to the axis, where a sphere's poles are.
 module surface_tension_loops
   use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC, AXIS_PAIR_RINGS, &
-                          RINGS_CURVATURE_MEAN, CURV_NORMALS_BAND, ST_MODEL_ENERGY
+                          RINGS_CURVATURE_MEAN, CURV_NORMALS_BAND
   use axisymmetric, only: azimuthal_curvature, mass_per_radian, axis_detection_factor
   use axisymmetric_loops, only: axis_weights_of
-  use surface_energy_loops, only: surface_energy_rates
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, R_AX, R_AZ
@@ -143,26 +142,6 @@ contains
     type(state_t), intent(inout) :: st
     type(sorted_t), intent(inout), target :: s
     logical, intent(in), optional :: kept
-    type(sph_params_t) :: fields_only
-    if (prm%surface_tension%model == ST_MODEL_ENERGY) then
-      ! the surface-energy force (surface_energy_loops.f90); the CSF passes give the fields only
-      if (prm%surface_tension%sigma > 0.0_rp) call surface_energy_rates(prm, kern, s)
-      if (.not. associated(st%colour)) return
-      fields_only = prm
-      fields_only%surface_tension%sigma = 0.0_rp
-      call csf_rates(fields_only, kern, st, s, kept)
-    else
-      call csf_rates(prm, kern, st, s, kept)
-    end if
-  end subroutine surface_tension_rates
-
-  !> surface_tension_rates with the CSF force (model "csf"; with sigma = 0, the fields only).
-  subroutine csf_rates(prm, kern, st, s, kept)
-    type(sph_params_t), intent(in) :: prm
-    type(kernel_t), intent(in) :: kern
-    type(state_t), intent(inout) :: st
-    type(sorted_t), intent(inout), target :: s
-    logical, intent(in), optional :: kept
     type(csf_work_t), target :: wk
     real(rp) :: w0, eps
     real(rp), allocatable, target :: kappa(:)
@@ -268,7 +247,7 @@ contains
 
     call fields_to_particles(st, s, wk, kappa)
 
-  end subroutine csf_rates
+  end subroutine surface_tension_rates
 
   !> The rings pair (surface_tension.rings_curvature = "neighbour_mean"): the force of every
   !> weighted row with the weighted mean curvature of its neighbours, kappa_a = sum_b w_b
