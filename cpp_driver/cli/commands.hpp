@@ -16,5 +16,6 @@ void register_analyse(CLI::App& app);
 void register_convert(CLI::App& app);
 void register_drop(CLI::App& app);
 void register_keys(CLI::App& app);
+void register_modes(CLI::App& app);
 
 }  // namespace sphjet::cli

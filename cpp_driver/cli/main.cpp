@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
     sphjet::cli::register_convert(app);
     sphjet::cli::register_drop(app);
     sphjet::cli::register_keys(app);
+    sphjet::cli::register_modes(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

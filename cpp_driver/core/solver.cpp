@@ -288,6 +288,12 @@ double Solver::compute_rates() {
     return vmax;
 }
 
+double Solver::rates_of_edited_state() {
+    const int status = sph_eos(&prm_, static_cast<int64_t>(ps_.size()), ps_.rho.data(), ps_.p.data(), c_.data());
+    if (status != SPH_OK) fail(status, -1, "equation of state");
+    return compute_rates();
+}
+
 void Solver::set_list_positions(const std::vector<double>& x, const std::vector<double>& z) {
     if (x.size() != list_x_.size() || z.size() != list_z_.size()) return;
     std::copy(x.begin(), x.end(), list_x_.begin());

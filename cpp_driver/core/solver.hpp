@@ -52,12 +52,20 @@ public:
     std::size_t deactivate(const std::vector<std::size_t>& indices);
     // Pair rates at the current state (tests and diagnostics); returns max visc term.
     double compute_rates();
+    // Diagnostics (core/linear_modes.cpp): the particles to edit in place, then
+    // rates_of_edited_state() for the rates of the edited state, with pressure and sound speed
+    // from its densities (Tait); returns max visc term.
+    [[nodiscard]] ParticleSet& particles_to_edit() { return ps_; }
+    double rates_of_edited_state();
 
     [[nodiscard]] const ParticleSet& particles() const { return ps_; }
     [[nodiscard]] const std::vector<double>& sound_speed() const { return c_; }
     [[nodiscard]] const std::vector<double>& ax() const { return ax_; }
     [[nodiscard]] const std::vector<double>& az() const { return az_; }
     [[nodiscard]] const std::vector<double>& ar() const { return ar_; }
+    // The XSPH velocity correction of the last rates (dx/dt = u + xsph_u).
+    [[nodiscard]] const std::vector<double>& xsph_u() const { return xu_; }
+    [[nodiscard]] const std::vector<double>& xsph_w() const { return xw_; }
     // Surface-tension fields (empty when sigma = 0).
     [[nodiscard]] const std::vector<double>& colour() const { return colour_; }
     [[nodiscard]] const std::vector<double>& st_nx() const { return st_nx_; }
