@@ -29,6 +29,7 @@ module sphjet_kinds
   integer(ip), parameter, public :: AXIS_PAIR_SMOOTHED_RADIUS = 0, AXIS_PAIR_RINGS = 1  !< %axis_pair
   integer(ip), parameter, public :: RINGS_CURVATURE_MEAN = 0, RINGS_CURVATURE_OWN = 1  !< %rings_curvature
   integer(ip), parameter, public :: CURV_NORMALS_ALL = 0, CURV_NORMALS_BAND = 1  !< %curvature_normals
+  integer(ip), parameter, public :: CURVATURE_NORMALS = 0, CURVATURE_SURFACE_FIT = 1  !< %curvature
   integer(ip), parameter, public :: KIND_FIXED_BOUNDARY = 0, KIND_MOVING_BOUNDARY = 1, &
                                     KIND_FLUID = 2
 end module sphjet_kinds

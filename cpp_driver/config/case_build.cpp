@@ -325,6 +325,15 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
         p.curvature_normals = static_cast<CurvatureNormals>(
             choose_from<std::int64_t>(*f, find_param("surface_tension.curvature_normals")->choices));
     }
+    if (auto f = st.string("curvature")) {
+        if (p.st_delta != SurfaceTensionDelta::PressureConsistent)
+            throw InputError(ctx.where(st.key_path("curvature")),
+                             "surface_tension.curvature chooses the free-surface curvature",
+                             "surface_tension.delta = \"pressure_consistent\"",
+                             "surface_tension.delta = \"" + to_string(p.st_delta) + "\"");
+        p.curvature = static_cast<CurvatureModel>(
+            choose_from<std::int64_t>(*f, find_param("surface_tension.curvature")->choices));
+    }
 }
 
 // [[obstacle]], [[wall]] and [gate]: boundary particles in the box.

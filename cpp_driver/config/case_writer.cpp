@@ -158,6 +158,8 @@ std::string custom_line(const Param& r, const CaseSpec& spec, const EchoFlags& e
         return line(key, value_of(r, &p), comment_of(r));
     if (k == "surface_tension.curvature_normals" && p.curvature_normals != CurvatureNormals::All)
         return line(key, value_of(r, &p), comment_of(r));
+    if (k == "surface_tension.curvature" && p.curvature != CurvatureModel::Normals)
+        return line(key, value_of(r, &p), comment_of(r));
     if (k == "domain.axis_pair" && p.geometry == Geometry::Axisymmetric) return line(key, value_of(r, &p), comment_of(r));
     if (k == "resolution.h") {
         const double diag = std::sqrt(p.dx * p.dx + p.dz * p.dz);

@@ -201,6 +201,14 @@ const Param kParams[] = {
      .legacy = "(none)",
      .echo = "{choices} (surface_band: only the normals within h of the surface; for h = 2 dx)",
      .hand = kRead | kEcho, .h5_optional = true},
+    {.key = "surface_tension.curvature", .attr = "curvature", .type = K::String,
+     .member = member<&SimParams::curvature>(), .choices = names<CurvatureModel>(),
+     .allowed = "needs `delta = \"pressure_consistent\"`",
+     .doc = "the free-surface curvature: the divergence of the unit normals, or a parabola fitted to the "
+            "particles within h of the surface",
+     .legacy = "(none)",
+     .echo = "{choices} (surface_fit: a curve through the surface particles; no particle-scale waves grow)",
+     .hand = kRead | kEcho, .h5_optional = true},
 
     // [gravity]
     {.key = "gravity.gx", .attr = "gx", .type = K::Float, .unit = "m/s^2", .member = member<&SimParams::gx>(),

@@ -39,6 +39,11 @@ enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 // every particle that passes the normal filter (the default), or only those within h of the surface
 // (depth from the colour), whose normals follow the surface's shape (physics/surface_tension.f90).
 enum class CurvatureNormals : int { All = 0, SurfaceBand = 1 };
+// The free-surface curvature (core: sph_params_t::surface_tension.curvature; surface_tension.delta =
+// "pressure_consistent"): the divergence of the unit normals (the default), or the curvature of a
+// parabola fitted to the positions of the particles within h of the surface, which does not change
+// when they slide along it (physics/surface_tension.f90, cases/round_jet/README.md).
+enum class CurvatureModel : int { Normals = 0, SurfaceFit = 1 };
 
 // The case file's name of each value of an enum, written once: the modern reader accepts these
 // (through kChoicesOf in model/case_params.hpp), and to_string, the case echo, the HDF5
@@ -104,6 +109,11 @@ template <>
 struct EnumNames<CurvatureNormals> {
     static constexpr NameTable<CurvatureNormals, 2> list{
         {{"all", CurvatureNormals::All}, {"surface_band", CurvatureNormals::SurfaceBand}}};
+};
+template <>
+struct EnumNames<CurvatureModel> {
+    static constexpr NameTable<CurvatureModel, 2> list{
+        {{"normals", CurvatureModel::Normals}, {"surface_fit", CurvatureModel::SurfaceFit}}};
 };
 
 template <class E>
@@ -202,6 +212,8 @@ struct SimParams {
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
     // The normals of the free-surface curvature (case key surface_tension.curvature_normals).
     CurvatureNormals curvature_normals = CurvatureNormals::All;
+    // The free-surface curvature (case key surface_tension.curvature).
+    CurvatureModel curvature = CurvatureModel::Normals;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

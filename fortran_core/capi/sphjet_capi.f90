@@ -10,7 +10,8 @@ module sphjet_capi
                           VISC_LAMINAR, FILTER_NONE, FILTER_MLS, KIND_FLUID, &
                           GEOM_PLANAR, GEOM_AXISYMMETRIC, AXIS_PAIR_SMOOTHED_RADIUS, &
                           AXIS_PAIR_RINGS, RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN, &
-                          CURV_NORMALS_ALL, CURV_NORMALS_BAND
+                          CURV_NORMALS_ALL, CURV_NORMALS_BAND, CURVATURE_NORMALS, &
+                          CURVATURE_SURFACE_FIT
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
   use sorted_state, only: sorted_t, R_AX, R_AZ
@@ -103,6 +104,7 @@ contains
       .and. any(prm%geometry%axis_pair == [AXIS_PAIR_SMOOTHED_RADIUS, AXIS_PAIR_RINGS]) &
       .and. any(prm%surface_tension%rings_curvature == [RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN]) &
       .and. any(prm%surface_tension%curvature_normals == [CURV_NORMALS_ALL, CURV_NORMALS_BAND]) &
+      .and. any(prm%surface_tension%curvature == [CURVATURE_NORMALS, CURVATURE_SURFACE_FIT]) &
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp
     ! a period must hold the images of both ends apart (two kernel supports)
     if (prm%geometry%periodic_z /= 0) params_ok = params_ok .and. &

@@ -27,7 +27,7 @@
 !> colour is 6% high on the lattice row next to the axis, where a sphere's poles are.
 module surface_tension_loops
   use sphjet_kinds, only: rp, KERNEL_WENDLAND, GEOM_AXISYMMETRIC, AXIS_PAIR_RINGS, &
-                          RINGS_CURVATURE_MEAN, CURV_NORMALS_BAND
+                          RINGS_CURVATURE_MEAN, CURV_NORMALS_BAND, CURVATURE_SURFACE_FIT
   use axisymmetric, only: azimuthal_curvature, mass_per_radian, axis_detection_factor
   use axisymmetric_loops, only: axis_weights_of
   use sphjet_types, only: sph_params_t, state_t
@@ -41,7 +41,7 @@ module surface_tension_loops
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
                              csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N, &
-                             DEPTH_FACTOR_MIN, CURV_BAND_H
+                             DEPTH_FACTOR_MIN, CURV_BAND_H, csf_fit_point, csf_fit_curvature, N_FIT
   implicit none
   private
   public :: surface_tension_rates
@@ -74,7 +74,8 @@ module surface_tension_loops
   integer, parameter :: NG_NX = 1, NG_NZ = 2, NG_GX = 3, NG_GZ = 4, N_NG = 4
 
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3, &
-                        PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5, PASS_BAND_CURVATURE = 6
+                        PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5, PASS_BAND_CURVATURE = 6, &
+                        PASS_SURFACE_FIT = 7
 
   !> Flat-surface colour tables C(delta/h) of csf_depth_table, built once per kernel kind
   !> (indexed by the kind; KERNEL_WENDLAND is the largest) on first use.
@@ -100,6 +101,9 @@ module surface_tension_loops
     !> curvature_normals = "surface_band" only: 1 where the particle passes the filter and lies
     !> within CURV_BAND_H h of the surface, else 0 (band_curvature_pairs)
     real(rp), allocatable :: band(:)
+    !> surface_tension.curvature = "surface_fit" only: each particle's least-squares sums of the
+    !> surface fit, fit(1:N_FIT, k) (csf_fit_point)
+    real(rp), allocatable :: fit(:, :)
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -226,8 +230,9 @@ contains
         depth_cached(kern%kind) = .true.
       end if
       !$omp end critical (csf_depth_cache)
-      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND) then
-        ! the normals within CURV_BAND_H h of the surface (physics/surface_tension.f90); the
+      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND .or. &
+          prm%surface_tension%curvature == CURVATURE_SURFACE_FIT) then
+        ! the particles within CURV_BAND_H h of the surface (physics/surface_tension.f90); the
         ! image slots have their sources' colour and filter flag already
         allocate(wk%band(n))
         !$omp parallel do schedule(static)
@@ -237,9 +242,22 @@ contains
                              < CURV_BAND_H * prm%numerics%h)
         end do
         !$omp end parallel do
+      end if
+      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND) then
         call sweep(PASS_BAND_CURVATURE, kern, s, wk, .true., axi)
       else
         call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, .true., axi)
+      end if
+      if (prm%surface_tension%curvature == CURVATURE_SURFACE_FIT) then
+        ! the surface fit through the band's particles; each band particle is its own point
+        allocate(wk%fit(N_FIT, n))
+        !$omp parallel do schedule(static)
+        do k = 1, n
+          wk%fit(:, k) = 0.0_rp
+          wk%fit(1, k) = wk%band(k) * wk%v(k) * w0
+        end do
+        !$omp end parallel do
+        call sweep(PASS_SURFACE_FIT, kern, s, wk, .true., axi)
       end if
     end if
     call in_team(loops, FORCE)
@@ -329,7 +347,8 @@ contains
     class(csf_loops_t), intent(inout) :: self
     integer, intent(in) :: which
     integer :: k, n
-    real(rp) :: kap, ax, az, wt, kin, kaz, depth
+    real(rp) :: kap, ax, az, wt, kin, kaz, depth, nrx, xr, c0
+    logical :: fitted
     n = self%s%n
     associate (prm => self%prm, kern => self%kern, s => self%s, wk => self%wk, &
                kappa => self%kappa, w0 => self%w0, eps => self%eps, axi => self%axi, &
@@ -380,15 +399,26 @@ contains
               kap = kin + wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%numerics%h)
             else   ! each moved from the particle's row to the surface by k / (1 - k delta)
               kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
-              kaz = wk%flag(k) * azimuthal_curvature(wk%nhx(k), s%x(k), kin, prm%numerics%h)
+              nrx = wk%nhx(k)
+              xr = s%x(k)
+              if (allocated(wk%fit)) then   ! the fitted curve's curvature, normal and point
+                call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), kin, nrx, c0, fitted)
+                if (fitted) xr = max(0.0_rp, s%x(k) + c0 * wk%nhx(k))
+              end if
+              kaz = wk%flag(k) * azimuthal_curvature(nrx, xr, kin, prm%numerics%h)
               depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
               kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
             end if
           else if (colour_delta) then   ! eq 23 as printed
             kap = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
           else                     ! free-surface curvature (physics/surface_tension.f90)
-            kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), &
-                                        csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h))
+            depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
+            kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), depth)
+            if (allocated(wk%fit)) then   ! the fitted curve's, moved to the surface
+              kin = kap
+              call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), kin, nrx, c0, fitted)
+              if (fitted) kap = depth_moved(kin, depth)
+            end if
           end if
           kappa(k) = kap
           if (allocated(wk%kown)) then   ! the rings pair: force after surface_mean_pairs
@@ -491,6 +521,9 @@ contains
       case (PASS_CURVATURE)   ! eq 23: numerator and Shepard denominator
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
                              wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
+      case (PASS_SURFACE_FIT)   ! the least-squares sums of the surface fit
+        call surface_fit_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%mixed, wk%flag, wk%band, &
+                               wk%v, wk%nhx, wk%nhz, wk%fit)
       case (PASS_BAND_CURVATURE)   ! numerator, tangential denominator over the surface band
         call band_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%flag, &
                                   wk%band, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
@@ -651,6 +684,27 @@ contains
   !> The free-surface curvature's sums of the fluid pairs of a list with curvature_normals =
   !> "surface_band": as curvature_pairs (tangential denominator), but particle a (flag 1) takes
   !> neighbour b's normal only where b lies in the surface band (band 1), and b a's likewise.
+  !> The surface fit (surface_tension.curvature = "surface_fit"): a flagged particle's sums take
+  !> each band neighbour's position relative to it, in its frame (csf_fit_point), weighted
+  !> V_b W_ab.
+  pure subroutine surface_fit_pairs(np, pa, pb, dx, dz, w, mixed, flag, band, v, nhx, nhz, fit)
+    integer, intent(in) :: np, pa(*), pb(*)
+    real(rp), intent(in) :: dx(*), dz(*), w(*), flag(*), band(*), v(*), nhx(*), nhz(*)
+    logical, intent(in) :: mixed(*)
+    real(rp), intent(inout) :: fit(N_FIT, *)
+    integer :: k, a, b
+    do k = 1, np
+      if (mixed(k)) cycle
+      a = pa(k)
+      b = pb(k)
+      ! dx = x_a - x_b: b lies at -dx from a, a at +dx from b
+      if (flag(a) > 0.0_rp .and. band(b) > 0.0_rp) &
+        call csf_fit_point(v(b) * w(k), -dx(k), -dz(k), nhx(a), nhz(a), fit(:, a))
+      if (flag(b) > 0.0_rp .and. band(a) > 0.0_rp) &
+        call csf_fit_point(v(a) * w(k), dx(k), dz(k), nhx(b), nhz(b), fit(:, b))
+    end do
+  end subroutine surface_fit_pairs
+
   pure subroutine band_curvature_pairs(np, pa, pb, dx, dz, f, mixed, flag, band, v, nhx, nhz, &
                                        num, den)
     integer, intent(in) :: np, pa(*), pb(*)

@@ -42,6 +42,18 @@
 !>              normals in the sums the curvature answered a surface wave sin(kz) (ka = 2.1, every
 !>              row shifted radially) with the wrong sign and 2-6 times the geometric k^2 eta, which
 !>              made a column at rest unstable at about 900 1/s (cases/axisymmetric/README.md).
+!>   surface fit (surface_tension.curvature = "surface_fit"; free-surface curvature only): the
+!>              in-plane curvature of the parabola eta = c0 + c1 s + c2 s^2 fitted by weighted
+!>              least squares (weights V_b W_ab, a itself with V_a W(0) when it is in the band)
+!>              to the positions of the band's particles b in a's frame, s along the tangent
+!>              t_a = (-nhat_z, nhat_x) and eta along nhat_a: kappa = -2 c2 / (1 + c1^2)^(3/2),
+!>              moved to the surface by the depth as above. Axisymmetric: the azimuthal
+!>              curvature takes the fitted curve's normal (nhat_a - c1 t_a, normalised) at the
+!>              fitted point x_a + c0 nhat_a. A curve through the particles does not change
+!>              when they slide along it, where the divergence of their normals does: with the
+!>              normals' divergence a column at rest of a/dx = 5, h = 2 dx grows waves of
+!>              2.2-2.5 h from any disorder at about 300 1/s; with the fit none grows
+!>              (cases/round_jet/README.md).
 !> Sign check: for a 2D disc of radius R, nhat = -e_r, kappa = div nhat = -1/R and
 !> a_s = (sigma / (rho R)) n points inward.
 !> Capillary time-step limit (Brackbill et al. 1992; Morris 2000 eq 39):
@@ -53,6 +65,7 @@ module surface_tension
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
             csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
             csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
+            csf_fit_point, csf_fit_curvature, N_FIT, &
             ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN, CURV_BAND_H
 
   !> Values of sph_params_t%surface_tension%delta (case key surface_tension.delta).
@@ -74,6 +87,11 @@ module surface_tension
   !> Depth of the surface band whose normals enter the free-surface curvature with
   !> curvature_normals = "surface_band", in units of h.
   real(rp), parameter :: CURV_BAND_H = 1.0_rp
+  !> The surface fit's sums per particle (csf_fit_point), and the smallest determinant of its
+  !> normal equations relative to the product of their diagonal's (about 1e-3 for points spread
+  !> evenly over the support; 1e-9 leaves out only fits through fewer than three distinct s).
+  integer, parameter :: N_FIT = 8
+  real(rp), parameter :: FIT_DET_MIN = 1.0e-9_rp
 
 contains
 
@@ -188,6 +206,46 @@ contains
   !> Free-surface curvature from the numerator of eq 23, the tangential denominator tden and the
   !> depth: kappa = num / tden, then kappa / (1 - kappa delta) (the factor kept >= 1/2);
   !> 0 without a valid normal or with a denominator below TANGENTIAL_MIN.
+  !> Adds the point (s, eta) with weight om to a particle's least-squares sums of the surface
+  !> fit: fit = sum om (1, s, s^2, s^3, s^4, eta, eta s, eta s^2). (rx, rz) = the point minus
+  !> the particle; (nx, nz) the particle's unit normal.
+  pure subroutine csf_fit_point(om, rx, rz, nx, nz, fit)
+    real(rp), intent(in) :: om, rx, rz, nx, nz
+    real(rp), intent(inout) :: fit(N_FIT)
+    real(rp) :: s, e
+    s = -rx * nz + rz * nx
+    e = rx * nx + rz * nz
+    fit = fit + om * [1.0_rp, s, s * s, s**3, s**4, e, e * s, e * s * s]
+  end subroutine csf_fit_point
+
+  !> The fitted parabola's in-plane curvature kin and, through nrx, the radial part of its unit
+  !> normal at the fitted point and that point's offset c0 along the normal. ok = .false. (and
+  !> nothing set) when the points do not determine a parabola (fewer than three distinct s).
+  pure subroutine csf_fit_curvature(fit, nx, nz, kin, nrx, c0, ok)
+    real(rp), intent(in) :: fit(N_FIT), nx, nz
+    real(rp), intent(inout) :: kin, nrx, c0
+    logical, intent(out) :: ok
+    real(rp) :: m(3, 3), r(3), det, c1, c2, mx, mz
+    m = reshape([fit(1), fit(2), fit(3), fit(2), fit(3), fit(4), fit(3), fit(4), fit(5)], [3, 3])
+    r = fit(6:8)
+    det = det3(m(:, 1), m(:, 2), m(:, 3))
+    ok = abs(det) > FIT_DET_MIN * fit(1) * fit(3) * fit(5)
+    if (.not. ok) return
+    c0 = det3(r, m(:, 2), m(:, 3)) / det
+    c1 = det3(m(:, 1), r, m(:, 3)) / det
+    c2 = det3(m(:, 1), m(:, 2), r) / det
+    kin = -2.0_rp * c2 / (1.0_rp + c1 * c1)**1.5_rp
+    mx = nx + c1 * nz      ! nhat - c1 t, t = (-nz, nx)
+    mz = nz - c1 * nx
+    nrx = mx / sqrt(mx * mx + mz * mz)
+  end subroutine csf_fit_curvature
+
+  pure real(rp) function det3(u, v, w)
+    real(rp), intent(in) :: u(3), v(3), w(3)
+    det3 = u(1) * (v(2) * w(3) - v(3) * w(2)) - v(1) * (u(2) * w(3) - u(3) * w(2)) &
+           + w(1) * (u(2) * v(3) - u(3) * v(2))
+  end function det3
+
   pure elemental function csf_surface_curvature(num, tden, flag, delta) result(kappa)
     real(rp), intent(in) :: num, tden, flag, delta
     real(rp) :: kappa
