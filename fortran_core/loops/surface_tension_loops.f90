@@ -41,7 +41,7 @@ module surface_tension_loops
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
                              csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N, &
-                             DEPTH_FACTOR_MIN, CURV_BAND_H, csf_fit_point, csf_fit_curvature, N_FIT
+                             DEPTH_FACTOR_MIN, CURV_BAND_H, csf_fit_point, csf_fit_curvature, N_FIT, FIT_DEPTH
   implicit none
   private
   public :: surface_tension_rates
@@ -251,6 +251,14 @@ contains
       if (prm%surface_tension%curvature == CURVATURE_SURFACE_FIT) then
         ! the surface fit through the band's particles; each band particle is its own point
         allocate(wk%fit(N_FIT, n))
+        ! its points: the particles of the outer row only (physics/surface_tension.f90)
+        !$omp parallel do schedule(static)
+        do k = 1, n
+          wk%band(k) = merge(wk%flag(k), 0.0_rp, &
+                             csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h) &
+                             < FIT_DEPTH * sqrt(wk%v(k)))
+        end do
+        !$omp end parallel do
         !$omp parallel do schedule(static)
         do k = 1, n
           wk%fit(:, k) = 0.0_rp
@@ -401,12 +409,15 @@ contains
               kin = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), 0.0_rp)
               nrx = wk%nhx(k)
               xr = s%x(k)
+              depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
               if (allocated(wk%fit)) then   ! the fitted curve's curvature, normal and point
                 call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), kin, nrx, c0, fitted)
-                if (fitted) xr = max(0.0_rp, s%x(k) + c0 * wk%nhx(k))
+                if (fitted) then   ! the outer row's point nearest to k, at its own depth
+                  xr = max(0.0_rp, s%x(k) + c0 * wk%nhx(k))
+                  depth = max(0.0_rp, depth + c0)
+                end if
               end if
               kaz = wk%flag(k) * azimuthal_curvature(nrx, xr, kin, prm%numerics%h)
-              depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
               kap = depth_moved(kin, depth) + depth_moved(kaz, depth)
             end if
           else if (colour_delta) then   ! eq 23 as printed
@@ -417,7 +428,7 @@ contains
             if (allocated(wk%fit)) then   ! the fitted curve's, moved to the surface
               kin = kap
               call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), kin, nrx, c0, fitted)
-              if (fitted) kap = depth_moved(kin, depth)
+              if (fitted) kap = depth_moved(kin, max(0.0_rp, depth + c0))
             end if
           end if
           kappa(k) = kap

@@ -44,12 +44,13 @@
 !>              made a column at rest unstable at about 900 1/s (cases/axisymmetric/README.md).
 !>   surface fit (surface_tension.curvature = "surface_fit"; free-surface curvature only): the
 !>              in-plane curvature of the parabola eta = c0 + c1 s + c2 s^2 fitted by weighted
-!>              least squares (weights V_b W_ab, a itself with V_a W(0) when it is in the band)
-!>              to the positions of the band's particles b in a's frame, s along the tangent
-!>              t_a = (-nhat_z, nhat_x) and eta along nhat_a: kappa = -2 c2 / (1 + c1^2)^(3/2),
-!>              moved to the surface by the depth as above. Axisymmetric: the azimuthal
-!>              curvature takes the fitted curve's normal (nhat_a - c1 t_a, normalised) at the
-!>              fitted point x_a + c0 nhat_a. A curve through the particles does not change
+!>              least squares (weights V_b W_ab, a itself with V_a W(0) when it is one of them)
+!>              to the positions of the outer row's particles b (depth below FIT_DEPTH sqrt(V_b))
+!>              in a's frame, s along the tangent t_a = (-nhat_z, nhat_x) and eta along nhat_a:
+!>              kappa = -2 c2 / (1 + c1^2)^(3/2) at the fitted point x_a + c0 nhat_a of the outer
+!>              row, moved to the surface by that point's depth, delta_a + c0 (c0 < 0 for a
+!>              particle below the outer row). Axisymmetric: the azimuthal curvature takes the
+!>              fitted curve's normal (nhat_a - c1 t_a, normalised) at the fitted point. A curve through the particles does not change
 !>              when they slide along it, where the divergence of their normals does: with the
 !>              normals' divergence a column at rest of a/dx = 5, h = 2 dx grows waves of
 !>              2.2-2.5 h from any disorder at about 300 1/s; with the fit none grows
@@ -65,7 +66,7 @@ module surface_tension
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
             csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
             csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
-            csf_fit_point, csf_fit_curvature, N_FIT, &
+            csf_fit_point, csf_fit_curvature, N_FIT, FIT_DEPTH, &
             ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN, CURV_BAND_H
 
   !> Values of sph_params_t%surface_tension%delta (case key surface_tension.delta).
@@ -92,6 +93,13 @@ module surface_tension
   !> evenly over the support; 1e-9 leaves out only fits through fewer than three distinct s).
   integer, parameter :: N_FIT = 8
   real(rp), parameter :: FIT_DET_MIN = 1.0e-9_rp
+  !> The surface fit's points: the particles whose depth (csf_depth) is below FIT_DEPTH times their
+  !> own spacing sqrt(V): the outer row, whose depth from the colour is about half a spacing (the
+  !> next row's about 1.5). With the next row in the fit too, its points and the outer row's, at
+  !> an offset, bend the parabola wherever the two rows' particles are spread unevenly along the
+  !> surface (SurfaceFitIgnoresSlidingAlongTheSurface: kappa r_s sd 0.52 instead of 0.003 at
+  !> h = 2 dx).
+  real(rp), parameter :: FIT_DEPTH = 1.0_rp
 
 contains
 

@@ -162,6 +162,7 @@ void expect_same(const CaseSpec& a, const CaseSpec& b) {
     EXPECT_EQ(p.axis_pair, q.axis_pair);
     EXPECT_EQ(p.rings_curvature, q.rings_curvature);
     EXPECT_EQ(p.curvature_normals, q.curvature_normals);
+    EXPECT_EQ(p.curvature, q.curvature);
     EXPECT_EQ(p.integrator, q.integrator);
     EXPECT_EQ(p.density_filter, q.density_filter);
     EXPECT_EQ(p.filter_period, q.filter_period);
@@ -387,6 +388,8 @@ TEST(ModernCase, EveryEnumNameIsReadAndWritten) {
                                            [](const CaseSpec& s) { return s.params.rings_curvature; }, rings);
     expect_every_name_read<CurvatureNormals>("surface_tension.curvature_normals",
                                              [](const CaseSpec& s) { return s.params.curvature_normals; });
+    expect_every_name_read<CurvatureModel>("surface_tension.curvature",
+                                           [](const CaseSpec& s) { return s.params.curvature; });
 }
 
 TEST(ModernCase, ReadsFromFileAndRejectsMissingFile) {
@@ -1011,6 +1014,21 @@ TEST(ModernCase, CurvatureNormals) {
     const std::string e = error_of(kMinimal, {"surface_tension.delta=\"colour_gradient\"",
                                               "surface_tension.curvature_normals=\"surface_band\""});
     EXPECT_NE(e.find("surface_tension.curvature_normals"), std::string::npos) << e;
+    EXPECT_NE(e.find("surface_tension.delta = \"pressure_consistent\""), std::string::npos) << e;
+    EXPECT_NE(e.find("found surface_tension.delta = \"colour_gradient\""), std::string::npos) << e;
+}
+
+// surface_tension.curvature (cases/CASE_FORMAT.md): the normals' divergence by default;
+// "surface_fit" read, written back and read again; refused with the colour-gradient delta,
+// naming key, expected and found.
+TEST(ModernCase, CurvatureModel) {
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.curvature, CurvatureModel::Normals);
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", {"surface_tension.curvature=\"surface_fit\""});
+    EXPECT_EQ(s.params.curvature, CurvatureModel::SurfaceFit);
+    expect_round_trip(s);
+    const std::string e = error_of(kMinimal, {"surface_tension.delta=\"colour_gradient\"",
+                                              "surface_tension.curvature=\"surface_fit\""});
+    EXPECT_NE(e.find("surface_tension.curvature"), std::string::npos) << e;
     EXPECT_NE(e.find("surface_tension.delta = \"pressure_consistent\""), std::string::npos) << e;
     EXPECT_NE(e.find("found surface_tension.delta = \"colour_gradient\""), std::string::npos) << e;
 }
