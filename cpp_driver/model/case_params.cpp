@@ -205,7 +205,7 @@ const Param kParams[] = {
      .member = member<&SimParams::curvature>(), .choices = names<CurvatureModel>(),
      .allowed = "needs `delta = \"pressure_consistent\"`",
      .doc = "the free-surface curvature: the divergence of the unit normals, or a parabola fitted to the "
-            "particles within h of the surface",
+            "outer row of particles",
      .legacy = "(none)",
      .echo = "{choices} (surface_fit: a curve through the surface particles; no particle-scale waves grow)",
      .hand = kRead | kEcho, .h5_optional = true},

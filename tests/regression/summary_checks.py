@@ -105,3 +105,16 @@ def check(s, expect, show, regress=()):
         print(f"  {k} = {s.get(k)}")
     print(f"{ok} passed, {bad} failed")
     return 0 if bad == 0 else 1
+
+
+def check_output_of(cmd, expect, show, regress=()):
+    """Runs cmd, prints the end of its output and checks the numbers of its SUMMARY line
+    (check). -> exit status (1 when cmd fails or prints no SUMMARY line)."""
+    print("$ " + " ".join(cmd), flush=True)
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    print(r.stdout[-3000:], r.stderr[-2000:])
+    s = summary(r.stdout)
+    if r.returncode != 0 or s is None:
+        print(f"0 passed, {len(expect) + len(regress)} failed")
+        return 1
+    return check(s, expect, show, regress)

@@ -18,7 +18,6 @@ cases/axisymmetric/README.md.
 """
 import argparse
 import os
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -26,7 +25,7 @@ TOOL = os.path.join(HERE, "..", "..", "..", "tools", "axisymmetric.py")
 
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import check, run_case, summary  # noqa: E402  (tests/regression/)
+from summary_checks import check_output_of, run_case  # noqa: E402  (tests/regression/)
 
 
 def main():
@@ -49,16 +48,7 @@ def main():
     # runs this script may not
     py = os.environ.get("SPHJET_ANALYSIS_PYTHON",
                         "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable)
-    acmd = [py, TOOL, a.analyse, a.out] + a.args
-    print("$ " + " ".join(acmd), flush=True)
-    r = subprocess.run(acmd, capture_output=True, text=True)
-    print(r.stdout[-3000:], r.stderr[-2000:])
-    s = summary(r.stdout)
-    if r.returncode != 0 or s is None:
-        print(f"0 passed, {len(a.expect) + len(a.regress)} failed")
-        return 1
-    return check(s, a.expect, a.show, a.regress)
-
+    return check_output_of([py, TOOL, a.analyse, a.out] + a.args, a.expect, a.show, a.regress)
 
 if __name__ == "__main__":
     sys.exit(main())

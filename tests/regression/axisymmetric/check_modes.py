@@ -12,11 +12,10 @@ and the reason for each tolerance are in the CMakeLists.txt that calls this scri
 """
 import argparse
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import check, summary  # noqa: E402  (tests/regression/)
+from summary_checks import check_output_of  # noqa: E402  (tests/regression/)
 
 
 def main():
@@ -28,16 +27,7 @@ def main():
     ap.add_argument("--regress", action="append", default=[], help="KEY:REF:TOL")
     ap.add_argument("--show", action="append", default=[])
     a = ap.parse_args()
-    cmd = [a.sphjet, "modes", a.case] + a.args
-    print("$ " + " ".join(cmd), flush=True)
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    print(r.stdout[-3000:], r.stderr[-2000:])
-    s = summary(r.stdout)
-    if r.returncode != 0 or s is None:
-        print(f"0 passed, {len(a.expect) + len(a.regress)} failed")
-        return 1
-    return check(s, a.expect, a.show, a.regress)
-
+    return check_output_of([a.sphjet, "modes", a.case] + a.args, a.expect, a.show, a.regress)
 
 if __name__ == "__main__":
     sys.exit(main())
