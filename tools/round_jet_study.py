@@ -4,11 +4,11 @@
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--set-name mc paper] [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet]
       [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
-      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own]
+      [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -21,7 +21,9 @@ checks (breakup.remove_drops_below_h, cases/CASE_FORMAT.md), in a study director
 with --axis-pair rings every run uses the rings pair (domain.axis_pair, cases/axisymmetric/
 README.md) instead of the default smoothed-radius pair, likewise in a directory of its own;
 --axis-pair rings_own the rings pair with each surface row's own curvature
-(surface_tension.rings_curvature = "own", cases/round_jet/README.md), in another.
+(surface_tension.rings_curvature = "own", cases/round_jet/README.md), in another;
+--axis-pair rings_fit the rings pair with the surface fit (surface_tension.curvature =
+"surface_fit") and the tensile correction (numerics.tensile_correction = "on"), in another.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -133,7 +135,8 @@ def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
     """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
     = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length;
     axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius pair), or
-    "rings_own": the rings pair with surface_tension.rings_curvature = "own"."""
+    "rings_own": the rings pair with surface_tension.rings_curvature = "own", or "rings_fit": the
+    rings pair with the surface fit and the tensile correction."""
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
@@ -149,6 +152,9 @@ def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
         extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
     if axis_pair == "rings_own":
         extra += ["domain.axis_pair=rings", "surface_tension.rings_curvature=own"]
+    elif axis_pair == "rings_fit":
+        extra += ["domain.axis_pair=rings", "surface_tension.curvature=surface_fit",
+                  "numerics.tensile_correction=on"]
     elif axis_pair is not None:
         extra.append(f"domain.axis_pair={axis_pair}")
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
@@ -333,9 +339,10 @@ def main(argv=None):
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
         p.add_argument("--remove-drops-below-h", dest="remove_h", type=float, default=None, metavar="D",
                        help="remove detached drops with d_eq < D h at the breakup checks (default: keep all)")
-        p.add_argument("--axis-pair", choices=("rings", "rings_own"), default=None,
+        p.add_argument("--axis-pair", choices=("rings", "rings_own", "rings_fit"), default=None,
                        help="the rings pair (domain.axis_pair) in every run, rings_own with its surface "
-                            "rows' own curvature (default: the smoothed-radius pair)")
+                            "rows' own curvature, rings_fit with the surface fit and the tensile "
+                            "correction (default: the smoothed-radius pair)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

@@ -135,6 +135,13 @@ def main():
                            capture_output=True, text=True)
         check("domain.axis_pair=rings" in p.stdout and "surface_tension.rings_curvature=own" in p.stdout
               and "eps0.01_n10_c8_rings_own" in p.stdout, f"--axis-pair rings_own: {p.stdout}")
+        # --axis-pair rings_fit: the rings pair with the surface fit and the tensile correction
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--axis-pair", "rings_fit", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("domain.axis_pair=rings" in p.stdout and "surface_tension.curvature=surface_fit" in p.stdout
+              and "numerics.tensile_correction=on" in p.stdout and "eps0.01_n10_c8_rings_fit" in p.stdout,
+              f"--axis-pair rings_fit: {p.stdout}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
         check(p.returncode == 2 and "--size-c" in p.stderr, f"--size-c 0: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)
