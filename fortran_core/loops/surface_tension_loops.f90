@@ -101,9 +101,10 @@ module surface_tension_loops
     !> curvature_normals = "surface_band" only: 1 where the particle passes the filter and lies
     !> within CURV_BAND_H h of the surface, else 0 (band_curvature_pairs)
     real(rp), allocatable :: band(:)
-    !> surface_tension.curvature = "surface_fit" only: each particle's least-squares sums of the
-    !> surface fit, fit(1:N_FIT, k) (csf_fit_point)
-    real(rp), allocatable :: fit(:, :)
+    !> surface_tension.curvature = "surface_fit" only: 1 where the particle passes the filter and
+    !> lies in the outer row (depth below FIT_DEPTH sqrt(V)), else 0, and each particle's
+    !> least-squares sums of the surface fit, fit(1:N_FIT, k) (csf_fit_point)
+    real(rp), allocatable :: outer(:), fit(:, :)
   end type csf_work_t
 
   !> The CSF pair loop body: which pass, and the per-particle fields it reads and sums into.
@@ -230,9 +231,8 @@ contains
         depth_cached(kern%kind) = .true.
       end if
       !$omp end critical (csf_depth_cache)
-      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND .or. &
-          prm%surface_tension%curvature == CURVATURE_SURFACE_FIT) then
-        ! the particles within CURV_BAND_H h of the surface (physics/surface_tension.f90); the
+      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND) then
+        ! the normals within CURV_BAND_H h of the surface (physics/surface_tension.f90); the
         ! image slots have their sources' colour and filter flag already
         allocate(wk%band(n))
         !$omp parallel do schedule(static)
@@ -242,27 +242,21 @@ contains
                              < CURV_BAND_H * prm%numerics%h)
         end do
         !$omp end parallel do
-      end if
-      if (prm%surface_tension%curvature_normals == CURV_NORMALS_BAND) then
         call sweep(PASS_BAND_CURVATURE, kern, s, wk, .true., axi)
       else
         call sweep(PASS_SURFACE_CURVATURE, kern, s, wk, .true., axi)
       end if
       if (prm%surface_tension%curvature == CURVATURE_SURFACE_FIT) then
-        ! the surface fit through the band's particles; each band particle is its own point
-        allocate(wk%fit(N_FIT, n))
-        ! its points: the particles of the outer row only (physics/surface_tension.f90)
+        ! the surface fit (physics/surface_tension.f90) through the outer row, each of whose
+        ! particles is also its own point; the normals' curvature above stays where it fails
+        allocate(wk%outer(n), wk%fit(N_FIT, n))
         !$omp parallel do schedule(static)
         do k = 1, n
-          wk%band(k) = merge(wk%flag(k), 0.0_rp, &
-                             csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h) &
-                             < FIT_DEPTH * sqrt(wk%v(k)))
-        end do
-        !$omp end parallel do
-        !$omp parallel do schedule(static)
-        do k = 1, n
+          wk%outer(k) = merge(wk%flag(k), 0.0_rp, &
+                              csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h) &
+                              < FIT_DEPTH * sqrt(wk%v(k)))
           wk%fit(:, k) = 0.0_rp
-          wk%fit(1, k) = wk%band(k) * wk%v(k) * w0
+          wk%fit(1, k) = wk%outer(k) * wk%v(k) * w0
         end do
         !$omp end parallel do
         call sweep(PASS_SURFACE_FIT, kern, s, wk, .true., axi)
@@ -533,7 +527,7 @@ contains
         call curvature_pairs(.true., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
                              wk%flag, wk%v, wk%nhx, wk%nhz, wk%num, wk%den)
       case (PASS_SURFACE_FIT)   ! the least-squares sums of the surface fit
-        call surface_fit_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%mixed, wk%flag, wk%band, &
+        call surface_fit_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%w, pl%mixed, wk%flag, wk%outer, &
                                wk%v, wk%nhx, wk%nhz, wk%fit)
       case (PASS_BAND_CURVATURE)   ! numerator, tangential denominator over the surface band
         call band_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%flag, &
@@ -696,11 +690,11 @@ contains
   !> "surface_band": as curvature_pairs (tangential denominator), but particle a (flag 1) takes
   !> neighbour b's normal only where b lies in the surface band (band 1), and b a's likewise.
   !> The surface fit (surface_tension.curvature = "surface_fit"): a flagged particle's sums take
-  !> each band neighbour's position relative to it, in its frame (csf_fit_point), weighted
+  !> each outer neighbour's position relative to it, in its frame (csf_fit_point), weighted
   !> V_b W_ab.
-  pure subroutine surface_fit_pairs(np, pa, pb, dx, dz, w, mixed, flag, band, v, nhx, nhz, fit)
+  pure subroutine surface_fit_pairs(np, pa, pb, dx, dz, w, mixed, flag, outer, v, nhx, nhz, fit)
     integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), w(*), flag(*), band(*), v(*), nhx(*), nhz(*)
+    real(rp), intent(in) :: dx(*), dz(*), w(*), flag(*), outer(*), v(*), nhx(*), nhz(*)
     logical, intent(in) :: mixed(*)
     real(rp), intent(inout) :: fit(N_FIT, *)
     integer :: k, a, b
@@ -709,9 +703,9 @@ contains
       a = pa(k)
       b = pb(k)
       ! dx = x_a - x_b: b lies at -dx from a, a at +dx from b
-      if (flag(a) > 0.0_rp .and. band(b) > 0.0_rp) &
+      if (flag(a) > 0.0_rp .and. outer(b) > 0.0_rp) &
         call csf_fit_point(v(b) * w(k), -dx(k), -dz(k), nhx(a), nhz(a), fit(:, a))
-      if (flag(b) > 0.0_rp .and. band(a) > 0.0_rp) &
+      if (flag(b) > 0.0_rp .and. outer(a) > 0.0_rp) &
         call csf_fit_point(v(a) * w(k), dx(k), dz(k), nhx(b), nhz(b), fit(:, b))
     end do
   end subroutine surface_fit_pairs
