@@ -66,13 +66,10 @@ void register_bench(CLI::App& app) {
         for (int nt : counts) {
             Solver::set_threads(nt);
             Solver s(lc.spec.params, lc.spec.output, lc.particles);
-            const auto& prm = lc.spec.params;
             auto advance = [&](long n) {
                 for (long k = 0; k < n; ++k) {
                     s.step(false);   // as a run's steps between outputs
-                    if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
-                        s.state().step % prm.filter_period == 0)
-                        s.density_filter();
+                    s.density_filter_if_due();
                 }
             };
             advance(args->warmup);

@@ -55,10 +55,8 @@ void register_modes(CLI::App& app) {
         long steps = 0;
         while (s.state().time < args->relax) {
             s.step(false);
+            s.density_filter_if_due();
             ++steps;
-            if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
-                s.state().step % prm.filter_period == 0)
-                s.density_filter();
         }
         LinearModeOptions opt;
         opt.dx = prm.dx;
@@ -69,11 +67,13 @@ void register_modes(CLI::App& app) {
                                  "variables, {} growing eigenvalues\n",
                                  args->case_path, lm.n_fluid, s.state().time, steps, lm.dimension,
                                  lm.growing);
-        // the fastest of the reported modes, and the fastest of those with ka > 1 (a column's
-        // capillary-stable waves: physics has none of them grow)
+        // each mode's ka (periodic z and --radius), and the fastest of those with ka > 1 (a
+        // column's capillary-stable waves: physics has none of them grow)
         double stable_max = 0;
         int stable_n = -1;
-        for (const LinearMode& m : lm.modes) {
+        std::cout << "mode  growth[1/s]  omega[1/s]  n_z   ka     outer  radial\n";
+        for (std::size_t k = 0; k < lm.modes.size(); ++k) {
+            const LinearMode& m = lm.modes[k];
             const double ka = (m.n_axial >= 0 && args->radius > 0 && opt.period > 0)
                                   ? 2.0 * std::numbers::pi * m.n_axial * args->radius / opt.period
                                   : std::nan("");
@@ -81,13 +81,6 @@ void register_modes(CLI::App& app) {
                 stable_max = m.lambda.real();
                 stable_n = m.n_axial;
             }
-        }
-        std::cout << "mode  growth[1/s]  omega[1/s]  n_z   ka     outer  radial\n";
-        for (std::size_t k = 0; k < lm.modes.size(); ++k) {
-            const LinearMode& m = lm.modes[k];
-            const double ka = (m.n_axial >= 0 && args->radius > 0)
-                                  ? 2.0 * std::numbers::pi * m.n_axial * args->radius / opt.period
-                                  : std::nan("");
             std::cout << fmt::format("{:4d}  {:11.4g}  {:10.4g}  {:3d}  {:5.2f}  {:5.3f}  {:5.3f}\n", k + 1,
                                      m.lambda.real(), std::abs(m.lambda.imag()), m.n_axial, ka,
                                      m.outer_share, m.radial_share);

@@ -14,6 +14,7 @@ namespace {
 // The fluid particles' state y = (x, z, u, w, rho), five blocks of n.
 struct FluidState {
     std::vector<std::size_t> idx;  // particle indices
+    double xmax = 0;               // their largest x: the outer layer is x >= xmax - dx/2
     [[nodiscard]] std::size_t n() const { return idx.size(); }
 };
 
@@ -52,8 +53,7 @@ Eigen::VectorXd rates(Solver& s, const FluidState& f, const Eigen::VectorXd& y) 
 void describe(LinearMode& m, const Eigen::VectorXcd& v, const FluidState& f, const ParticleSet& ps,
               double dx, double period) {
     const std::size_t n = f.n();
-    double xmax = -1e300;
-    for (std::size_t k = 0; k < n; ++k) xmax = std::max(xmax, ps.x[f.idx[k]]);
+    const double xmax = f.xmax;
     double all = 0, outer = 0, radial = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const double ax = std::norm(v[static_cast<Eigen::Index>(k)]);
@@ -92,6 +92,9 @@ LinearModes linear_modes(Solver& s, const LinearModeOptions& opt) {
     for (std::size_t i = saved.nb; i < saved.size(); ++i)
         if (saved.active[i] != 0 && saved.kind[i] == static_cast<int>(ParticleKind::Fluid)) f.idx.push_back(i);
     const std::size_t n = f.n();
+    if (n == 0) throw std::invalid_argument("linear_modes: no active fluid particle");
+    f.xmax = saved.x[f.idx[0]];
+    for (const std::size_t i : f.idx) f.xmax = std::max(f.xmax, saved.x[i]);
     const auto dim = static_cast<Eigen::Index>(5 * n);
     Eigen::VectorXd y0(dim);
     for (std::size_t k = 0; k < n; ++k) {
@@ -115,7 +118,6 @@ LinearModes linear_modes(Solver& s, const LinearModeOptions& opt) {
         const Eigen::VectorXd rm = rates(s, f, y);
         jac.col(j) = (rp - rm) / (2.0 * step);
     }
-    put_state(s.particles_to_edit(), f, y0);
     s.particles_to_edit() = saved;
     s.rates_of_edited_state();
 

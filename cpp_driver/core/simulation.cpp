@@ -442,9 +442,10 @@ private:
 };
 
 // One step and what follows it: removed particles logged, the snapshot when due, the jet's
-// sample (and its drops removed). Returns why the run stops now (empty: go on).
-std::string step_once(const SimParams& prm, Solver& solver, RunOutputs& out,
-                      std::optional<JetRun>& jet, RunLog& log, bool output_due) {
+// sample (and its drops removed), the density filter when due. Returns why the run stops now
+// (empty: go on).
+std::string step_once(Solver& solver, RunOutputs& out, std::optional<JetRun>& jet, RunLog& log,
+                      bool output_due) {
     RunState& st = solver.state();
     const StepReport r = solver.step(output_due);  // the CSF fields only for outputs
     solver.check_state();
@@ -460,9 +461,7 @@ std::string step_once(const SimParams& prm, Solver& solver, RunOutputs& out,
             (void)solver.deactivate(gone);
         if (std::string why = jet->stop_due(st.time); !why.empty()) return why;
     }
-    if (prm.density_filter != DensityFilter::None && prm.filter_period > 0 &&
-        st.step % prm.filter_period == 0)
-        solver.density_filter();
+    solver.density_filter_if_due();
     return {};
 }
 
@@ -488,7 +487,7 @@ void step_until_done(const RunOptions& opts, const CaseSpec& spec, Solver& solve
             const bool output_due = (sim_clock() - prm.trec_ini) -
                                         prm.out * static_cast<double>(st.n_outputs) >=
                                     prm.out;
-            if (const std::string why = step_once(prm, solver, out, jet, log, output_due);
+            if (const std::string why = step_once(solver, out, jet, log, output_due);
                 !why.empty()) {
                 log.line(fmt::format("stopping at t = {:.6g} s: {}", st.time, why));
                 break;

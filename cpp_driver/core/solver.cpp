@@ -259,6 +259,12 @@ void Solver::density_filter() {
     if (status != SPH_OK) fail(status, -1, "density filter");
 }
 
+void Solver::density_filter_if_due() {
+    if (params_.density_filter != DensityFilter::None && params_.filter_period > 0 &&
+        state_.step % params_.filter_period == 0)
+        density_filter();
+}
+
 void Solver::check_state() const {
     int64_t bad = -1;
     const int status = sph_check_state(&prm_, &arr_, &bad);

@@ -41,6 +41,9 @@ public:
     StepReport step(bool fields = true);
     // Density filter (Shepard or MLS, as the parameters say); no-op when none.
     void density_filter();
+    // The density filter when its period has come: after every filter_period-th step
+    // (numerics.filter_period), as legacy SPHysics; no-op otherwise or when there is none.
+    void density_filter_if_due();
     // NaN/Inf and density band check of the whole state; throws SimulationError.
     void check_state() const;
     // Makes these fluid particles inactive as the core does with those that leave the domain
