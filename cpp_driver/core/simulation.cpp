@@ -185,6 +185,7 @@ struct RunStart {
     ParticleSet particles;
     RunState resumed;  // with the core's neighbour-list positions and wall geometry below
     std::vector<double> list_x, list_z;
+    std::vector<double> drho_dt;  // the last density rates: the bulk viscosity's lagged divergence
     std::vector<std::vector<double>> wall;
 };
 
@@ -201,6 +202,7 @@ RunStart start_from_checkpoint(const fs::path& dir) {
     s.resumed = cp.state;
     if (const auto* lx = cp.array("list_x")) s.list_x = *lx;
     if (const auto* lz = cp.array("list_z")) s.list_z = *lz;
+    if (const auto* ar = cp.array("drho_dt")) s.drho_dt = *ar;
     for (const char* name : {"wall_nx", "wall_nz", "wall_dback", "wall_dfwd"})
         s.wall.push_back(cp.array(name) ? *cp.array(name) : std::vector<double>{});
     return s;
@@ -240,6 +242,7 @@ RunStart start_fresh(const RunOptions& opts) {
 void restore_core_state(Solver& solver, const RunStart& start) {
     solver.state() = start.resumed;
     solver.set_list_positions(start.list_x, start.list_z);
+    solver.set_density_rates(start.drho_dt);
     if (start.wall.size() == 4)
         solver.set_wall_geometry({&start.wall[0], &start.wall[1], &start.wall[2], &start.wall[3]});
 }
@@ -327,7 +330,8 @@ public:
     void checkpoint() {
         const RunState& st = solver_.state();
         std::vector<ExtraField> kept{{"list_x", solver_.list_x(), "m"},
-                                     {"list_z", solver_.list_z(), "m"}};
+                                     {"list_z", solver_.list_z(), "m"},
+                                     {"drho_dt", solver_.ar(), "kg/m^3/s"}};
         for (ExtraField& f : solver_.wall_geometry()) kept.push_back(std::move(f));
         write_checkpoint(dir_, solver_.particles(), st, prm_, kept);
         saved_.checkpoint = true, saved_.checkpoint_step = st.step,

@@ -34,6 +34,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.numerics.h = p.h;
     c.numerics.xsph_eps = p.xsph_eps;
     c.numerics.density_diffusion = p.density_diffusion;
+    c.numerics.bulk_viscosity = p.bulk_viscosity;
 
     c.time_step.variable_dt = p.variable_dt ? 1 : 0;
     c.time_step.cfl = p.cfl;
@@ -296,6 +297,7 @@ double Solver::compute_rates() {
 }
 
 double Solver::rates_of_edited_state() {
+    std::fill(ar_.begin(), ar_.end(), 0.0);
     const int status = sph_eos(&prm_, static_cast<int64_t>(ps_.size()), ps_.rho.data(), ps_.p.data(), c_.data());
     if (status != SPH_OK) fail(status, -1, "equation of state");
     return compute_rates();
@@ -305,6 +307,10 @@ void Solver::set_list_positions(const std::vector<double>& x, const std::vector<
     if (x.size() != list_x_.size() || z.size() != list_z_.size()) return;
     std::copy(x.begin(), x.end(), list_x_.begin());
     std::copy(z.begin(), z.end(), list_z_.begin());
+}
+
+void Solver::set_density_rates(const std::vector<double>& drho_dt) {
+    if (drho_dt.size() == ar_.size()) std::copy(drho_dt.begin(), drho_dt.end(), ar_.begin());
 }
 
 std::vector<ExtraField> Solver::wall_geometry() const {

@@ -57,7 +57,8 @@ public:
     double compute_rates();
     // Diagnostics (core/linear_modes.cpp): the particles to edit in place, then
     // rates_of_edited_state() for the rates of the edited state, with pressure and sound speed
-    // from its densities (Tait); returns max visc term.
+    // from its densities (Tait); returns max visc term. An edited state has no last evaluation,
+    // so numerics.bulk_viscosity's term (which uses its density rates) is left out of them.
     [[nodiscard]] ParticleSet& particles_to_edit() { return ps_; }
     double rates_of_edited_state();
 
@@ -81,6 +82,9 @@ public:
     // Restores them from a checkpoint; arrays of another length are ignored (the core then
     // lists the pairs at the current positions).
     void set_list_positions(const std::vector<double>& x, const std::vector<double>& z);
+    // The density rates of the last evaluation, as a checkpoint kept them (the bulk viscosity
+    // uses them in the next one); ignored unless one per particle.
+    void set_density_rates(const std::vector<double>& drho_dt);
     // Repulsive-wall geometry (unit normal, spacing to the wall neighbours; empty for other
     // boundaries). sph_prepare computes it from the positions at construction: a moving gate
     // would give it again from moved positions, which round differently, so a checkpoint

@@ -68,6 +68,11 @@ const Param kParams[] = {
      .member = member<&SimParams::density_diffusion>(), .range = between(0, 1), .allowed = "0 = off; 0.1 is usual",
      .doc = "delta of the density diffusion drho_a/dt += 2 delta h c0 sum_b (rho_a - rho_b) F_ab V_b (fluid pairs)",
      .legacy = "(none)", .echo = "delta-SPH (Molteni-Colagrossi); no hydrostatic correction", .h5_optional = true},
+    {.key = "numerics.bulk_viscosity", .attr = "bulk_viscosity", .type = K::Float, .unit = "1",
+     .member = member<&SimParams::bulk_viscosity>(), .range = between(0, 1), .allowed = "0 = off",
+     .doc = "beta of a bulk viscosity zeta = beta rho0 c0 h: the momentum equation's pressure is p - zeta div v "
+            "(div v = -drho/dt / rho of the last evaluation); damps sound waves, not divergence-free flow",
+     .legacy = "(none)", .h5_optional = true},
     {.key = "numerics.tensile_correction", .attr = "tensile_correction", .type = K::String,
      .member = member<&SimParams::tensile_correction>(), .choices = kTensile,
      .allowed = "auto: on for gaussian and cubic_spline, as legacy",

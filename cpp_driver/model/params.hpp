@@ -149,6 +149,8 @@ struct SimParams {
     // Density diffusion in the continuity equation (delta-SPH, Molteni & Colagrossi 2009):
     // its delta; 0 = off (fortran_core/physics/density_diffusion.f90).
     double density_diffusion = 0.0;
+    // Bulk viscosity zeta = beta rho0 c0 h in the momentum equation (rates.f90): its beta; 0 = off.
+    double bulk_viscosity = 0.0;
     // Tensile-instability correction (Monaghan 2000): legacy SPHysics turns it on for the
     // Gaussian and cubic-spline kernels and off for the others. -1 = as legacy, 0 off, 1 on.
     int tensile_correction = -1;

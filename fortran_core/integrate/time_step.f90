@@ -87,6 +87,10 @@ contains
     dt_new = prm%time_step%cfl * min(dt_f, dt_cv)
     if (prm%surface_tension%sigma > 0.0_rp) &
       dt_new = min(dt_new, csf_dt(prm%eos%rho0, prm%numerics%h, prm%surface_tension%sigma))
+    ! The bulk viscosity's (numerics.bulk_viscosity) explicit diffusion bound, dt <= 0.125 h^2 / nu_b
+    ! with nu_b = beta c0 h (Morris, Fox & Zhu 1997's viscous condition).
+    if (prm%numerics%bulk_viscosity > 0.0_rp) dt_new = min(dt_new, &
+      0.125_rp * prm%numerics%h / (prm%numerics%bulk_viscosity * prm%eos%c0))
     ! A moving gate crosses at most CFL h per step (legacy has no such bound: a gate faster
     ! than about h / dt then jumps over fluid particles and the run blows up).
     if (vgate > 0.0_rp) dt_new = min(dt_new, prm%time_step%cfl * prm%numerics%h / vgate)

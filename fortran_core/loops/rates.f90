@@ -84,7 +84,7 @@ contains
 
     type(rates_body_t) :: body
     integer :: n, k, i
-    real(rp) :: wdp, fdummy
+    real(rp) :: wdp, fdummy, zeta
     logical :: st_on
 
     body%h = prm%numerics%h
@@ -132,6 +132,20 @@ contains
           end if
         end do
       end if
+      !$omp end single
+    end if
+
+    ! the bulk viscosity (numerics.bulk_viscosity): the pressure of the momentum equation is
+    ! p + zeta/rho drho/dt = p - zeta div v, zeta = beta rho0 c0 h, with the density rate of
+    ! the last evaluation (st%ar, half a step old). A divergence-free flow does not feel it; a
+    ! sound wave of wavenumber k is damped at zeta k^2 / (2 rho). After the tensile term's R,
+    ! which stays the equation of state's.
+    if (prm%numerics%bulk_viscosity > 0.0_rp) then
+      zeta = prm%numerics%bulk_viscosity * prm%eos%rho0 * prm%eos%c0 * prm%numerics%h
+      !$omp single
+      do k = 1, n
+        if (s%fluid(k)) s%pr(k) = s%pr(k) + zeta * st%ar(s%src(k)) / s%rho(k)**3
+      end do
       !$omp end single
     end if
 

@@ -979,6 +979,24 @@ TEST(ModernCase, AxisPair) {
     EXPECT_NE(e.find("\"smoothed_radius\", \"rings\""), std::string::npos) << e;
 }
 
+// numerics.bulk_viscosity (cases/CASE_FORMAT.md): off by default; read, written back and read
+// again, in either geometry; out of [0, 1] refused, naming the key and the range.
+TEST(ModernCase, BulkViscosity) {
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.bulk_viscosity, 0.0);
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", {"numerics.bulk_viscosity=0.5"});
+    EXPECT_EQ(s.params.bulk_viscosity, 0.5);
+    expect_round_trip(s);
+    const CaseSpec a = parse_modern_case(kMinimal, "case.toml",
+                                         {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                          "numerics.lattice=\"sc\"", "numerics.bulk_viscosity=0.25"});
+    EXPECT_EQ(a.params.bulk_viscosity, 0.25);
+    for (const char* bad : {"numerics.bulk_viscosity=-0.1", "numerics.bulk_viscosity=1.5"}) {
+        const std::string e = error_of(kMinimal, {bad});
+        EXPECT_NE(e.find("numerics.bulk_viscosity"), std::string::npos) << e;
+        EXPECT_NE(e.find("[0, 1]"), std::string::npos) << e;
+    }
+}
+
 // numerics.density_diffusion and resolution.jitter (cases/CASE_FORMAT.md): off by default; read,
 // written back and read again; out of range refused; the diffusion refused in the axisymmetric
 // geometry, naming the key, what was expected and what was found.
