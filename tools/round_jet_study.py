@@ -5,11 +5,11 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--set-name mc paper] [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet]
+      [--quiet-exit] [--set-name mc paper] [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet]
       [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--out cases/round_jet]
+      [--quiet-exit] [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -24,6 +24,9 @@ README.md) instead of the default smoothed-radius pair, likewise in a directory 
 (surface_tension.rings_curvature = "own", cases/round_jet/README.md), in another;
 --axis-pair rings_fit the rings pair with the surface fit (surface_tension.curvature =
 "surface_fit") and the tensile correction (numerics.tensile_correction = "on"), in another.
+With --quiet-exit every run has the bulk viscosity numerics.bulk_viscosity = 0.5 (which damps
+the jet's sound waves, cases/round_jet/README.md) and a 3 d0 nozzle that refills
+(nozzle.refill), in a directory of its own (suffix _quiet).
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -68,6 +71,8 @@ PAPER_U0S = (0.07, 0.17, 0.20, 0.25)
 RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the fastest-growing wave
 RUN_T_FACTOR, WINDOW_T_FACTOR = 2.5, 1.25     # T and the window start, in L_ref / U
 BOX_L_FACTOR = 1.6
+REFILL_NOZZLE = 3.0   # d0 of a refilling nozzle (--quiet-exit): the plug reaches far beyond 2h upstream
+QUIET_BULK_VISCOSITY = 0.5   # --quiet-exit's numerics.bulk_viscosity (cases/round_jet/README.md)
 
 
 # ---------------------------------------------------------------- physics
@@ -117,35 +122,39 @@ def u_tag(u):
     return f"u{u:g}"
 
 
-def sizing(u, d0, l_ref, n):
-    """The overrides that size one run: nozzle length, box, orifice height, end time, sampling."""
+def sizing(u, d0, l_ref, n, refill=False):
+    """The overrides that size one run: nozzle length, box, orifice height, end time, sampling.
+    refill: a nozzle of REFILL_NOZZLE d0 that refills (nozzle.refill) instead of one that holds
+    the fluid of the whole run."""
     dx = d0 / n
     t_end = RUN_T_FACTOR * l_ref / u
-    nozzle = u * t_end / d0 + 2.0
+    nozzle = REFILL_NOZZLE if refill else u * t_end / d0 + 2.0
     below = BOX_L_FACTOR * l_ref + 10.0 * d0
     z0 = below
     lz = below + nozzle * d0 + 2.0 * dx
     return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
             f"nozzle.length_over_d0={nozzle:.6g}", f"nozzle.z0={z0:.9g}", f"domain.lz={lz:.9g}",
             f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
-            f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"]
+            f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"] + \
+        (["nozzle.refill=true"] if refill else [])
 
 
-def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
+def plan(eps, n, size_c=None, remove_h=None, axis_pair=None, quiet=False):
     """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
     = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length;
     axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius pair), or
     "rings_own": the rings pair with surface_tension.rings_curvature = "own", or "rings_fit": the
-    rings pair with the surface fit and the tensile correction."""
+    rings pair with the surface fit and the tensile correction; quiet: the bulk viscosity and a
+    refilling nozzle (--quiet-exit)."""
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
-        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n),
+        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet),
                      {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas}))
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
-        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n) + ["fluid.c0=4"],
+        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet) + ["fluid.c0=4"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None}))
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
@@ -157,23 +166,27 @@ def plan(eps, n, size_c=None, remove_h=None, axis_pair=None):
                   "numerics.tensile_correction=on"]
     elif axis_pair is not None:
         extra.append(f"domain.axis_pair={axis_pair}")
+    if quiet:
+        extra.append(f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}")
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
 SET_NAMES = ("mc", "paper")
 
 
-def study_dir(root, eps, n, size_c=None, remove_h=None, axis_pair=None):
+def study_dir(root, eps, n, size_c=None, remove_h=None, axis_pair=None, quiet=False):
     tail = (("" if size_c is None else f"_c{size_c:g}") + ("" if remove_h is None else f"_rm{remove_h:g}")
-            + ("" if axis_pair is None else f"_{axis_pair}"))
+            + ("" if axis_pair is None else f"_{axis_pair}") + ("_quiet" if quiet else ""))
     return os.path.join(root, f"eps{eps:g}_n{n:g}{tail}")
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
+                     args.quiet_exit)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair), names,
+    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
+                            args.quiet_exit), names,
                        args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
@@ -236,14 +249,15 @@ def read_run(run_dir, info):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
+                     args.quiet_exit)
     if not os.path.isdir(sdir):
         raise StudyError(f"{sdir}: no study there (run `round_jet_study.py run --eps {args.eps:g} "
                          f"--d0-over-dx {args.d0_over_dx:g}` first)")
     os.makedirs(args.out, exist_ok=True)
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h,
-                                             args.axis_pair)]
+                                             args.axis_pair, args.quiet_exit)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "window samples",
               "err vs measured", "first breakup t [s], L/d0", "main drop d/d0",
@@ -343,6 +357,9 @@ def main(argv=None):
                        help="the rings pair (domain.axis_pair) in every run, rings_own with its surface "
                             "rows' own curvature, rings_fit with the surface fit and the tensile "
                             "correction (default: the smoothed-radius pair)")
+        p.add_argument("--quiet-exit", action="store_true",
+                       help=f"numerics.bulk_viscosity = {QUIET_BULK_VISCOSITY:g} and a {REFILL_NOZZLE:g} d0 nozzle "
+                            "that refills (nozzle.refill) in every run")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

@@ -63,7 +63,8 @@ void JetMonitor::start(const ParticleSet& ps, double time) {
 }
 
 JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t step) {
-    if (out_.size() != ps.size()) start(ps, time);
+    if (out_.empty() || out_.size() > ps.size()) start(ps, time);
+    out_.resize(ps.size(), 0);  // particles appended since the last sample (nozzle.refill) are upstream
     JetSample r;
     r.time = time;
     r.step = step;

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "geometry/nozzle.hpp"
 #include "io/file_write.hpp"
 #include "io/jet_output.hpp"
 #include "model/errors.hpp"
@@ -154,6 +155,12 @@ std::vector<std::size_t> JetRun::after_step(const ParticleSet& ps, double time, 
         return sample(ps, time, step);
     }
     return {};
+}
+
+ParticleSet JetRun::refill(const ParticleSet& ps) const {
+    if (!spec_.nozzle->refill) return {};
+    const SimParams& p = spec_.params;
+    return nozzle_refill_rows(*spec_.nozzle, p.dx, p.dz, p.drive_half_width, ps);
 }
 
 std::string JetRun::stop_due(double time) const {

@@ -37,6 +37,8 @@ public:
     // unless remove_drops_below_h is set and a check found such a drop).
     [[nodiscard]] std::vector<std::size_t> after_step(const ParticleSet& ps, double time, std::int64_t step,
                                                       bool output_written);
+    // nozzle.refill: the plug rows to add now (geometry/nozzle.hpp; empty without refill).
+    [[nodiscard]] ParticleSet refill(const ParticleSet& ps) const;
     // Why the run should stop now (empty: go on): stop_after past the first breakup, or the
     // nozzle ran dry (no fluid left upstream of the orifice).
     [[nodiscard]] std::string stop_due(double time) const;

@@ -297,8 +297,7 @@ public:
             dtfile_.emplace(dir_ / "DT", opts.resume);
             stepsfile_.emplace(dir_ / "steps.txt", opts.resume);
         }
-        extra_ = extra_fields(solver);
-        if (h5_ && !opts.resume) h5_->write(solver.particles(), st, extra_);
+        if (h5_ && !opts.resume) h5_->write(solver.particles(), st, extra_fields(solver));
         saved_.output = st.n_outputs;
         if (!opts.resume) saved_.output_time = st.time;
         if (opts.resume) {
@@ -321,7 +320,8 @@ public:
             dtfile_->append({t, st.dt_f, st.dt_cv, st.dt_new});
             stepsfile_->append({static_cast<int>(st.n_outputs), st.step, t});
         }
-        if (h5_) h5_->write(solver_.particles(), st, extra_);
+        // the fields taken afresh: a refilled nozzle (nozzle.refill) grows the arrays
+        if (h5_) h5_->write(solver_.particles(), st, extra_fields(solver_));
         saved_.output = st.n_outputs, saved_.output_time = t;
     }
 
@@ -330,8 +330,9 @@ public:
     void checkpoint() {
         const RunState& st = solver_.state();
         std::vector<ExtraField> kept{{"list_x", solver_.list_x(), "m"},
-                                     {"list_z", solver_.list_z(), "m"},
-                                     {"drho_dt", solver_.ar(), "kg/m^3/s"}};
+                                     {"list_z", solver_.list_z(), "m"}};
+        // the bulk viscosity's divergence comes from the last density rates
+        if (prm_.bulk_viscosity > 0) kept.push_back({"drho_dt", solver_.ar(), "kg/m^3/s"});
         for (ExtraField& f : solver_.wall_geometry()) kept.push_back(std::move(f));
         write_checkpoint(dir_, solver_.particles(), st, prm_, kept);
         saved_.checkpoint = true, saved_.checkpoint_step = st.step,
@@ -362,7 +363,6 @@ private:
     std::optional<Hdf5Writer> h5_;
     std::optional<DtFile> dtfile_;
     std::optional<StepsFile> stepsfile_;
-    std::vector<ExtraField> extra_;
     SavedSoFar saved_;
 };
 
@@ -463,6 +463,7 @@ std::string step_once(Solver& solver, RunOutputs& out, std::optional<JetRun>& je
         if (const auto gone = jet->after_step(solver.particles(), st.time, st.step, output_due);
             !gone.empty())
             (void)solver.deactivate(gone);
+        (void)solver.append_fluid(jet->refill(solver.particles()));
         if (std::string why = jet->stop_due(st.time); !why.empty()) return why;
     }
     solver.density_filter_if_due();

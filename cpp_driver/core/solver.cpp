@@ -289,6 +289,30 @@ std::size_t Solver::deactivate(const std::vector<std::size_t>& indices) {
     return n;
 }
 
+std::size_t Solver::append_fluid(const ParticleSet& more) {
+    const std::size_t n0 = ps_.size(), k = more.size();
+    if (k == 0) return 0;
+    for (std::size_t i = 0; i < k; ++i)
+        (void)ps_.push(more.x[i], more.z[i], more.u[i], more.w[i], more.rho[i], more.p[i], more.m[i],
+                       ParticleKind::Fluid);
+    const std::size_t n = ps_.size();
+    for (auto* v : {&c_, &xo_, &zo_, &uo_, &wo_, &rhoo_, &ax_, &az_, &ar_, &xu_, &xw_}) v->resize(n, 0.0);
+    if (!wall_prev_.empty()) {
+        wall_prev_.resize(n, 0);
+        wall_next_.resize(n, 0);
+        for (auto* v : {&wall_nx_, &wall_nz_, &wall_db_, &wall_df_}) v->resize(n, 0.0);
+    }
+    if (!colour_.empty())
+        for (auto* v : {&colour_, &st_nx_, &st_nz_, &kappa_}) v->resize(n, 0.0);
+    list_x_.assign(n, std::numeric_limits<double>::quiet_NaN());
+    list_z_.assign(n, std::numeric_limits<double>::quiet_NaN());
+    was_active_.resize(n, 1);
+    bind_arrays();
+    const int status = sph_eos(&prm_, static_cast<int64_t>(k), ps_.rho.data() + n0, ps_.p.data() + n0, c_.data() + n0);
+    if (status != SPH_OK) fail(status, -1, "equation of state");
+    return k;
+}
+
 double Solver::compute_rates() {
     double vmax = 0;
     const int status = sph_compute_rates(ws_, &prm_, &arr_, &vmax);

@@ -53,6 +53,10 @@ public:
     // are not counted in RunState::n_removed (the domain's leavers). Returns how many were
     // active.
     std::size_t deactivate(const std::vector<std::size_t>& indices);
+    // Appends fluid particles (ids: their indices), at rest in the integrator's sense (no
+    // rates yet), their pressure and sound speed from their densities; the pairs are listed
+    // again at the next step. Returns how many.
+    std::size_t append_fluid(const ParticleSet& more);
     // Pair rates at the current state (tests and diagnostics); returns max visc term.
     double compute_rates();
     // Diagnostics (core/linear_modes.cpp): the particles to edit in place, then

@@ -60,4 +60,32 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     return out;
 }
 
+ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width, const ParticleSet& ps) {
+    const double ds = nz.ex == 0.0 ? dz : dx;
+    const double s_back = -(static_cast<double>(std::max(1L, std::lround(nz.length() / ds))) - 0.5) * ds;
+    const auto axial = [&](std::size_t i) { return (ps.x[i] - nz.x0) * nz.ex + (ps.z[i] - nz.z0) * nz.ez; };
+    std::vector<std::size_t> plug;
+    double s_min = 0;
+    for (std::size_t i = ps.nb; i < ps.size(); ++i) {
+        if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid) || (!ps.active.empty() && ps.active[i] == 0)) continue;
+        const double s = axial(i);
+        const double l = std::abs((ps.x[i] - nz.x0) * nz.ez - (ps.z[i] - nz.z0) * nz.ex);
+        if (!(s < 0.0) || l > half_width) continue;
+        if (plug.empty() || s < s_min) s_min = s;
+        plug.push_back(i);
+    }
+    ParticleSet rows;
+    if (plug.empty()) return rows;
+    // The back row: every plug particle within a quarter spacing of the most upstream one.
+    std::vector<std::size_t> back;
+    for (const std::size_t i : plug)
+        if (axial(i) < s_min + 0.25 * ds) back.push_back(i);
+    for (int k = 1; s_min - k * ds >= s_back - 1e-6 * ds; ++k)
+        for (const std::size_t i : back) {
+            (void)rows.push(ps.x[i] - k * ds * nz.ex, ps.z[i] - k * ds * nz.ez, ps.u[i], ps.w[i],
+                                            ps.rho[i], ps.p[i], ps.m[i], ParticleKind::Fluid);
+        }
+    return rows;
+}
+
 }  // namespace sphjet

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "model/case_spec.hpp"
+#include "model/particles.hpp"
 
 namespace sphjet {
 
@@ -51,6 +52,15 @@ struct NozzleLayout {
 // dx, dz: the case's lattice spacings; dynamic: two staggered layers per wall.
 // recess: how far upstream of the orifice line the walls end [m] (the generator: 2h).
 // axisymmetric: the round pipe's half r = x >= 0 (the axis must be up or down, x0 = 0).
+// nozzle.refill: the rows to add after a step so that the plug reaches back to where its
+// back row was built, s = -(M - 1/2) ds. The plug is the active fluid with s < 0 within
+// half_width of the axis (the core's driven strip, fortran_core/integrate/nozzle_drive.f90);
+// its back row moves rigidly, so each new row is a copy of it (across positions, velocity,
+// density, pressure, mass) one spacing ds further back, as many as fit. Empty when none is
+// due. ps must be the particles of the case nz built.
+[[nodiscard]] ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width,
+                                             const ParticleSet& ps);
+
 [[nodiscard]] NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess,
                                          bool axisymmetric = false);
 

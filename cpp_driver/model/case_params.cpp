@@ -354,6 +354,11 @@ const Param kParams[] = {
      .doc = "the jet speed u0", .legacy = "(none)", .echo = "jet speed [m/s]", .required = true, .hand = kRead},
     {.key = "nozzle.walls", .type = K::Bool, .member = member<&NozzleSpec::walls>(),
      .doc = "boundary lines along the nozzle sides", .legacy = "(none)"},
+    {.key = "nozzle.refill", .type = K::Bool, .member = member<&NozzleSpec::refill>(), .def = "false",
+     .allowed = "true: the run never runs dry; with the box's far end as the sink its cost stays flat",
+     .doc = "a row of plug enters at the nozzle's back each time the plug has moved one spacing, so that the nozzle "
+            "keeps its length",
+     .legacy = "(none)"},
     {.key = "nozzle.disturbance", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::disturbance>(),
      .range = between(0, 1, false, true), .def = "0 (none)", .doc = "plug speed u0 (1 + disturbance sin(omega t))",
      .legacy = "(none)", .hand = kEcho},

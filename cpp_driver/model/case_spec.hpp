@@ -107,6 +107,9 @@ struct NozzleSpec {
     // u0 k with k = disturbance_ka / (d0 / 2): a wave of that k leaves the orifice. 0: none.
     double disturbance = 0;
     double disturbance_ka = 0.697;  // Rayleigh's fastest-growing mode of a round jet
+    // The nozzle stays length() long: a row of plug enters at its back each time the plug has
+    // moved one spacing (geometry/nozzle.hpp, nozzle_refill_rows). false: it runs dry.
+    bool refill = false;
     [[nodiscard]] double length() const { return length_over_d0 * d0; }
     [[nodiscard]] double disturbance_omega() const { return u0 * disturbance_ka / (0.5 * d0); }
 };
