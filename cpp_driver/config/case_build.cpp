@@ -302,6 +302,14 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
                              "resolution.h_over_dx >= 2 with domain.axis_pair = \"rings\"",
                              "h = " + num(p.h / p.dx) + " dx");
     }
+    if (auto f = dom.boolean("split_axis_rings")) {
+        if (f->value && p.axis_pair != AxisPair::Rings)
+            throw InputError(ctx.where(dom.key_path("split_axis_rings")),
+                             "domain.split_axis_rings splits the rings of the rings pair",
+                             "domain.axis_pair = \"rings\" with domain.split_axis_rings = true",
+                             "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
+        p.split_axis_rings = f->value;
+    }
     // after [domain]: the key belongs to the rings pair's pressure-consistent CSF
     const Section st = top.sub("surface_tension");
     if (auto f = st.string("rings_curvature")) {

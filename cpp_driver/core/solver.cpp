@@ -86,6 +86,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     // pi rho0 dx^2 dz against 3 pi rho0 dx^2 dz for the second (axisymmetric_loops.f90)
     c.geometry.axis_m1 =
         p.axis_pair == AxisPair::Rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dx * p.dz : 0.0;
+    c.geometry.ring_mass_per_radius = p.split_axis_rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dz : 0.0;
 
     c.gravity.gx = p.gx;
     c.gravity.gz = p.gz;
@@ -311,6 +312,30 @@ std::size_t Solver::append_fluid(const ParticleSet& more) {
     const int status = sph_eos(&prm_, static_cast<int64_t>(k), ps_.rho.data() + n0, ps_.p.data() + n0, c_.data() + n0);
     if (status != SPH_OK) fail(status, -1, "equation of state");
     return k;
+}
+
+std::size_t Solver::split_heavy_rings() {
+    if (!params_.split_axis_rings) return 0;
+    std::vector<std::int64_t> idx(16);
+    std::int64_t found = 0;
+    for (;;) {
+        const int status = sph_axis_rings_to_split(&prm_, &arr_, static_cast<std::int64_t>(idx.size()), idx.data(),
+                                                   &found);
+        if (status != SPH_OK) fail(status, -1, "rings to split");
+        if (found <= static_cast<std::int64_t>(idx.size())) break;
+        idx.resize(static_cast<std::size_t>(found));
+    }
+    if (found == 0) return 0;
+    ParticleSet halves;
+    const double dz = params_.dz;
+    for (std::int64_t k = 0; k < found; ++k) {
+        const auto i = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
+        ps_.m[i] *= 0.5;
+        (void)halves.push(ps_.x[i], ps_.z[i] - 0.5 * dz, ps_.u[i], ps_.w[i], ps_.rho[i], ps_.p[i], ps_.m[i],
+                          ParticleKind::Fluid);
+        ps_.z[i] += 0.5 * dz;
+    }
+    return append_fluid(halves);
 }
 
 double Solver::compute_rates() {

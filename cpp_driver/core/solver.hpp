@@ -57,6 +57,11 @@ public:
     // rates yet), their pressure and sound speed from their densities; the pairs are listed
     // again at the next step. Returns how many.
     std::size_t append_fluid(const ParticleSet& more);
+    // domain.split_axis_rings: each ring too heavy for its radius (sph_axis_rings_to_split)
+    // becomes two of half its mass, at z + dz/2 (itself) and z - dz/2 (appended), with its
+    // velocity, density and pressure: mass, momentum and centre of mass kept. Returns how many
+    // were split (0 when the key is off).
+    std::size_t split_heavy_rings();
     // Pair rates at the current state (tests and diagnostics); returns max visc term.
     double compute_rates();
     // Diagnostics (core/linear_modes.cpp): the particles to edit in place, then

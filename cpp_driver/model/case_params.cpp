@@ -244,6 +244,11 @@ const Param kParams[] = {
     {.key = "domain.periodic_z", .attr = "periodic_z", .type = K::Bool, .member = member<&SimParams::periodic_z>(),
      .allowed = "true needs wall_bottom = wall_top = false", .doc = "periodic in z with period lz",
      .legacy = "(none; legacy `Periodic Lateral boundaries` must be 0)", .h5_optional = true},
+    {.key = "domain.split_axis_rings", .attr = "split_axis_rings", .type = K::Bool,
+     .member = member<&SimParams::split_axis_rings>(), .def = "false", .allowed = "needs `axis_pair = \"rings\"`",
+     .doc = "after each step a ring heavier than max(2 x the lattice ring at its radius, 2 x the first column's) "
+            "becomes two of half its mass, dz/2 either side of it along the axis",
+     .legacy = "(none)", .hand = kRead, .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),
      .allowed = "needs `geometry = \"axisymmetric\"`; `\"rings\"` needs h >= 2 dx",

@@ -210,6 +210,9 @@ struct SimParams {
     bool periodic_z = false;
     // The axisymmetric pair (case key domain.axis_pair; axisymmetric only).
     AxisPair axis_pair = AxisPair::SmoothedRadius;
+    // Rings too heavy for their radius split in two after each step (case key
+    // domain.split_axis_rings; rings pair only; Solver::split_heavy_rings).
+    bool split_axis_rings = false;
     // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
     // The normals of the free-surface curvature (case key surface_tension.curvature_normals).

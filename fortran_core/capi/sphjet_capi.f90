@@ -20,7 +20,7 @@ module sphjet_capi
   use rates, only: compute_rates
   use predictor_corrector, only: pc_step, update_eos
   use filter_loops, only: apply_density_filter
-  use state_checks, only: check_finite
+  use state_checks, only: check_finite, rings_to_split
   use repulsive_wall, only: wall_normal
   use eos_tait, only: tait_pressure, tait_sound_speed
   use surface_tension_loops, only: surface_tension_rates
@@ -216,6 +216,27 @@ contains
     if (.not. ok) return
     call check_finite(prm, st, bad_particle, status)
   end function sph_check_state
+
+  !> The active fluid rings to split (domain.split_axis_rings; physics/axisymmetric.f90,
+  !> ring_too_heavy): their 0-based indices, at most capacity of them, and how many there are.
+  function sph_axis_rings_to_split(prm, arr, capacity, idx, n_found) result(status) &
+      bind(C, name="sph_axis_rings_to_split")
+    type(sph_params_t), intent(in) :: prm
+    type(sph_arrays_t), intent(in) :: arr
+    integer(c_int64_t), value :: capacity
+    integer(c_int64_t), intent(out) :: idx(*)
+    integer(c_int64_t), intent(out) :: n_found
+    integer(c_int) :: status
+    type(state_t) :: st
+    logical :: ok
+    status = SPH_ERR_ARGUMENT
+    n_found = 0
+    if (capacity < 0) return
+    call bind_state(arr, st, .false., .false., ok)
+    if (.not. ok) return
+    call rings_to_split(prm, st, capacity, idx, n_found)
+    status = SPH_OK
+  end function sph_axis_rings_to_split
 
   !> Pair rates (ax, az, ar, XSPH) at the current state, gravity excluded; visc_max returns
   !> max (u_ab . r_ab)/(r_ab^2 + eta^2). For tests and diagnostics.

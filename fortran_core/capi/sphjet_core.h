@@ -100,6 +100,7 @@ typedef struct sph_geometry_t {
     int periodic_z;           /* 1: periodic in z with period domain.zmax - domain.zmin */
     int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
     double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
+    double ring_mass_per_radius; /* domain.split_axis_rings: 2 pi rho0 dx dz [kg/m]; 0 = off */
 } sph_geometry_t;
 
 typedef struct sph_gravity_t {
@@ -185,6 +186,11 @@ int sph_step(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
 int sph_density_filter(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
                        int64_t* n_singular);
 int sph_check_state(const sph_params_t* prm, const sph_arrays_t* arr, int64_t* bad_particle);
+/* domain.split_axis_rings: the 0-based indices of the active fluid rings heavier than the
+ * split limit (physics/axisymmetric.f90, ring_too_heavy), at most capacity of them, in idx;
+ * their number in n_found (it may exceed capacity: call again with more room). */
+int sph_axis_rings_to_split(const sph_params_t* prm, const sph_arrays_t* arr, int64_t capacity, int64_t* idx,
+                            int64_t* n_found);
 int sph_compute_rates(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
                       double* visc_max);
 int sph_kernel_eval(int kernel, double h, int64_t n, const double* r, double* w, double* f);

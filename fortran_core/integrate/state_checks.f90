@@ -1,15 +1,35 @@
 !> Per-particle checks after a step: particles leaving the domain (removed and counted, as
-!> SPHysics does, or reported), and a blow-up (NaN/Inf, density outside the sane band).
+!> SPHysics does, or reported), a blow-up (NaN/Inf, density outside the sane band), and the
+!> rings too heavy for their radius (domain.split_axis_rings).
 module state_checks
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, SPH_OK, SPH_ERR_NONFINITE, SPH_ERR_DENSITY, &
                           SPH_ERR_OUT_OF_DOMAIN, GEOM_AXISYMMETRIC
   use sphjet_types, only: sph_params_t, state_t
+  use axisymmetric, only: ring_too_heavy
   implicit none
   private
-  public :: check_domain, check_finite, fold_into_domain
+  public :: check_domain, check_finite, fold_into_domain, rings_to_split
 
 contains
+
+  !> The active fluid rings too heavy for their radius (physics/axisymmetric.f90,
+  !> ring_too_heavy): their 0-based indices in idx (the first capacity of them) and their number.
+  subroutine rings_to_split(prm, st, capacity, idx, n_found)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(in) :: st
+    integer(i8), intent(in) :: capacity
+    integer(i8), intent(inout) :: idx(*)
+    integer(i8), intent(out) :: n_found
+    integer :: i
+    n_found = 0
+    do i = st%nb + 1, st%n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      if (.not. ring_too_heavy(st%m(i), st%x(i), prm%geometry%ring_mass_per_radius, prm%geometry%axis_m1)) cycle
+      n_found = n_found + 1
+      if (n_found <= capacity) idx(n_found) = i - 1
+    end do
+  end subroutine rings_to_split
 
   !> Fluid particles beyond [domain%xmin, xmax] x [domain%zmin, zmax] leave the domain.
   !> With domain%remove_out they become inactive (velocity zeroed) and are counted;

@@ -41,7 +41,7 @@ module axisymmetric
   private
   public :: axis_radius, planar_mass, mass_per_radian, viscous_hoop, azimuthal_curvature, &
             R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N, axis_detection_factor, &
-            ring_kernel_tables, ring_kernel_derivs, RING_NU, RING_NV
+            ring_kernel_tables, ring_kernel_derivs, RING_NU, RING_NV, ring_too_heavy
 
   !> Smallest radius used in 1/r, in units of h.
   real(rp), parameter :: R_MIN_H = 0.25_rp
@@ -52,6 +52,19 @@ module axisymmetric
   integer, parameter :: RING_NU = 257, RING_NV = 257
 
 contains
+
+  !> domain.split_axis_rings: whether a ring of mass m at x is to be split in two. A fluid ring
+  !> of mass m at radius r has the meridian area m / (2 pi r rho): a ring that reaches the axis
+  !> from further out stands for more area than one kernel can hold (at r -> 0 its mass is a
+  !> point of the 3D density, m W(0): five lattice rings' worth for the ring built at 2.5 dx).
+  !> It is too heavy when m > max(2 mu r, m_axis): more than twice the lattice ring's mass at its
+  !> radius (mu = 2 pi rho0 dx dz, the lattice ring's mass per unit radius), and never below
+  !> m_axis = 2 pi rho0 dx^2 dz, twice the first column's (r = dx/2) ring, so that the rings at
+  !> the axis end at most that heavy.
+  pure elemental logical function ring_too_heavy(m, x, mu, m_axis)
+    real(rp), intent(in) :: m, x, mu, m_axis
+    ring_too_heavy = mu > 0.0_rp .and. m > max(2.0_rp * mu * abs(x), m_axis)
+  end function ring_too_heavy
 
   !> The radius used in 1/r: max(|x|, R_MIN_H h) [m].
   pure elemental function axis_radius(x, h) result(r)
