@@ -24,9 +24,10 @@ README.md) instead of the default smoothed-radius pair, likewise in a directory 
 (surface_tension.rings_curvature = "own", cases/round_jet/README.md), in another;
 --axis-pair rings_fit the rings pair with the surface fit (surface_tension.curvature =
 "surface_fit") and the tensile correction (numerics.tensile_correction = "on"), in another.
-With --quiet-exit every run has the bulk viscosity numerics.bulk_viscosity = 0.5 (which damps
-the jet's sound waves, cases/round_jet/README.md) and a 3 d0 nozzle that refills
-(nozzle.refill), in a directory of its own (suffix _quiet).
+With --quiet-exit (with a rings --axis-pair) every run has the bulk viscosity
+numerics.bulk_viscosity = 0.5 (which damps the jet's sound waves, cases/round_jet/README.md), a
+3 d0 nozzle that refills (nozzle.refill) and the rings too heavy for their radius split
+(domain.split_axis_rings), in a directory of its own (suffix _quiet).
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -167,7 +168,7 @@ def plan(eps, n, size_c=None, remove_h=None, axis_pair=None, quiet=False):
     elif axis_pair is not None:
         extra.append(f"domain.axis_pair={axis_pair}")
     if quiet:
-        extra.append(f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}")
+        extra += [f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}", "domain.split_axis_rings=true"]
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
@@ -358,8 +359,9 @@ def main(argv=None):
                             "rows' own curvature, rings_fit with the surface fit and the tensile "
                             "correction (default: the smoothed-radius pair)")
         p.add_argument("--quiet-exit", action="store_true",
-                       help=f"numerics.bulk_viscosity = {QUIET_BULK_VISCOSITY:g} and a {REFILL_NOZZLE:g} d0 nozzle "
-                            "that refills (nozzle.refill) in every run")
+                       help=f"numerics.bulk_viscosity = {QUIET_BULK_VISCOSITY:g}, a {REFILL_NOZZLE:g} d0 nozzle "
+                            "that refills (nozzle.refill) and domain.split_axis_rings in every run (needs a "
+                            "rings --axis-pair)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -375,6 +377,8 @@ def main(argv=None):
         ap.error(f"--remove-drops-below-h {args.remove_h}: expected a positive number")
     if args.size_c is not None and not args.size_c > 0:
         ap.error(f"--size-c {args.size_c}: expected a positive number")
+    if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
+        ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
     args.root = os.path.abspath(args.root)

@@ -465,9 +465,12 @@ std::string step_once(Solver& solver, RunOutputs& out, std::optional<JetRun>& je
             (void)solver.deactivate(gone);
         (void)solver.append_fluid(jet->refill(solver.particles()));
     }
-    if (const std::size_t split = solver.split_heavy_rings(); split > 0)
-        log.line(fmt::format("step {} t = {:.6g} s: {} ring(s) too heavy for their radius split in two",
-                             st.step, st.time, split));
+    (void)solver.split_heavy_rings();
+    if (output_due)
+        if (const std::size_t split = solver.rings_split_since_asked(); split > 0)
+            log.line(fmt::format("step {} t = {:.6g} s: {} ring(s) too heavy for their radius split in two "
+                                 "since the last output",
+                                 st.step, st.time, split));
     if (jet) {
         if (std::string why = jet->stop_due(st.time); !why.empty()) return why;
     }

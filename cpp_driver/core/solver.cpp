@@ -335,6 +335,7 @@ std::size_t Solver::split_heavy_rings() {
                           ParticleKind::Fluid);
         ps_.z[i] += 0.5 * dz;
     }
+    rings_split_unasked_ += halves.size();
     return append_fluid(halves);
 }
 

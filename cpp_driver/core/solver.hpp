@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/hdf5_output.hpp"
@@ -62,6 +63,8 @@ public:
     // velocity, density and pressure: mass, momentum and centre of mass kept. Returns how many
     // were split (0 when the key is off).
     std::size_t split_heavy_rings();
+    // The rings split since the last call (for the log; not kept by a checkpoint).
+    std::size_t rings_split_since_asked() { return std::exchange(rings_split_unasked_, 0); }
     // Pair rates at the current state (tests and diagnostics); returns max visc term.
     double compute_rates();
     // Diagnostics (core/linear_modes.cpp): the particles to edit in place, then
@@ -129,6 +132,7 @@ private:
     std::vector<double> wall_nx_, wall_nz_, wall_db_, wall_df_;
     std::vector<double> colour_, st_nx_, st_nz_, kappa_;
     std::vector<double> list_x_, list_z_;
+    std::size_t rings_split_unasked_ = 0;
     std::vector<char> was_active_;  // active flags before the last step with a removal
     void* ws_ = nullptr;
 };

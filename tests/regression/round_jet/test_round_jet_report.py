@@ -142,6 +142,16 @@ def main():
         check("domain.axis_pair=rings" in p.stdout and "surface_tension.curvature=surface_fit" in p.stdout
               and "numerics.tensile_correction=on" in p.stdout and "eps0.01_n10_c8_rings_fit" in p.stdout,
               f"--axis-pair rings_fit: {p.stdout}")
+        # --quiet-exit: the bulk viscosity and a 3 d0 nozzle that refills, in a directory of its own
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--axis-pair", "rings_fit", "--quiet-exit", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("numerics.bulk_viscosity=0.5" in p.stdout and "nozzle.refill=true" in p.stdout
+              and "domain.split_axis_rings=true" in p.stdout
+              and "nozzle.length_over_d0=3 " in p.stdout and "eps0.01_n10_c8_rings_fit_quiet" in p.stdout,
+              f"--quiet-exit: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
         check(p.returncode == 2 and "--size-c" in p.stderr, f"--size-c 0: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--only", "nope"], capture_output=True, text=True)
