@@ -2,8 +2,9 @@
 an analysis prints, and check its numbers against validation targets [LO, HI] and regression references REF +- TOL
 (surface_tension/check_drop.py,
 axisymmetric/check_axi.py); for the scripts that run sphjet themselves, a run that must
-succeed (run_or_exit); and, for the scripts that read HDF5 themselves, getting an
-interpreter with numpy and h5py (with_h5py).
+succeed (run_or_exit) and a run of a case with overrides, fresh or resumed (sphjet_run); and,
+for the scripts that read HDF5 themselves, getting an interpreter with numpy and h5py
+(with_h5py) and a file's /particles (h5_particles).
 
 Every function prints what it does; a failure prints `0 passed, N failed` and returns None or
 exit status 1, so that the caller's last line is always `N passed, M failed`."""
@@ -118,3 +119,28 @@ def check_output_of(cmd, expect, show, regress=()):
         print(f"0 passed, {len(expect) + len(regress)} failed")
         return 1
     return check(s, expect, show, regress)
+
+
+def sphjet_run(sphjet, case, out, sets=(), resume=False, max_steps=None, check=True):
+    """`sphjet run -j 1 -q` of case into out with each of sets as --set (or --resume out),
+    stopped after max_steps if given. check: exit with FAIL if it fails (run_or_exit); else
+    -> the CompletedProcess, whatever its exit code."""
+    cmd = [str(sphjet), "run", "-j", "1", "-q"]
+    cmd += ["--resume", str(out)] if resume else [str(case), "--out", str(out)]
+    if not resume:
+        for s in sets:
+            cmd += ["--set", s]
+    if max_steps is not None:
+        cmd += ["--max-steps", str(max_steps)]
+    if check:
+        return run_or_exit(cmd)
+    return subprocess.run([str(c) for c in cmd], capture_output=True, text=True)
+
+
+def h5_particles(path):
+    """The /particles datasets of an HDF5 snapshot or checkpoint as numpy arrays, by name
+    (call with_h5py first)."""
+    import h5py
+    import numpy as np
+    with h5py.File(path, "r") as f:
+        return {k: np.asarray(f["particles"][k]) for k in f["particles"]}

@@ -39,7 +39,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import run_or_exit, with_h5py  # noqa: E402  (tests/regression/)
+from summary_checks import h5_particles, sphjet_run, with_h5py  # noqa: E402  (tests/regression/)
 
 D0, DX = 0.001194, 0.0001194
 H = 2.0 * DX
@@ -49,15 +49,6 @@ SETS = ["nozzle.disturbance=0", "nozzle.length_over_d0=6", "time.tmax=0.002", "t
         "breakup.check_every=0.0001", "output.format=\"hdf5\""]
 
 
-def run(sphjet, case, out, extra=(), resume=False, max_steps=None):
-    cmd = [str(sphjet), "run", "-j", "1", "-q"]
-    cmd += ["--resume", str(out)] if resume else [str(case), "--out", str(out)]
-    if not resume:
-        for s in SETS + list(extra):
-            cmd += ["--set", s]
-    if max_steps is not None:
-        cmd += ["--max-steps", str(max_steps)]
-    return run_or_exit(cmd)
 
 
 def rows(path):
@@ -77,14 +68,10 @@ def same_tables(a, b, first_flux):
     return True
 
 
-def particles(h5py, np, path):
-    with h5py.File(path, "r") as f:
-        return {k: np.asarray(f["particles"][k]) for k in f["particles"]}
 
 
 def main():
     with_h5py()
-    import h5py
     import numpy as np
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
     shutil.rmtree(work, ignore_errors=True)
@@ -97,7 +84,7 @@ def main():
     fails = []
 
     ref = work / "on"
-    run(sphjet, case, ref, ["breakup.remove_drops_below_h=2"])
+    sphjet_run(sphjet, case, ref, SETS + ["breakup.remove_drops_below_h=2"])
     removed = rows(ref / "removed_drops.csv")
     print(f"1. removed_drops.csv: {len(removed)} row(s) (must be 1): {removed}")
     if len(removed) != 1:
@@ -120,7 +107,7 @@ def main():
         fails.append("log lines")
 
     snaps = sorted(ref.glob("snap_*.h5"))
-    p = particles(h5py, np, snaps[-1])
+    p = h5_particles(snaps[-1])
     fluid = p["kind"] == 2  # ParticleKind::Fluid
     gone = fluid & (p["active"] == 0)
     print(f"3. last snapshot {snaps[-1].name}: {int(gone.sum())} inactive fluid particles (must be "
@@ -134,19 +121,19 @@ def main():
         fails.append("the larger sphere was touched")
 
     off = work / "off"
-    run(sphjet, case, off)
+    sphjet_run(sphjet, case, off, SETS)
     off_rows = [d for d in rows(off / "drops.csv") if abs(float(d["zc"]) - Z_SMALL) < DX]
     print(f"4. key off: removed_drops.csv exists: {(off / 'removed_drops.csv').exists()} (must not); the small "
           f"sphere listed at {len(off_rows)} checks")
     if (off / "removed_drops.csv").exists() or "removed a drop" in (off / "run.log").read_text() or not off_rows:
         fails.append("key off")
 
-    ref_cp = particles(h5py, np, ref / "checkpoint.h5")
+    ref_cp = h5_particles(ref / "checkpoint.h5")
     for stop in (step, step - 1, step + 200):
         d = work / f"resumed_{stop}"
-        run(sphjet, case, d, ["breakup.remove_drops_below_h=2"], max_steps=stop)
-        run(sphjet, case, d, resume=True)
-        cp = particles(h5py, np, d / "checkpoint.h5")
+        sphjet_run(sphjet, case, d, SETS + ["breakup.remove_drops_below_h=2"], max_steps=stop)
+        sphjet_run(sphjet, case, d, resume=True)
+        cp = h5_particles(d / "checkpoint.h5")
         same = set(cp) == set(ref_cp) and all(cp[k].tobytes() == ref_cp[k].tobytes() for k in cp)
         tables = same_tables(d, ref, first_flux=stop >= step)
         print(f"5. stopped after step {stop}, resumed: final /particles bitwise equal: {same}; "
@@ -156,10 +143,10 @@ def main():
             fails.append(f"resume at step {stop}")
     bulk = ["breakup.remove_drops_below_h=2", "numerics.bulk_viscosity=0.5"]
     straight, stopped = work / "bulk", work / "bulk_resumed"
-    run(sphjet, case, straight, bulk)
-    run(sphjet, case, stopped, bulk, max_steps=300)
-    run(sphjet, case, stopped, resume=True)
-    a, b = particles(h5py, np, straight / "checkpoint.h5"), particles(h5py, np, stopped / "checkpoint.h5")
+    sphjet_run(sphjet, case, straight, SETS + bulk)
+    sphjet_run(sphjet, case, stopped, SETS + bulk, max_steps=300)
+    sphjet_run(sphjet, case, stopped, resume=True)
+    a, b = h5_particles(straight / "checkpoint.h5"), h5_particles(stopped / "checkpoint.h5")
     same = set(a) == set(b) and all(a[k].tobytes() == b[k].tobytes() for k in a)
     acts = a["rho"].tobytes() != ref_cp["rho"].tobytes()
     print(f"6. bulk viscosity 0.5, stopped after step 300, resumed: final /particles bitwise equal: {same}; "

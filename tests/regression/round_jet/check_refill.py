@@ -30,7 +30,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import run_or_exit, with_h5py  # noqa: E402  (tests/regression/)
+from summary_checks import h5_particles, sphjet_run, with_h5py  # noqa: E402  (tests/regression/)
 
 D0, DX, U0 = 0.001194, 0.0001194, 0.7814
 Z0 = 6 * D0
@@ -38,25 +38,12 @@ SETS = ["nozzle.disturbance=0", "nozzle.length_over_d0=3", f"nozzle.z0={Z0!r}",
         f"domain.lz={Z0 + 3.5 * D0!r}", "time.tmax=0.024", "time.out=0.002", "breakup.check_every=0.0002"]
 
 
-def run(sphjet, case, out, extra=(), resume=False, max_steps=None, check=True):
-    cmd = [str(sphjet), "run", "-j", "1", "-q"]
-    cmd += ["--resume", str(out)] if resume else [str(case), "--out", str(out)]
-    if not resume:
-        for s in SETS + list(extra):
-            cmd += ["--set", s]
-    if max_steps is not None:
-        cmd += ["--max-steps", str(max_steps)]
-    return run_or_exit(cmd) if check else __import__("subprocess").run(cmd, capture_output=True, text=True)
 
 
-def particles(h5py, np, path):
-    with h5py.File(path, "r") as f:
-        return {k: np.asarray(f["particles"][k]) for k in f["particles"]}
 
 
 def main():
     with_h5py()
-    import h5py
     import numpy as np
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
     shutil.rmtree(work, ignore_errors=True)
@@ -65,7 +52,7 @@ def main():
     fails = []
 
     ref = work / "on"
-    run(sphjet, case, ref, ["nozzle.refill=true"])
+    sphjet_run(sphjet, case, ref, SETS + ["nozzle.refill=true"])
     log = (ref / "run.log").read_text()
     done = [x for x in log.splitlines() if x.startswith("done:")]
     print(f"1. {done[:1]}; 'ran dry' in the log: {'ran dry' in log}")
@@ -82,7 +69,7 @@ def main():
         fails.append("orifice speed")
 
     snaps = sorted(ref.glob("snap_*.h5"))
-    p = particles(h5py, np, snaps[-1])
+    p = h5_particles(snaps[-1])
     s = Z0 - p["z"]  # along the jet (down) from the orifice
     plug = (p["kind"] == 2) & (p["active"] == 1) & (s < 0) & (p["x"] <= 0.5 * D0 + 0.25 * DX)
     zs = np.unique(np.round(s[plug] / DX, 6))
@@ -96,23 +83,23 @@ def main():
     if not (set(per_row) == {5} and np.all(np.abs(gaps / DX - 1) < 1e-9) and -29.5 - 1e-9 <= back < -28.5):
         fails.append("plug rows")
 
-    a1 = int(particles(h5py, np, snaps[-2])["active"].sum())
+    a1 = int(h5_particles(snaps[-2])["active"].sum())
     a2 = int(p["active"].sum())
     print(f"4. active particles at the last two snapshots: {a1}, {a2}; arrays hold {len(p['active'])}")
     if not (abs(a2 - a1) < 0.1 * a1 and len(p["active"]) > 1.5 * a2):
         fails.append("flat cost")
 
     d = work / "resumed"
-    run(sphjet, case, d, ["nozzle.refill=true"], max_steps=3000)
-    run(sphjet, case, d, resume=True)
-    a, b = particles(h5py, np, ref / "checkpoint.h5"), particles(h5py, np, d / "checkpoint.h5")
+    sphjet_run(sphjet, case, d, SETS + ["nozzle.refill=true"], max_steps=3000)
+    sphjet_run(sphjet, case, d, resume=True)
+    a, b = h5_particles(ref / "checkpoint.h5"), h5_particles(d / "checkpoint.h5")
     same = set(a) == set(b) and all(a[k].tobytes() == b[k].tobytes() for k in a)
     print(f"5. stopped after step 3000 and resumed: final /particles bitwise equal: {same}")
     if not same:
         fails.append("resume")
 
     off = work / "off"
-    r = run(sphjet, case, off, check=False)
+    sphjet_run(sphjet, case, off, SETS, check=False)
     dry = "ran dry" in (off / "run.log").read_text()
     print(f"6. without the key: 'ran dry' in the log: {dry}")
     if not dry:
