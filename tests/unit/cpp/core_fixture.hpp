@@ -36,6 +36,25 @@ struct CoreParticles {
     }
 };
 
+// The offsets of a square lattice of spacing dx within 3 spacings in x and z, the origin left
+// out: their z components sz and the kernel's F = W'/r at their lengths (the lattice sums of the
+// tests' factors).
+struct LatticeOffsets {
+    std::vector<double> sz, f;
+};
+inline LatticeOffsets lattice_offsets(int kernel, double h, double dx) {
+    LatticeOffsets o;
+    std::vector<double> r;
+    for (int i = -3; i <= 3; ++i)
+        for (int j = -3; j <= 3; ++j)
+            if (i != 0 || j != 0) r.push_back(std::hypot(i, j) * dx), o.sz.push_back(j * dx);
+    std::vector<double> w(r.size());
+    o.f.resize(r.size());
+    if (sph_kernel_eval(kernel, h, static_cast<std::int64_t>(r.size()), r.data(), w.data(), o.f.data()) != SPH_OK)
+        o.f.clear();
+    return o;
+}
+
 inline sph_params_t water_params(int kernel, double h) {
     sph_params_t p{};
     p.numerics.kernel = kernel;

@@ -74,14 +74,10 @@ TEST(CoreBulkViscosity, GradientOfACompressionWave) {
     for (std::size_t i = 0; i < ar.size(); ++i) ar[i] = A * std::sin(k * ps.z[i]);
     const auto [ax, az] = accelerations(ps, prm, beta, ar);
 
-    std::vector<double> r, sz;
-    for (int i = -3; i <= 3; ++i)
-        for (int j = -3; j <= 3; ++j)
-            if (i != 0 || j != 0) r.push_back(std::hypot(i, j) * dx), sz.push_back(j * dx);
-    std::vector<double> w(r.size()), f(r.size());
-    ASSERT_EQ(sph_kernel_eval(5, prm.numerics.h, std::int64_t(r.size()), r.data(), w.data(), f.data()), SPH_OK);
+    const auto lat = sphjet_test::lattice_offsets(5, prm.numerics.h, dx);
+    ASSERT_FALSE(lat.f.empty());
     double factor = 0;
-    for (std::size_t i = 0; i < r.size(); ++i) factor -= dx * dx * std::sin(k * sz[i]) * sz[i] * f[i] / k;
+    for (std::size_t i = 0; i < lat.f.size(); ++i) factor -= dx * dx * std::sin(k * lat.sz[i]) * lat.sz[i] * lat.f[i] / k;
 
     const double zeta = beta * prm.eos.rho0 * prm.eos.c0 * prm.numerics.h;
     const double scale = zeta * A * k / (prm.eos.rho0 * prm.eos.rho0);

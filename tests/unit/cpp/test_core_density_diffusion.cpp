@@ -84,14 +84,11 @@ TEST(CoreDensityDiffusion, LaplacianOfASineWave) {
     const auto ps = block(20, 40, dx, [&](double z) { return 1000 * (1 + eps * std::sin(k * z)); });
     const auto rate = density_rates(ps, prm, delta);
 
-    std::vector<double> r, sz;
-    for (int i = -3; i <= 3; ++i)
-        for (int j = -3; j <= 3; ++j)
-            if (i != 0 || j != 0) r.push_back(std::hypot(i, j) * dx), sz.push_back(j * dx);
-    std::vector<double> w(r.size()), f(r.size());
-    ASSERT_EQ(sph_kernel_eval(5, prm.numerics.h, std::int64_t(r.size()), r.data(), w.data(), f.data()), SPH_OK);
+    const auto lat = sphjet_test::lattice_offsets(5, prm.numerics.h, dx);
+    ASSERT_FALSE(lat.f.empty());
     double factor = 0;
-    for (std::size_t i = 0; i < r.size(); ++i) factor -= 2 * (1 - std::cos(k * sz[i])) * f[i] * dx * dx / (k * k);
+    for (std::size_t i = 0; i < lat.f.size(); ++i)
+        factor -= 2 * (1 - std::cos(k * lat.sz[i])) * lat.f[i] * dx * dx / (k * k);
 
     const double scale = delta * prm.numerics.h * prm.eos.c0 * k * k * 1000 * eps;
     double num = 0, den = 0;
