@@ -4,7 +4,8 @@ an analysis prints, and check its numbers against validation targets [LO, HI] an
 axisymmetric/check_axi.py); for the scripts that run sphjet themselves, a run that must
 succeed (run_or_exit) and a run of a case with overrides, fresh or resumed (sphjet_run); and,
 for the scripts that read HDF5 themselves, getting an interpreter with numpy and h5py
-(with_h5py) and a file's /particles (h5_particles).
+(with_h5py), a file's /particles (h5_particles) and the final ones of a run stopped and
+resumed (resumed_particles), compared bitwise (same_particles).
 
 Every function prints what it does; a failure prints `0 passed, N failed` and returns None or
 exit status 1, so that the caller's last line is always `N passed, M failed`."""
@@ -144,3 +145,16 @@ def h5_particles(path):
     import numpy as np
     with h5py.File(path, "r") as f:
         return {k: np.asarray(f["particles"][k]) for k in f["particles"]}
+
+
+def resumed_particles(sphjet, case, out, sets, stop):
+    """The final checkpoint's /particles of case run with sets into out, stopped after step
+    stop (--max-steps) and resumed to its end."""
+    sphjet_run(sphjet, case, out, sets, max_steps=stop)
+    sphjet_run(sphjet, case, out, resume=True)
+    return h5_particles(os.path.join(str(out), "checkpoint.h5"))
+
+
+def same_particles(a, b):
+    """Whether two h5_particles dicts hold the same datasets, bitwise."""
+    return set(a) == set(b) and all(a[k].tobytes() == b[k].tobytes() for k in a)

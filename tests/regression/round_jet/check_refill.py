@@ -30,7 +30,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from summary_checks import h5_particles, sphjet_run, with_h5py  # noqa: E402  (tests/regression/)
+from summary_checks import h5_particles, resumed_particles, same_particles, sphjet_run, with_h5py  # noqa: E402  (tests/regression/)
 
 D0, DX, U0 = 0.001194, 0.0001194, 0.7814
 Z0 = 6 * D0
@@ -89,11 +89,8 @@ def main():
     if not (abs(a2 - a1) < 0.1 * a1 and len(p["active"]) > 1.5 * a2):
         fails.append("flat cost")
 
-    d = work / "resumed"
-    sphjet_run(sphjet, case, d, SETS + ["nozzle.refill=true"], max_steps=3000)
-    sphjet_run(sphjet, case, d, resume=True)
-    a, b = h5_particles(ref / "checkpoint.h5"), h5_particles(d / "checkpoint.h5")
-    same = set(a) == set(b) and all(a[k].tobytes() == b[k].tobytes() for k in a)
+    same = same_particles(h5_particles(ref / "checkpoint.h5"),
+                          resumed_particles(sphjet, case, work / "resumed", SETS + ["nozzle.refill=true"], 3000))
     print(f"5. stopped after step 3000 and resumed: final /particles bitwise equal: {same}")
     if not same:
         fails.append("resume")
