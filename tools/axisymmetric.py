@@ -67,6 +67,31 @@ def weber_omega(ka, oh):
     return -b / 2.0
 
 
+def spatial_growth(ka_f, we_a, oh):
+    """The spatial growth of a jet forced at a fixed frequency (Keller, Rubinow & Tu 1973, with
+    Weber's viscous term): a wave exp(i (k z - omega t)) of real omega = U k_f on a jet moving
+    at U grows in its own frame at s = -i (omega - k U), and s^2 + 3 oh k^2 s = rayleigh_omega2(k)
+    (lengths in a, times in sqrt(rho a^3 / sigma), so U = sqrt(we_a), we_a = rho U^2 a / sigma)
+    fixes the complex k. Returns -Im(k) a, the growth per radius along the jet; the temporal
+    picture's value is weber_omega(ka_f, oh) / sqrt(we_a). Newton's method from that value."""
+    u = math.sqrt(we_a)
+    omega = u * ka_f
+
+    def f(k):
+        s = -1j * (omega - k * u)
+        return s * s + 3.0 * oh * k * k * s - rayleigh_omega2(k)
+
+    k = complex(ka_f, -weber_omega(ka_f, oh) / u)
+    for _ in range(50):
+        step = 1e-7 * (1.0 + abs(k))
+        df = (f(k + step) - f(k - step)) / (2.0 * step)
+        dk = f(k) / df
+        k -= dk
+        if abs(dk) < 1e-13:
+            break
+    return -k.imag
+
+
 def sphere_mode2_omega2(sigma, rho, radius):
     """Rayleigh (1879) mode n = 2 of a free drop: omega^2 = n (n - 1) (n + 2) sigma / (rho R^3)."""
     return 8.0 * sigma / (rho * radius ** 3)
