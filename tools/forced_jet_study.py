@@ -36,7 +36,9 @@ What the report measures, each run over the samples after the start-up head has 
   L and L + lambda, mean L + lambda/2;
 - the drops: the median equivalent diameter of the main drops (d >= d0) over the window
   against one wavelength's volume, (3/2 d0^2 lambda)^(1/3) = 1.89 d0, their count and that of
-  the satellites per forcing period, and the satellites' share of the drops' volume.
+  the satellites per sample, and the satellites' share of the drops' volume;
+- the pressure's standard deviation at the last snapshot in the intact jet (to 2 d0 before the
+  pinch-off length) and among the drops (from 1 d0 past it), in sigma/a.
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
 """
@@ -206,6 +208,8 @@ def read_run(run_dir, info):
         r["main_per_sample"], r["sat_per_sample"] = len(main) / n_samples, len(sat) / n_samples
     except (OSError, KeyError, ValueError) as e:
         r["notes"].append(f"drops.csv: {e}")
+    if r.get("L_pinch"):
+        r["p_std"] = pressure_noise(run_dir, info, r["L_pinch"])
     boom = blew_up(run_dir)
     if boom:
         r["status"] = "blew up"
@@ -213,6 +217,32 @@ def read_run(run_dir, info):
     else:
         r["status"] = "finished" if r["finished"] else "unfinished"
     return r
+
+
+def pressure_noise(run_dir, info, l_pinch):
+    """The standard deviation of the particles' pressure at the last snapshot, in sigma/a,
+    in the intact jet up to 2 d0 before the pinch-off length and among the drops from 1 d0
+    past it: (jet, drops), or None without a snapshot."""
+    import glob
+    snaps = sorted(glob.glob(os.path.join(run_dir, "snap_*.h5")))
+    if not snaps:
+        return None
+    import h5py
+    with h5py.File(snaps[-1], "r") as h:
+        g = h["particles"]
+        act = g["active"][()] != 0
+        z, p = g["z"][()][act], g["p"][()][act]
+    sd = (open_z0(snaps[-1]) - z) / info["d0"]
+
+    def std(v):
+        v = list(v)
+        if len(v) < 2:
+            return None
+        m = sum(v) / len(v)
+        return math.sqrt(sum((x - m) ** 2 for x in v) / len(v)) / (SIGMA / (0.5 * info["d0"]))
+
+    return (std(pv for s, pv in zip(sd, p) if 0.0 <= s < l_pinch - 2.0),
+            std(pv for s, pv in zip(sd, p) if s > l_pinch + 1.0))
 
 
 def report(args):
@@ -223,9 +253,11 @@ def report(args):
     os.makedirs(args.out, exist_ok=True)
     header = ["run", "U [m/s]", "We_d", "eps", "delta0/a target", "delta0/a measured",
               "growth / Weber's (temporal), / spatial", "L/d0 pinch-off (pinches)",
-              "L/d0 theory, temporal: target delta0, measured", "L/d0 theory, spatial: measured delta0",
+              "L/d0 theory from the target delta0: temporal, spatial",
+              "L/d0 theory from the measured delta0: temporal, spatial",
+              "pinch-off vs spatial theory: target, measured delta0",
               "L/d0 mean (std)", "main drop d/d0 median (10-90%)", "main drops, satellites per sample",
-              "satellite volume share", "status", "wall [s]"]
+              "satellite volume share", "p std / (sigma/a): jet, drops (last snapshot)", "status", "wall [s]"]
     rows, missing, done = [], [], []
     for _s, name, _sets, info in plan(args.d0_over_dx):
         r = read_run(os.path.join(sdir, name), info)
@@ -234,23 +266,37 @@ def report(args):
             continue
         done.append((info, r))
         g = groups(info["U"], info["d0"])
-        l_t = l_s = growth = None
+
+        def lengths(delta):
+            c = math.log(1.0 / delta) * info["U"] / info["d0"]
+            return c / info["omega"], c / info["omega_spatial"]
+
+        def err(l_th):
+            return (None if r.get("L_pinch") is None
+                    else f"{100.0 * (r['L_pinch'] - l_th) / l_th:+.1f}%")
+
+        lt_target, ls_target = lengths(info["delta"])
+        measured, growth, err_m = "-, -", "-", "-"
         if r.get("delta0"):
-            c = math.log(1.0 / r["delta0"])
-            l_t = info["U"] * c / info["omega"] / info["d0"]
-            l_s = info["U"] * c / info["omega_spatial"] / info["d0"]
+            lt_m, ls_m = lengths(r["delta0"])
+            measured = f"{lt_m:.2f}, {ls_m:.2f}"
             growth = f"{r['omega'] / info['omega']:.3f}, {r['omega'] / info['omega_spatial']:.3f}"
+            err_m = err(ls_m) or "-"
         q = r.get("drop_q") or (None, None)
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{info['eps']:.4g}", f"{info['delta']:g}",
-                     fmt(r.get("delta0"), ".3g"), growth or "-",
+                     fmt(r.get("delta0"), ".3g"), growth,
                      f"{fmt(r.get('L_pinch'))} ({r.get('n_pinch', 0)})",
-                     f"{info['L_d0']:.2f}, {fmt(l_t)}", fmt(l_s),
+                     f"{lt_target:.2f}, {ls_target:.2f}", measured,
+                     f"{err(ls_target) or '-'}, {err_m}",
                      f"{fmt(r.get('L_mean'))} ({fmt(r.get('L_std'))})",
                      f"{fmt(r.get('drop_median'))} ({fmt(q[0])}-{fmt(q[1])})",
                      f"{fmt(r.get('main_per_sample'))}, {fmt(r.get('sat_per_sample'))}",
-                     fmt(r.get("sat_share"), ".3f"), r["status"], fmt(r["wall_s"], ".0f")])
+                     fmt(r.get("sat_share"), ".3f"),
+                     f"{fmt((r.get('p_std') or (None, None))[0])}, {fmt((r.get('p_std') or (None, None))[1])}",
+                     r["status"], fmt(r["wall_s"], ".0f")])
     text = (f"# Forced round jets (generated by tools/forced_jet_study.py report)\n\n"
-            f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else sdir}: d0/dx = "
+            f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else os.path.join('ROOT', os.path.basename(sdir))}"
+            f" (ROOT: `run --root`): d0/dx = "
             f"{args.d0_over_dx:g}, k a = {KA}, the quiet exit; one wavelength's drop "
             f"{theory(1.0, D0_MC, 1e-2)['drop_d0']:.3f} d0.\n\n" + md_table(header, rows) +
             f"\nMissing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n")
@@ -258,6 +304,7 @@ def report(args):
         f.write(text)
     if not args.no_figures and done:
         figure(os.path.join(args.out, "forced_jets_envelope.png"), done)
+        rz_figure(os.path.join(args.out, "forced_jets_rz.png"), sdir, done)
     print(text)
     return 0
 
@@ -292,6 +339,58 @@ def figure(path, done):
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def rz_figure(path, sdir, done):
+    """Each run's particles at its last snapshot, mirrored about the axis, s / d0 from the
+    orifice across: the jet, its drops and satellites as they are (one dot a particle), with a
+    tick every wavelength from the pinch-off point."""
+    import glob
+    import h5py
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    shown = []
+    for info, r in done:
+        snaps = sorted(glob.glob(os.path.join(sdir, run_name(info["U"], info["delta"]), "snap_*.h5")))
+        if snaps:
+            shown.append((info, r, snaps[-1]))
+    if not shown:
+        return
+    top = max(float(open_z0(x[2])) / x[0]["d0"] for x in shown)
+    fig, axes = plt.subplots(len(shown), 1, figsize=(11.0, 0.9 * len(shown) + 0.6), squeeze=False)
+    for ax, (info, r, snap) in zip(axes[:, 0], shown):
+        with h5py.File(snap, "r") as h:
+            g = h["particles"]
+            act = g["active"][()] != 0 if "active" in g else slice(None)
+            x, z = g["x"][()][act], g["z"][()][act]
+            t = float(h.attrs["time"])
+        d0 = info["d0"]
+        sd = (open_z0(snap) - z) / d0
+        ax.plot(sd, x / d0, ",", color="k")
+        ax.plot(sd, -x / d0, ",", color="k")
+        if r.get("L_pinch"):
+            k = r["L_pinch"]
+            while k < top:
+                ax.axvline(k, color="C3", lw=0.4, alpha=0.6)
+                k += info["lambda_d0"]
+        ax.set_xlim(-0.5, top)
+        ax.set_ylim(-1.6, 1.6)
+        ax.set_aspect("equal")
+        ax.set_yticks([])
+        ax.set_title(f"U = {info['U']:g} m/s, delta0/a = {info['delta']:g}, t = {1000 * t:.1f} ms "
+                     f"(red: the pinch-off length, then one wavelength apart)", fontsize=7)
+    axes[-1, 0].set_xlabel("s / d0 from the orifice")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def open_z0(snap):
+    """The orifice's height of the run a snapshot belongs to (its case.toml)."""
+    import tomllib
+    with open(os.path.join(os.path.dirname(snap), "case.toml"), "rb") as f:
+        return tomllib.load(f)["nozzle"]["z0"]
 
 
 def main(argv=None):
