@@ -52,7 +52,7 @@ from axisymmetric import spatial_growth, weber_omega  # noqa: E402
 from jet_noise import envelope  # noqa: E402
 from round_jet_study import (BASE_CASE, D0_MC, MU, QUIET_BULK_VISCOSITY, REFILL_NOZZLE, RHO,  # noqa: E402
                              SIGMA, groups)
-from study_runs import (StudyError, add_run_arguments, blew_up, fmt, md_table, read_csv,  # noqa: E402
+from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, fmt, md_table, read_csv,  # noqa: E402
                         run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -128,9 +128,9 @@ def cmd_run(args):
 # ---------------------------------------------------------------- analysis
 def fit_sinh(env, u, d0, a_max=A_LINEAR):
     """Fit A(s) = 2 delta0 sinh(omega s / u) (least squares in ln A) over the envelope's points
-    with A < a_max, from the orifice to the first point past a_max: -> (delta0/a, omega, s_end/d0)
-    or None. omega is searched on a grid of 0.1% steps over 0.2-5 x 100 1/s, delta0 then follows
-    in closed form."""
+    from the orifice up to the first one at or above a_max (excluded): -> (delta0/a, omega,
+    s_end/d0) or None. omega is searched on a grid of 0.1% steps from 20 to 5000 1/s; delta0
+    then follows in closed form."""
     pts = []
     for s, amp, _n in env:
         if amp >= a_max:
@@ -409,15 +409,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
-    args.root = os.path.abspath(args.root)
-    try:
-        if args.cmd == "run":
-            args.sphjet = os.path.abspath(args.sphjet)
-            return cmd_run(args)
-        return report(args)
-    except StudyError as e:
-        print(f"forced_jet_study: {e}", file=sys.stderr)
-        return 2
+    return dispatch(args, cmd_run, report, "forced_jet_study")
 
 
 if __name__ == "__main__":

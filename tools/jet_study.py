@@ -34,7 +34,7 @@ import math
 import os
 import sys
 
-from study_runs import (StudyError, add_run_arguments, blew_up, drops_at, first_breakup, fmt,
+from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
                         md_table, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -574,14 +574,7 @@ def main(argv=None):
         ap.error(f"--dx {args.dx}: expected a spacing > 0 [m]")
     if args.cmd == "run" and args.threads < 1:
         ap.error(f"--threads {args.threads}: expected >= 1")
-    args.root = os.path.abspath(args.root)   # sphjet runs with cwd = REPO
-    if args.cmd == "run":
-        args.sphjet = os.path.abspath(args.sphjet)
-    try:
-        return cmd_run(args) if args.cmd == "run" else cmd_report(args)
-    except StudyError as e:
-        print(f"jet_study: {e}", file=sys.stderr)
-        return 2
+    return dispatch(args, cmd_run, cmd_report, "jet_study")
 
 
 if __name__ == "__main__":

@@ -58,7 +58,7 @@ import os
 import statistics
 import sys
 
-from study_runs import (StudyError, add_run_arguments, blew_up, drops_at, first_breakup, fmt,
+from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
                         is_broken, md_table, read_csv, run_all, run_summary, select_runs,
                         study_parser)
 
@@ -381,15 +381,7 @@ def main(argv=None):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
-    args.root = os.path.abspath(args.root)
-    try:
-        if args.cmd == "run":
-            args.sphjet = os.path.abspath(args.sphjet)
-            return cmd_run(args)
-        return report(args)
-    except StudyError as e:
-        print(f"round_jet_study: {e}", file=sys.stderr)
-        return 2
+    return dispatch(args, cmd_run, report, "round_jet_study")
 
 
 if __name__ == "__main__":

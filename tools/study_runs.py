@@ -118,6 +118,20 @@ def add_run_arguments(p, set_names, repo):
     p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
 
 
+def dispatch(args, run, report, tool):
+    """A study's `run` or `report` (args.cmd), with --root (and for `run` --sphjet) made
+    absolute, since sphjet runs in the repository; a StudyError is printed as `tool: message`
+    and gives exit code 2."""
+    args.root = os.path.abspath(args.root)
+    if args.cmd == "run":
+        args.sphjet = os.path.abspath(args.sphjet)
+    try:
+        return run(args) if args.cmd == "run" else report(args)
+    except StudyError as e:
+        print(f"{tool}: {e}", file=sys.stderr)
+        return 2
+
+
 # ---------------------------------------------------------------- run
 def run_command(sphjet, case, run_dir, sets, threads, tmax):
     """-> (state, argv): state is 'done', 'resume' or 'new'."""
