@@ -52,8 +52,8 @@ from axisymmetric import spatial_growth, weber_omega  # noqa: E402
 from jet_noise import envelope  # noqa: E402
 from round_jet_study import (BASE_CASE, D0_MC, MU, QUIET_BULK_VISCOSITY, REFILL_NOZZLE, RHO,  # noqa: E402
                              SIGMA, groups)
-from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, fmt, md_table, read_csv,  # noqa: E402
-                        run_all, run_summary, select_runs, study_parser)
+from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, fmt, is_broken,  # noqa: E402
+                        md_table, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 U_SPEEDS = (0.7814, 1.5699)       # m/s, two of Mansour & Chigier's jets: We_d = 10.1 and 40.9
@@ -156,7 +156,7 @@ def pinch_lengths(rows, lam_d0):
     half a wavelength since the sample before (both broken)."""
     out = []
     for prev, cur in zip(rows, rows[1:]):
-        if prev["broken"] == "1" and cur["broken"] == "1":
+        if is_broken(prev) and is_broken(cur):
             lp, lc = float(prev["L_over_d0"]), float(cur["L_over_d0"])
             if lp - lc > 0.5 * lam_d0:
                 out.append(lc)
@@ -175,7 +175,7 @@ def read_run(run_dir, info):
     if window is None:
         return r
     r["n_window"] = len(window)
-    broken = [x for x in window if x["broken"] == "1"]
+    broken = [x for x in window if is_broken(x)]
     r["n_broken"] = len(broken)
     if broken:
         ls = [float(x["L_over_d0"]) for x in broken]
