@@ -52,13 +52,15 @@ from axisymmetric import spatial_growth, weber_omega  # noqa: E402
 from jet_noise import envelope  # noqa: E402
 from round_jet_study import (BASE_CASE, D0_MC, MU, QUIET_BULK_VISCOSITY, REFILL_NOZZLE, RHO,  # noqa: E402
                              SIGMA, groups)
-from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, fmt, is_broken,  # noqa: E402
-                        md_table, read_csv, run_all, run_summary, select_runs, study_parser)
+from study_runs import (add_run_arguments, blew_up, dispatch, fmt, is_broken,  # noqa: E402
+                        md_table, open_report, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 U_SPEEDS = (0.7814, 1.5699)       # m/s, two of Mansour & Chigier's jets: We_d = 10.1 and 40.9
 DELTAS = (1e-2, 1e-3, 1e-4)       # target delta0 / a
 KA = 0.697                        # the forcing's wave, Rayleigh's fastest
+LAMBDA_D0 = math.pi / KA          # its wavelength 2 pi a / KA, in d0
+DROP_D0 = (1.5 * LAMBDA_D0) ** (1.0 / 3.0)   # one wavelength's volume as a sphere, d/d0
 BOX_L_FACTOR, BOX_EXTRA_D0 = 1.5, 10.0   # the box reaches 1.5 L_theory + 10 d0 below the orifice
 WINDOW_PERIODS = 10               # the window after the head has gone: ten forcing periods
 SAMPLES_PER_PERIOD = 40           # breakup checks per forcing period
@@ -69,18 +71,16 @@ SET_NAME = "forced"
 # ---------------------------------------------------------------- theory
 def theory(u, d0, delta):
     """Linear theory of one forced jet: Weber's temporal growth omega [1/s], the spatial growth
-    in the same units (u0 -Im(k), Keller, Rubinow & Tu's problem), eps, L/d0 (temporal),
-    lambda/d0, the drop d/d0, the forcing period [s]."""
+    in the same units (u0 -Im(k), Keller, Rubinow & Tu's problem), eps, L/d0 (temporal), the
+    forcing period [s]."""
     a = 0.5 * d0
     t_cap = math.sqrt(RHO * a ** 3 / SIGMA)
     oh = MU / math.sqrt(RHO * SIGMA * a)
     omega = weber_omega(KA, oh) / t_cap
     omega_s = u * spatial_growth(KA, RHO * u * u * a / SIGMA, oh) / a
     k = KA / a
-    lam = 2.0 * math.pi / k
     return {"omega": omega, "omega_spatial": omega_s, "eps": 4.0 * delta * omega / (u * k),
-            "lambda_d0": lam / d0, "L_d0": u * math.log(1.0 / delta) / omega / d0,
-            "drop_d0": (1.5 * lam / d0) ** (1.0 / 3.0), "period": 2.0 * math.pi / (u * k)}
+            "L_d0": u * math.log(1.0 / delta) / omega / d0, "period": 2.0 * math.pi / (u * k)}
 
 
 def run_name(u, delta):
@@ -108,7 +108,7 @@ def plan(n):
                     "domain.axis_pair=rings", "surface_tension.curvature=surface_fit",
                     "numerics.tensile_correction=on", f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}",
                     "domain.split_axis_rings=true"]
-            info = dict(th, U=u, d0=d0, delta=delta, t_head=t_head, t_end=t_end)
+            info = dict(th, U=u, d0=d0, delta=delta, z0=below, t_head=t_head, t_end=t_end)
             runs.append((SET_NAME, run_name(u, delta), sets, info))
     return runs
 
@@ -181,7 +181,7 @@ def read_run(run_dir, info):
         ls = [float(x["L_over_d0"]) for x in broken]
         r["L_mean"] = sum(ls) / len(ls)
         r["L_std"] = math.sqrt(sum((v - r["L_mean"]) ** 2 for v in ls) / len(ls))
-    pinches = pinch_lengths(window, info["lambda_d0"])
+    pinches = pinch_lengths(window, LAMBDA_D0)
     r["n_pinch"] = len(pinches)
     r["L_pinch"] = statistics.median(pinches) if pinches else None
     steps = {x["step"] for x in window}
@@ -208,8 +208,9 @@ def read_run(run_dir, info):
         r["main_per_sample"], r["sat_per_sample"] = len(main) / n_samples, len(sat) / n_samples
     except (OSError, KeyError, ValueError) as e:
         r["notes"].append(f"drops.csv: {e}")
-    if r.get("L_pinch"):
-        r["p_std"] = pressure_noise(run_dir, info, r["L_pinch"])
+    r["snap"] = last_snapshot(run_dir, info)
+    if r["snap"] and r.get("L_pinch"):
+        r["p_std"] = pressure_noise(r["snap"], info, r["L_pinch"])
     boom = blew_up(run_dir)
     if boom:
         r["status"] = "blew up"
@@ -219,10 +220,9 @@ def read_run(run_dir, info):
     return r
 
 
-def pressure_noise(run_dir, info, l_pinch):
-    """The standard deviation of the particles' pressure at the last snapshot, in sigma/a,
-    in the intact jet up to 2 d0 before the pinch-off length and among the drops from 1 d0
-    past it: (jet, drops), or None without a snapshot."""
+def last_snapshot(run_dir, info):
+    """The active particles of the run's last snapshot: s/d0 from the orifice, r/d0, p [Pa]
+    (numpy arrays) and the time [s]; None without a snapshot."""
     import glob
     snaps = sorted(glob.glob(os.path.join(run_dir, "snap_*.h5")))
     if not snaps:
@@ -231,26 +231,26 @@ def pressure_noise(run_dir, info, l_pinch):
     with h5py.File(snaps[-1], "r") as h:
         g = h["particles"]
         act = g["active"][()] != 0
-        z, p = g["z"][()][act], g["p"][()][act]
-    sd = (open_z0(snaps[-1]) - z) / info["d0"]
+        return {"s": (info["z0"] - g["z"][()][act]) / info["d0"], "r": g["x"][()][act] / info["d0"],
+                "p": g["p"][()][act], "time": float(h.attrs["time"])}
 
-    def std(v):
-        v = list(v)
-        if len(v) < 2:
-            return None
-        m = sum(v) / len(v)
-        return math.sqrt(sum((x - m) ** 2 for x in v) / len(v)) / (SIGMA / (0.5 * info["d0"]))
 
-    return (std(pv for s, pv in zip(sd, p) if 0.0 <= s < l_pinch - 2.0),
-            std(pv for s, pv in zip(sd, p) if s > l_pinch + 1.0))
+def pressure_noise(snap, info, l_pinch):
+    """The standard deviation of the particles' pressure at the last snapshot, in sigma/a,
+    in the intact jet up to 2 d0 before the pinch-off length and among the drops from 1 d0
+    past it: (jet, drops), each None with fewer than two particles."""
+    s, p = snap["s"], snap["p"]
+    unit = SIGMA / (0.5 * info["d0"])
+
+    def std(sel):
+        return float(p[sel].std()) / unit if sel.sum() >= 2 else None
+
+    return std((s >= 0.0) & (s < l_pinch - 2.0)), std(s > l_pinch + 1.0)
 
 
 def report(args):
     sdir = study_dir(args.root, args.d0_over_dx)
-    if not os.path.isdir(sdir):
-        raise StudyError(f"{sdir}: no study there (run `forced_jet_study.py run --d0-over-dx "
-                         f"{args.d0_over_dx:g}` first)")
-    os.makedirs(args.out, exist_ok=True)
+    open_report(sdir, args.out, f"forced_jet_study.py run --d0-over-dx {args.d0_over_dx:g}")
     header = ["run", "U [m/s]", "We_d", "eps", "delta0/a target", "delta0/a measured",
               "growth / Weber's (temporal), / spatial", "L/d0 pinch-off (pinches)",
               "L/d0 theory from the target delta0: temporal, spatial",
@@ -298,13 +298,13 @@ def report(args):
             f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else os.path.join('ROOT', os.path.basename(sdir))}"
             f" (ROOT: `run --root`): d0/dx = "
             f"{args.d0_over_dx:g}, k a = {KA}, the quiet exit; one wavelength's drop "
-            f"{theory(1.0, D0_MC, 1e-2)['drop_d0']:.3f} d0.\n\n" + md_table(header, rows) +
+            f"{DROP_D0:.3f} d0.\n\n" + md_table(header, rows) +
             f"\nMissing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n")
     with open(os.path.join(args.out, "forced_jets.md"), "w") as f:
         f.write(text)
     if not args.no_figures and done:
         figure(os.path.join(args.out, "forced_jets_envelope.png"), done)
-        rz_figure(os.path.join(args.out, "forced_jets_rz.png"), sdir, done)
+        rz_figure(os.path.join(args.out, "forced_jets_rz.png"), done)
     print(text)
     return 0
 
@@ -341,56 +341,37 @@ def figure(path, done):
     plt.close(fig)
 
 
-def rz_figure(path, sdir, done):
+def rz_figure(path, done):
     """Each run's particles at its last snapshot, mirrored about the axis, s / d0 from the
     orifice across: the jet, its drops and satellites as they are (one dot a particle), with a
     tick every wavelength from the pinch-off point."""
-    import glob
-    import h5py
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    shown = []
-    for info, r in done:
-        snaps = sorted(glob.glob(os.path.join(sdir, run_name(info["U"], info["delta"]), "snap_*.h5")))
-        if snaps:
-            shown.append((info, r, snaps[-1]))
+    shown = [(info, r) for info, r in done if r.get("snap")]
     if not shown:
         return
-    top = max(float(open_z0(x[2])) / x[0]["d0"] for x in shown)
+    top = max(info["z0"] / info["d0"] for info, _r in shown)
     fig, axes = plt.subplots(len(shown), 1, figsize=(11.0, 0.9 * len(shown) + 0.6), squeeze=False)
-    for ax, (info, r, snap) in zip(axes[:, 0], shown):
-        with h5py.File(snap, "r") as h:
-            g = h["particles"]
-            act = g["active"][()] != 0 if "active" in g else slice(None)
-            x, z = g["x"][()][act], g["z"][()][act]
-            t = float(h.attrs["time"])
-        d0 = info["d0"]
-        sd = (open_z0(snap) - z) / d0
-        ax.plot(sd, x / d0, ",", color="k")
-        ax.plot(sd, -x / d0, ",", color="k")
+    for ax, (info, r) in zip(axes[:, 0], shown):
+        snap = r["snap"]
+        ax.plot(snap["s"], snap["r"], ",", color="k")
+        ax.plot(snap["s"], -snap["r"], ",", color="k")
         if r.get("L_pinch"):
             k = r["L_pinch"]
             while k < top:
                 ax.axvline(k, color="C3", lw=0.4, alpha=0.6)
-                k += info["lambda_d0"]
+                k += LAMBDA_D0
         ax.set_xlim(-0.5, top)
         ax.set_ylim(-1.6, 1.6)
         ax.set_aspect("equal")
         ax.set_yticks([])
-        ax.set_title(f"U = {info['U']:g} m/s, delta0/a = {info['delta']:g}, t = {1000 * t:.1f} ms "
+        ax.set_title(f"U = {info['U']:g} m/s, delta0/a = {info['delta']:g}, t = {1000 * snap['time']:.1f} ms "
                      f"(red: the pinch-off length, then one wavelength apart)", fontsize=7)
     axes[-1, 0].set_xlabel("s / d0 from the orifice")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)
-
-
-def open_z0(snap):
-    """The orifice's height of the run a snapshot belongs to (its case.toml)."""
-    import tomllib
-    with open(os.path.join(os.path.dirname(snap), "case.toml"), "rb") as f:
-        return tomllib.load(f)["nozzle"]["z0"]
 
 
 def main(argv=None):

@@ -35,7 +35,7 @@ import os
 import sys
 
 from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
-                        md_table, read_csv, run_all, run_summary, select_runs, study_parser)
+                        md_table, open_report, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "jet", "jet.toml")
@@ -519,10 +519,7 @@ def fig8(out, runs, dx, plt):
 
 def cmd_report(args):
     sdir = study_dir(args.root, args.dx)
-    if not os.path.isdir(sdir):
-        raise StudyError(f"{sdir}: no study at dx = {args.dx:g} m under {args.root} "
-                         f"(run `jet_study.py run --root {args.root} --dx {args.dx:g}` first)")
-    os.makedirs(args.out, exist_ok=True)
+    open_report(sdir, args.out, f"jet_study.py run --root {args.root} --dx {args.dx:g}")
     runs = {name: read_run(os.path.join(sdir, name), sets) for _s, name, sets in plan(args.dx)}
     missing, wall = report_tables(args.out, runs, args.dx, sdir)
     written = ["table1.csv", "table1.md", "inviscid.csv", "physics.csv", "physics.md"]

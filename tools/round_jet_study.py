@@ -59,7 +59,7 @@ import statistics
 import sys
 
 from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
-                        is_broken, md_table, read_csv, run_all, run_summary, select_runs,
+                        is_broken, md_table, open_report, read_csv, run_all, run_summary, select_runs,
                         study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -252,10 +252,7 @@ def read_run(run_dir, info):
 def report(args):
     sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
                      args.quiet_exit)
-    if not os.path.isdir(sdir):
-        raise StudyError(f"{sdir}: no study there (run `round_jet_study.py run --eps {args.eps:g} "
-                         f"--d0-over-dx {args.d0_over_dx:g}` first)")
-    os.makedirs(args.out, exist_ok=True)
+    open_report(sdir, args.out, f"round_jet_study.py run --eps {args.eps:g} --d0-over-dx {args.d0_over_dx:g}")
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h,
                                              args.axis_pair, args.quiet_exit)]

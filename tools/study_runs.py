@@ -132,6 +132,14 @@ def dispatch(args, run, report, tool):
         return 2
 
 
+def open_report(sdir, out, how):
+    """A report's start: sdir must hold a study (else StudyError naming it and `how`, the run
+    command that makes it); the output directory out is made."""
+    if not os.path.isdir(sdir):
+        raise StudyError(f"{sdir}: no study there (run `{how}` first)")
+    os.makedirs(out, exist_ok=True)
+
+
 # ---------------------------------------------------------------- run
 def run_command(sphjet, case, run_dir, sets, threads, tmax):
     """-> (state, argv): state is 'done', 'resume' or 'new'."""

@@ -57,7 +57,7 @@ check(abs(th["eps"] * u * k / (4.0 * th["omega"]) - delta) < 1e-12 * delta,
       f"eps = {th['eps']:.6g} gives delta0/a = {delta:g} back")
 check(abs(th["L_d0"] - u * math.log(1.0 / delta) / th["omega"] / d0) < 1e-12,
       f"L/d0 = {th['L_d0']:.4f} = u0 ln(a/delta0) / omega")
-check(abs(th["drop_d0"] - 1.891) < 1e-3, f"one wavelength's drop {th['drop_d0']:.4f} d0 (1.891)")
+check(abs(fj.DROP_D0 - 1.891) < 1e-3, f"one wavelength's drop {fj.DROP_D0:.4f} d0 (1.891)")
 
 # 3. fit_sinh
 omega, d_true = 230.0, 6e-3
@@ -72,7 +72,7 @@ check(fit is not None and abs(fit[0] / d_true - 1) < 3e-3 and abs(fit[1] / omega
       f"fit_sinh: delta0 {fit and fit[0]:.5g} ({d_true}), omega {fit and fit[1]:.5g} ({omega})")
 
 # 4. pinch_lengths
-lam = th["lambda_d0"]
+lam = fj.LAMBDA_D0
 period = th["period"]
 dt = period / 40
 rows = []
