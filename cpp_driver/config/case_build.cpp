@@ -239,6 +239,9 @@ void read_viscosity(const Ctx& ctx, const Section& num_s, const Section& fluid, 
         if (nu_phys && !std::isfinite(p.visc_value))
             fail(nu ? *nu : *mu, "gives an artificial viscosity alpha = 8 nu / (h c0) that is not finite (alpha = " +
                      num(p.visc_value) + ")", "nu (or mu / rho0) with 8 nu / (h c0) finite");
+        if (const auto extra = num_s.num("artificial_alpha"); extra && extra->value != 0)
+            fail(*extra, "adds an artificial viscosity to the laminar one but numerics.viscosity is \"artificial\"",
+                 "numerics.alpha for the artificial viscosity, or numerics.viscosity = \"laminar\"");
     } else {
         if (alpha)
             fail(*alpha, "alpha is the artificial-viscosity coefficient but numerics.viscosity is \"laminar\"",

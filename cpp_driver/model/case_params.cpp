@@ -61,6 +61,12 @@ const Param kParams[] = {
     {.key = "numerics.alpha", .type = K::Float, .unit = "1", .range = kNonNegative, .def = "0.3",
      .allowed = "artificial viscosity only", .doc = "artificial viscosity coefficient (SimParams::visc_value)",
      .legacy = "`Viscosity value` when treatment = 1", .hand = kRead | kEcho},
+    {.key = "numerics.artificial_alpha", .attr = "artificial_alpha", .type = K::Float, .unit = "1",
+     .member = member<&SimParams::artificial_alpha>(), .range = between(0, 1),
+     .allowed = "0 = off; needs numerics.viscosity = \"laminar\"",
+     .doc = "alpha of Monaghan's artificial viscosity added to the laminar one (approaching pairs): damps "
+            "particle-scale noise, adds about alpha c0 h / 8 of shear viscosity",
+     .legacy = "(none)", .h5_optional = true},
     {.key = "numerics.xsph_eps", .attr = "xsph_eps", .type = K::Float, .unit = "1",
      .member = member<&SimParams::xsph_eps>(), .range = between(0, 1), .allowed = "0 = off",
      .doc = "XSPH velocity correction, 0 = off", .legacy = "fixed at 0.5 by SPHYSICSgen_2D"},

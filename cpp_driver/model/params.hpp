@@ -141,6 +141,9 @@ struct SimParams {
     int filter_period = 30;            // steps between density filters
     ViscosityModel viscosity = ViscosityModel::Artificial;
     double visc_value = 0.3;           // alpha (artificial) or kinematic nu [m^2/s] (laminar)
+    // With laminar viscosity, an artificial viscosity's alpha on top of it (case key
+    // numerics.artificial_alpha; rates.f90): numerical damping of particle-scale noise; 0 = off.
+    double artificial_alpha = 0.0;
     double wall_viscosity = 0.0;       // nu of the repulsive-wall viscous term [m^2/s]
     BoundaryType boundary = BoundaryType::Dynamic;
     int dbc_period = 1;                // steps between dynamic-boundary density updates

@@ -95,6 +95,11 @@ contains
     body%artificial = prm%viscosity%model == VISC_ARTIFICIAL
     body%tensile = prm%numerics%tensile /= 0
     body%alpha_art = merge(prm%viscosity%value, 0.0_rp, body%artificial)
+    ! numerics.artificial_alpha: Monaghan's Pi on top of the laminar viscosity
+    if (body%laminar .and. prm%viscosity%laminar_alpha > 0.0_rp) then
+      body%artificial = .true.
+      body%alpha_art = prm%viscosity%laminar_alpha
+    end if
     body%nu_lam = merge(prm%viscosity%value, 0.0_rp, body%laminar)
     body%beta = prm%boundary%coef / 10.0_rp
     body%c0 = prm%eos%c0

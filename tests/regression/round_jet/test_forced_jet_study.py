@@ -91,6 +91,15 @@ out = subprocess.run([PY, os.path.join(REPO, "tools", "forced_jet_study.py"), "r
 names = [n for _s, n, _x, _i in fj.plan(10)]
 check(out.returncode == 0 and all(n in out.stdout for n in names) and "nozzle.disturbance=" in out.stdout,
       f"run --dry-run lists {len(names)} runs (exit {out.returncode})")
+out = subprocess.run([PY, os.path.join(REPO, "tools", "forced_jet_study.py"), "run", "--dry-run", "--root", "/r",
+                      "--artificial-alpha", "0.02"], capture_output=True, text=True)
+check(out.returncode == 0 and out.stdout.count("numerics.artificial_alpha=0.02") == len(names)
+      and os.path.join("/r", "n10_alpha0.02", names[0]) in out.stdout,
+      f"run --artificial-alpha 0.02 --dry-run: the key in all {len(names)} runs, in ROOT/n10_alpha0.02 "
+      f"(exit {out.returncode})")
+out = subprocess.run([PY, os.path.join(REPO, "tools", "forced_jet_study.py"), "run", "--dry-run",
+                      "--artificial-alpha", "2"], capture_output=True, text=True)
+check(out.returncode == 2 and "--artificial-alpha" in out.stderr, f"--artificial-alpha 2 refused (exit {out.returncode})")
 
 with tempfile.TemporaryDirectory() as root:
     name, info = names[0], fj.plan(10)[0][3]

@@ -97,3 +97,38 @@ TEST(CorePairsThreads, RatesIndependentOfThreadCount) {
         ASSERT_EQ(a.ar[i], b.ar[i]) << i;
     }
 }
+
+// numerics.artificial_alpha (rates.f90): with laminar viscosity, Monaghan's Pi is added as it
+// is, so that the accelerations of laminar + alpha less those of laminar alone are those of
+// the artificial viscosity alpha less the artificial viscosity 0 (the pressure cancels in both
+// differences), on the random cloud, to round-off: 1e-12 of the largest artificial term (each
+// particle's sums hold a few dozen pair terms; the differences agree to 1e-13 of it).
+// The density rates do not move: Pi enters the momentum equation only.
+TEST(CorePairsArtificialAlpha, AddsThePiTermToTheLaminarViscosity) {
+    const auto cloud_rates = [](int model, double value, double extra) {
+        auto ps = cloud(11);
+        auto arr = ps.bind();
+        auto prm = sphjet_test::water_params(5, 1.3 * 0.01);
+        prm.viscosity.model = model;
+        prm.viscosity.value = value;
+        prm.viscosity.laminar_alpha = extra;
+        EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
+        void* ws = sph_workspace_create();
+        double vmax = 0;
+        EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
+        sph_workspace_destroy(ws);
+        return ps;
+    };
+    const auto lam = cloud_rates(2, 1e-3, 0.0);
+    const auto both = cloud_rates(2, 1e-3, 0.1);
+    const auto art = cloud_rates(1, 0.1, 0.0), art0 = cloud_rates(1, 0.0, 0.0);
+    double big = 0;
+    for (std::size_t i = 0; i < art.x.size(); ++i)
+        big = std::max(big, std::hypot(art.ax[i] - art0.ax[i], art.az[i] - art0.az[i]));
+    ASSERT_GT(big, 0.0);
+    for (std::size_t i = 0; i < art.x.size(); ++i) {
+        EXPECT_NEAR(both.ax[i] - lam.ax[i], art.ax[i] - art0.ax[i], 1e-12 * big) << i;
+        EXPECT_NEAR(both.az[i] - lam.az[i], art.az[i] - art0.az[i], 1e-12 * big) << i;
+        EXPECT_EQ(both.ar[i], lam.ar[i]) << i;
+    }
+}

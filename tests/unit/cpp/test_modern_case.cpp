@@ -997,6 +997,25 @@ TEST(ModernCase, BulkViscosity) {
     }
 }
 
+// numerics.artificial_alpha (cases/CASE_FORMAT.md): off by default; with laminar viscosity read,
+// written back and read again; with the artificial viscosity (the default model) refused, naming
+// the key and numerics.alpha; out of [0, 1] refused, naming the key and the range.
+TEST(ModernCase, ArtificialAlphaOnTopOfLaminar) {
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.artificial_alpha, 0.0);
+    const CaseSpec s = parse_modern_case(
+        kMinimal, "case.toml", {"numerics.viscosity=\"laminar\"", "fluid.mu=1e-3", "numerics.artificial_alpha=0.02"});
+    EXPECT_EQ(s.params.artificial_alpha, 0.02);
+    EXPECT_EQ(s.params.visc_value, 1e-6);
+    expect_round_trip(s);
+    std::string e = error_of(kMinimal, {"numerics.artificial_alpha=0.02"});
+    EXPECT_NE(e.find("numerics.artificial_alpha"), std::string::npos) << e;
+    EXPECT_NE(e.find("numerics.alpha"), std::string::npos) << e;
+    EXPECT_NE(e.find("\"artificial\""), std::string::npos) << e;
+    e = error_of(kMinimal, {"numerics.viscosity=\"laminar\"", "fluid.mu=1e-3", "numerics.artificial_alpha=1.5"});
+    EXPECT_NE(e.find("numerics.artificial_alpha"), std::string::npos) << e;
+    EXPECT_NE(e.find("[0, 1]"), std::string::npos) << e;
+}
+
 // numerics.density_diffusion and resolution.jitter (cases/CASE_FORMAT.md): off by default; read,
 // written back and read again; out of range refused; the diffusion refused in the axisymmetric
 // geometry, naming the key, what was expected and what was found.
