@@ -25,6 +25,17 @@ CoreParticles cloud(unsigned seed) {
     return ps;
 }
 
+// Sets the rates of ps (ax, az, ar, ...) with prm; returns the sweep's largest approach rate.
+double compute_rates(CoreParticles& ps, sph_params_t prm) {
+    auto arr = ps.bind();
+    EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
+    void* ws = sph_workspace_create();
+    double vmax = 0;
+    EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
+    sph_workspace_destroy(ws);
+    return vmax;
+}
+
 }  // namespace
 
 class CorePairs : public ::testing::TestWithParam<std::tuple<int, int, int>> {};
@@ -32,16 +43,11 @@ class CorePairs : public ::testing::TestWithParam<std::tuple<int, int, int>> {};
 TEST_P(CorePairs, MomentumIsConserved) {
     const auto [kernel, visc, tensile] = GetParam();
     auto ps = cloud(7);
-    auto arr = ps.bind();
     auto prm = sphjet_test::water_params(kernel, 1.3 * 0.01);
     prm.viscosity.model = visc;
     prm.viscosity.value = visc == 1 ? 0.3 : 1e-3;
     prm.numerics.tensile = tensile;
-    ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    double vmax = 0;
-    ASSERT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
-    sph_workspace_destroy(ws);
+    const double vmax = compute_rates(ps, prm);
     double px = 0, pz = 0, scale = 0;
     for (std::size_t i = 0; i < ps.x.size(); ++i) {
         px += ps.m[i] * ps.ax[i];
@@ -107,16 +113,11 @@ TEST(CorePairsThreads, RatesIndependentOfThreadCount) {
 TEST(CorePairsArtificialAlpha, AddsThePiTermToTheLaminarViscosity) {
     const auto cloud_rates = [](int model, double value, double extra) {
         auto ps = cloud(11);
-        auto arr = ps.bind();
         auto prm = sphjet_test::water_params(5, 1.3 * 0.01);
         prm.viscosity.model = model;
         prm.viscosity.value = value;
         prm.viscosity.laminar_alpha = extra;
-        EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-        void* ws = sph_workspace_create();
-        double vmax = 0;
-        EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
-        sph_workspace_destroy(ws);
+        (void)compute_rates(ps, prm);
         return ps;
     };
     const auto lam = cloud_rates(2, 1e-3, 0.0);
