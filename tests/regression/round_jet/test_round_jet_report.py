@@ -123,6 +123,14 @@ def main():
                            capture_output=True, text=True)
         check("breakup.remove_drops_below_h=2" in p.stdout and "eps0.01_n10_c8_rm2" in p.stdout,
               f"--remove-drops-below-h: {p.stdout}")
+        # --artificial-alpha 0.02: the key on every run, in a study directory of its own; 2 refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--artificial-alpha", "0.02", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("numerics.artificial_alpha=0.02" in p.stdout and "eps0.01_n10_c8_alpha0.02" in p.stdout,
+              f"--artificial-alpha: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--artificial-alpha", "2"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--artificial-alpha" in p.stderr, f"--artificial-alpha 2: exit {p.returncode}")
         # --axis-pair rings: the key on every run, in a study directory of its own
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
                             "--size-c", "8", "--axis-pair", "rings", "--only", "mc_u0.7814"],
