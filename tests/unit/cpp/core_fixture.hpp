@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "sphjet_core.h"
 
 namespace sphjet_test {
@@ -35,6 +37,18 @@ struct CoreParticles {
         return a;
     }
 };
+
+// Sets the rates of ps (ax, az, ar, xu, xw) with prm on a workspace of its own (a failed call
+// is a test failure); returns the sweep's largest approach rate.
+inline double compute_rates(CoreParticles& ps, sph_params_t prm) {
+    auto arr = ps.bind();
+    EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
+    void* ws = sph_workspace_create();
+    double vmax = 0;
+    EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
+    sph_workspace_destroy(ws);
+    return vmax;
+}
 
 // The offsets of a square lattice of spacing dx within 3 spacings in x and z, the origin left
 // out: their z components sz and the kernel's F = W'/r at their lengths (the lattice sums of the

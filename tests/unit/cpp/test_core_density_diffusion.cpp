@@ -30,12 +30,7 @@ CoreParticles block(int nx, int nz, double dx, Rho rho, double jitter = 0, unsig
 // The density rates of ps with the given delta.
 std::vector<double> density_rates(CoreParticles ps, sph_params_t prm, double delta) {
     prm.numerics.density_diffusion = delta;
-    auto arr = ps.bind();
-    EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    double vmax = 0;
-    EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
-    sph_workspace_destroy(ws);
+    (void)sphjet_test::compute_rates(ps, prm);
     return ps.ar;
 }
 

@@ -10,6 +10,7 @@
 #include "core_fixture.hpp"
 
 using sphjet_test::CoreParticles;
+using sphjet_test::compute_rates;
 
 namespace {
 
@@ -23,17 +24,6 @@ CoreParticles cloud(unsigned seed) {
             ps.add(i * dx + 0.3 * dx * (pos(rng) / 0.2 - 0.5), j * dx + 0.3 * dx * (pos(rng) / 0.2 - 0.5),
                    vel(rng), vel(rng), 1000 + drho(rng), 1000 * dx * dx, 2);
     return ps;
-}
-
-// Sets the rates of ps (ax, az, ar, ...) with prm; returns the sweep's largest approach rate.
-double compute_rates(CoreParticles& ps, sph_params_t prm) {
-    auto arr = ps.bind();
-    EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    double vmax = 0;
-    EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
-    sph_workspace_destroy(ws);
-    return vmax;
 }
 
 }  // namespace
