@@ -64,7 +64,7 @@ typedef struct sph_domain_t {
 typedef struct sph_viscosity_t {
     int model;                /* 1 artificial, 2 laminar */
     double value;             /* alpha (artificial) or nu [m^2/s] (laminar) */
-    double laminar_alpha;     /* laminar: an artificial alpha on top; 0 = off */
+    double artificial_alpha;  /* laminar: an artificial alpha on top; 0 = off */
 } sph_viscosity_t;
 
 typedef struct sph_boundary_t {

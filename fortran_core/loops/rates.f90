@@ -92,14 +92,12 @@ contains
     body%alpha = prm%viscosity%value
     body%repulsive = prm%boundary%model == BC_REPULSIVE
     body%laminar = prm%viscosity%model == VISC_LAMINAR
-    body%artificial = prm%viscosity%model == VISC_ARTIFICIAL
+    ! Monaghan's Pi: the artificial model's, or numerics.artificial_alpha's on top of the laminar one
+    body%artificial = prm%viscosity%model == VISC_ARTIFICIAL .or. &
+                      (body%laminar .and. prm%viscosity%artificial_alpha > 0.0_rp)
     body%tensile = prm%numerics%tensile /= 0
-    body%alpha_art = merge(prm%viscosity%value, 0.0_rp, body%artificial)
-    ! numerics.artificial_alpha: Monaghan's Pi on top of the laminar viscosity
-    if (body%laminar .and. prm%viscosity%laminar_alpha > 0.0_rp) then
-      body%artificial = .true.
-      body%alpha_art = prm%viscosity%laminar_alpha
-    end if
+    body%alpha_art = merge(prm%viscosity%value, prm%viscosity%artificial_alpha, &
+                           prm%viscosity%model == VISC_ARTIFICIAL)
     body%nu_lam = merge(prm%viscosity%value, 0.0_rp, body%laminar)
     body%beta = prm%boundary%coef / 10.0_rp
     body%c0 = prm%eos%c0

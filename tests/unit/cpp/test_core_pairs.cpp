@@ -106,7 +106,7 @@ TEST(CorePairsArtificialAlpha, AddsThePiTermToTheLaminarViscosity) {
         auto prm = sphjet_test::water_params(5, 1.3 * 0.01);
         prm.viscosity.model = model;
         prm.viscosity.value = value;
-        prm.viscosity.laminar_alpha = extra;
+        prm.viscosity.artificial_alpha = extra;
         (void)compute_rates(ps, prm);
         return ps;
     };
