@@ -51,6 +51,8 @@ module sphjet_types
     integer(c_int) :: model = 1              !< 1 artificial, 2 laminar
     real(c_double) :: value = 0.0_rp         !< alpha (artificial) or nu [m^2/s] (laminar)
     real(c_double) :: artificial_alpha = 0.0_rp  !< laminar: an artificial alpha on top; 0 = off
+    integer(c_int) :: reconstruct = 0        !< 1: Pi of the velocity jump left after the linear
+                                             !< reconstruction to the pair's midpoint
   end type sph_viscosity_t
 
   !> Boundary particles: the wall model and the moving gate (C struct sph_boundary_t).

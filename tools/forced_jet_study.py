@@ -4,10 +4,10 @@ growth along the jet, the breakup length and the drops. Run them, then tabulate 
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/forced_jet_study.py run [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0] [--only RUN ...] [--threads 2] [--sphjet build/cpp_driver/sphjet]
-      [--dry-run]
+      [--artificial-alpha 0 [--reconstruct]] [--only RUN ...] [--threads 2]
+      [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/forced_jet_study.py report [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0] [--out cases/round_jet/forced]
+      [--artificial-alpha 0 [--reconstruct]] [--out cases/round_jet/forced]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/nN/NAME, one run for each
 speed of U_SPEEDS (Mansour & Chigier's 0.78 and 1.57 m/s, We_d = 10 and 41) and each target
@@ -15,7 +15,8 @@ amplitude delta0/a of DELTAS (1e-2, 1e-3, 1e-4), at k a = 0.697 (Rayleigh's fast
 run has the quiet exit of the round-jet study (`round_jet_study.py --axis-pair rings_fit
 --quiet-exit`: the rings pair, the surface fit, the tensile correction, the bulk viscosity
 0.5, a refilling nozzle of 3 d0 and the split of rings too heavy for their radius);
---artificial-alpha A adds numerics.artificial_alpha = A to every run (study ROOT/nN_alphaA).
+--artificial-alpha A adds numerics.artificial_alpha = A to every run (study ROOT/nN_alphaA), and
+--reconstruct numerics.artificial_reconstruction (ROOT/nN_alphaA_rec).
 
 The forcing (nozzle.disturbance = eps: the plug moves at u0 (1 + eps sin(omega_f t)), omega_f =
 u0 k) is set from the target with linear theory, not fitted: a plug whose speed varies by
@@ -54,8 +55,9 @@ from axisymmetric import spatial_growth, weber_omega  # noqa: E402
 from jet_noise import envelope  # noqa: E402
 from round_jet_study import (BASE_CASE, D0_MC, MU, QUIET_BULK_VISCOSITY, REFILL_NOZZLE, RHO,  # noqa: E402
                              SIGMA, groups)
-from study_runs import (add_run_arguments, blew_up, dispatch, fmt, is_broken,  # noqa: E402
-                        md_table, open_report, read_csv, run_all, run_summary, select_runs, study_parser)
+from study_runs import (add_damping_arguments, add_run_arguments, blew_up, check_damping,  # noqa: E402
+                        damping_flags, damping_sets, damping_tag, dispatch, fmt, is_broken, md_table,
+                        open_report, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 U_SPEEDS = (0.7814, 1.5699)       # m/s, two of Mansour & Chigier's jets: We_d = 10.1 and 40.9
@@ -89,8 +91,9 @@ def run_name(u, delta):
     return f"u{u:g}_d{delta:g}"
 
 
-def plan(n, alpha=0.0):
-    """-> list of (set, name, overrides, info); alpha > 0 adds numerics.artificial_alpha."""
+def plan(n, damping=()):
+    """-> list of (set, name, overrides, info); damping: more overrides of every run
+    (study_runs.damping_sets)."""
     runs = []
     d0 = D0_MC
     dx = d0 / n
@@ -109,21 +112,20 @@ def plan(n, alpha=0.0):
                     f"nozzle.disturbance={th['eps']:.6g}", f"nozzle.disturbance_ka={KA:g}",
                     "domain.axis_pair=rings", "surface_tension.curvature=surface_fit",
                     "numerics.tensile_correction=on", f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}",
-                    "domain.split_axis_rings=true"]
-            if alpha > 0:
-                sets.append(f"numerics.artificial_alpha={alpha:g}")
+                    "domain.split_axis_rings=true"] + list(damping)
             info = dict(th, U=u, d0=d0, delta=delta, z0=below, t_head=t_head, t_end=t_end)
             runs.append((SET_NAME, run_name(u, delta), sets, info))
     return runs
 
 
-def study_dir(root, n, alpha=0.0):
-    return os.path.join(root, f"n{n:g}" + (f"_alpha{alpha:g}" if alpha > 0 else ""))
+def study_dir(root, n, args):
+    """ROOT/nN with args' damping tag (study_runs.damping_tag)."""
+    return os.path.join(root, f"n{n:g}" + damping_tag(args))
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.d0_over_dx, args.artificial_alpha)
-    todo = select_runs(plan(args.d0_over_dx, args.artificial_alpha), [SET_NAME], args.only, args.sphjet, args.dry_run)
+    sdir = study_dir(args.root, args.d0_over_dx, args)
+    todo = select_runs(plan(args.d0_over_dx, damping_sets(args)), [SET_NAME], args.only, args.sphjet, args.dry_run)
     title = f"forced jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g})"
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, os.path.join(REPO, BASE_CASE),
                    args.sphjet, args.threads, args.tmax, args.dry_run, "forced_jet_study.py run", title, REPO)
@@ -253,9 +255,8 @@ def pressure_noise(snap, info, l_pinch):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.d0_over_dx, args.artificial_alpha)
-    open_report(sdir, args.out, f"forced_jet_study.py run --d0-over-dx {args.d0_over_dx:g}"
-                + (f" --artificial-alpha {args.artificial_alpha:g}" if args.artificial_alpha > 0 else ""))
+    sdir = study_dir(args.root, args.d0_over_dx, args)
+    open_report(sdir, args.out, f"forced_jet_study.py run --d0-over-dx {args.d0_over_dx:g}" + damping_flags(args))
     header = ["run", "U [m/s]", "We_d", "eps", "delta0/a target", "delta0/a measured",
               "growth / Weber's (temporal), / spatial", "L/d0 pinch-off (pinches)",
               "L/d0 theory from the target delta0: temporal, spatial",
@@ -264,7 +265,7 @@ def report(args):
               "L/d0 mean (std)", "main drop d/d0 median (10-90%)", "main drops, satellites per sample",
               "satellite volume share", "p std / (sigma/a): jet, drops (last snapshot)", "status", "wall [s]"]
     rows, missing, done = [], [], []
-    for _s, name, _sets, info in plan(args.d0_over_dx, args.artificial_alpha):
+    for _s, name, _sets, info in plan(args.d0_over_dx, damping_sets(args)):
         r = read_run(os.path.join(sdir, name), info)
         if r["status"] == "missing":
             missing.append(name)
@@ -303,7 +304,7 @@ def report(args):
             f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else os.path.join('ROOT', os.path.basename(sdir))}"
             f" (ROOT: `run --root`): d0/dx = "
             f"{args.d0_over_dx:g}, k a = {KA}, the quiet exit"
-            + (f", numerics.artificial_alpha = {args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
+            + "".join(f", {s.replace('=', ' = ')}" for s in damping_sets(args))
             + f"; one wavelength's drop "
             f"{DROP_D0:.3f} d0.\n\n" + md_table(header, rows) +
             f"\nMissing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n")
@@ -389,8 +390,7 @@ def main(argv=None):
         p.add_argument("--root", default=os.path.join(REPO, "runs", "forced_jet"),
                        help="study root (default: REPO/runs/forced_jet)")
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
-        p.add_argument("--artificial-alpha", type=float, default=0.0,
-                       help="numerics.artificial_alpha in every run, in ROOT/nN_alphaA (default 0: off, ROOT/nN)")
+        add_damping_arguments(p)
         if name == "run":
             add_run_arguments(p, (SET_NAME,), REPO)
         else:
@@ -399,8 +399,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
-    if not 0 <= args.artificial_alpha <= 1:
-        ap.error(f"--artificial-alpha {args.artificial_alpha}: expected in [0, 1]")
+    check_damping(ap, args)
     return dispatch(args, cmd_run, report, "forced_jet_study")
 
 

@@ -5,11 +5,11 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A] [--set-name mc paper] [--only RUN ...] [--threads 2]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--set-name mc paper] [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A] [--out cases/round_jet]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -29,7 +29,9 @@ numerics.bulk_viscosity = 0.5 (which damps the jet's sound waves, cases/round_je
 3 d0 nozzle that refills (nozzle.refill) and the rings too heavy for their radius split
 (domain.split_axis_rings), in a directory of its own (suffix _quiet). --artificial-alpha A adds
 numerics.artificial_alpha = A (Monaghan's artificial viscosity on top of the laminar one, which
-damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alphaA).
+damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alphaA), and
+--reconstruct numerics.artificial_reconstruction, which keeps that damping to the particle-scale
+motion (suffix _alphaA_rec).
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -60,7 +62,8 @@ import os
 import statistics
 import sys
 
-from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
+from study_runs import (StudyError, add_damping_arguments, add_run_arguments, blew_up, check_damping,
+                        damping_flags, damping_sets, damping_tag, dispatch, drops_at, first_breakup, fmt,
                         is_broken, md_table, open_report, read_csv, run_all, run_summary, select_runs,
                         study_parser)
 
@@ -142,13 +145,16 @@ def sizing(u, d0, l_ref, n, refill=False):
         (["nozzle.refill=true"] if refill else [])
 
 
-def plan(eps, n, size_c=None, remove_h=None, axis_pair=None, quiet=False, alpha=0.0):
-    """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. size_c: L_ref
-    = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37 length;
-    axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius pair), or
-    "rings_own": the rings pair with surface_tension.rings_curvature = "own", or "rings_fit": the
-    rings pair with the surface fit and the tensile correction; quiet: the bulk viscosity and a
-    refilling nozzle (--quiet-exit); alpha > 0: numerics.artificial_alpha (--artificial-alpha)."""
+def plan(eps, n, opts):
+    """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. opts: the parsed
+    options of `run` or `report` (size_c, remove_h, axis_pair, quiet_exit, artificial_alpha,
+    reconstruct). size_c: L_ref = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37
+    length; axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius
+    pair), or "rings_own": the rings pair with surface_tension.rings_curvature = "own", or
+    "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
+    bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct: the damping
+    (study_runs.damping_sets)."""
+    size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
@@ -171,29 +177,27 @@ def plan(eps, n, size_c=None, remove_h=None, axis_pair=None, quiet=False, alpha=
         extra.append(f"domain.axis_pair={axis_pair}")
     if quiet:
         extra += [f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}", "domain.split_axis_rings=true"]
-    if alpha > 0:
-        extra.append(f"numerics.artificial_alpha={alpha:g}")
+    extra += damping_sets(opts)
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
 SET_NAMES = ("mc", "paper")
 
 
-def study_dir(root, eps, n, size_c=None, remove_h=None, axis_pair=None, quiet=False, alpha=0.0):
-    tail = (("" if size_c is None else f"_c{size_c:g}") + ("" if remove_h is None else f"_rm{remove_h:g}")
-            + ("" if axis_pair is None else f"_{axis_pair}") + ("_quiet" if quiet else "")
-            + (f"_alpha{alpha:g}" if alpha > 0 else ""))
+def study_dir(root, eps, n, opts):
+    """ROOT/epsEPS_nN with a suffix for each option of opts (as plan's) that is not the default."""
+    tail = (("" if opts.size_c is None else f"_c{opts.size_c:g}")
+            + ("" if opts.remove_h is None else f"_rm{opts.remove_h:g}")
+            + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
+            + damping_tag(opts))
     return os.path.join(root, f"eps{eps:g}_n{n:g}{tail}")
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
-                     args.quiet_exit, args.artificial_alpha)
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = select_runs(plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
-                            args.quiet_exit, args.artificial_alpha), names,
-                       args.only, args.sphjet, args.dry_run)
+    todo = select_runs(plan(args.eps, args.d0_over_dx, args), names, args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -255,12 +259,11 @@ def read_run(run_dir, info):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args.size_c, args.remove_h, args.axis_pair,
-                     args.quiet_exit, args.artificial_alpha)
-    open_report(sdir, args.out, f"round_jet_study.py run --eps {args.eps:g} --d0-over-dx {args.d0_over_dx:g}")
+    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args)
+    open_report(sdir, args.out, f"round_jet_study.py run --eps {args.eps:g} --d0-over-dx {args.d0_over_dx:g}"
+                + damping_flags(args))
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
-            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args.size_c, args.remove_h,
-                                             args.axis_pair, args.quiet_exit, args.artificial_alpha)]
+            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "window samples",
               "err vs measured", "first breakup t [s], L/d0", "main drop d/d0",
@@ -364,9 +367,7 @@ def main(argv=None):
                        help=f"numerics.bulk_viscosity = {QUIET_BULK_VISCOSITY:g}, a {REFILL_NOZZLE:g} d0 nozzle "
                             "that refills (nozzle.refill) and domain.split_axis_rings in every run (needs a "
                             "rings --axis-pair)")
-        p.add_argument("--artificial-alpha", type=float, default=0.0, metavar="A",
-                       help="numerics.artificial_alpha = A in every run, on top of the laminar viscosity "
-                            "(default 0: off)")
+        add_damping_arguments(p)
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -384,8 +385,7 @@ def main(argv=None):
         ap.error(f"--size-c {args.size_c}: expected a positive number")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
-    if not 0 <= args.artificial_alpha <= 1:
-        ap.error(f"--artificial-alpha {args.artificial_alpha}: expected in [0, 1]")
+    check_damping(ap, args)
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
     return dispatch(args, cmd_run, report, "round_jet_study")

@@ -118,6 +118,44 @@ def add_run_arguments(p, set_names, repo):
     p.add_argument("--tmax", type=float, default=None, help=argparse.SUPPRESS)
 
 
+def add_damping_arguments(p):
+    """--artificial-alpha A and --reconstruct on the subparser p: the particle-noise damping of
+    every run of a study (numerics.artificial_alpha, numerics.artificial_reconstruction;
+    cases/CASE_FORMAT.md), in a study directory of its own (damping_tag)."""
+    p.add_argument("--artificial-alpha", type=float, default=0.0, metavar="A",
+                   help="numerics.artificial_alpha = A in every run, on top of the laminar viscosity "
+                        "(default 0: off; directory suffix _alphaA)")
+    p.add_argument("--reconstruct", action="store_true",
+                   help="numerics.artificial_reconstruction = true in every run: the artificial viscosity "
+                        "of --artificial-alpha damps the particle-scale motion only (suffix _rec)")
+
+
+def check_damping(ap, args):
+    """Refuses (ap.error) an alpha outside [0, 1] and --reconstruct without an alpha."""
+    if not 0 <= args.artificial_alpha <= 1:
+        ap.error(f"--artificial-alpha {args.artificial_alpha}: expected in [0, 1]")
+    if args.reconstruct and not args.artificial_alpha > 0:
+        ap.error("--reconstruct acts on the artificial viscosity of --artificial-alpha: give --artificial-alpha A > 0")
+
+
+def damping_sets(args):
+    """-> the --set overrides of args' damping, [] when it is off."""
+    return (([f"numerics.artificial_alpha={args.artificial_alpha:g}"] if args.artificial_alpha > 0 else [])
+            + (["numerics.artificial_reconstruction=true"] if args.reconstruct else []))
+
+
+def damping_tag(args):
+    """-> the study directory's suffix for args' damping: _alphaA, _alphaA_rec or ''."""
+    return ((f"_alpha{args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
+            + ("_rec" if args.reconstruct else ""))
+
+
+def damping_flags(args):
+    """-> args' damping as the command-line flags that give it ('' when off)."""
+    return ((f" --artificial-alpha {args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
+            + (" --reconstruct" if args.reconstruct else ""))
+
+
 def dispatch(args, run, report, tool):
     """A study's `run` or `report` (args.cmd), with --root (and for `run` --sphjet) made
     absolute, since sphjet runs in the repository; a StudyError is printed as `tool: message`

@@ -254,6 +254,12 @@ void read_viscosity(const Ctx& ctx, const Section& num_s, const Section& fluid, 
             fail(nu ? *nu : *mu, "gives a kinematic viscosity that is not finite (nu = " + num(p.visc_value) + ")",
                  "mu / rho0 finite");
     }
+    if (const auto rec = num_s.boolean("artificial_reconstruction");
+        rec && rec->value && p.viscosity == ViscosityModel::Laminar && p.artificial_alpha == 0)
+        throw InputError(ctx.where(num_s.key_path("artificial_reconstruction")),
+                         "reconstructs the artificial viscosity's velocity jump but no artificial viscosity is on",
+                         "numerics.viscosity = \"artificial\", or numerics.artificial_alpha > 0 beside the laminar one",
+                         "numerics.viscosity = \"laminar\" with numerics.artificial_alpha = 0");
 }
 
 // [domain], and the surface-tension key that depends on its pair.

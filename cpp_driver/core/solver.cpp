@@ -56,6 +56,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.viscosity.model = static_cast<int>(p.viscosity);
     c.viscosity.value = p.visc_value;
     c.viscosity.artificial_alpha = p.artificial_alpha;
+    c.viscosity.reconstruct = p.artificial_reconstruction ? 1 : 0;
 
     c.boundary.model = static_cast<int>(p.boundary);
     c.boundary.dbc_period = std::max(p.dbc_period, 1);

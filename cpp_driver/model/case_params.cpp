@@ -67,6 +67,13 @@ const Param kParams[] = {
      .doc = "alpha of Monaghan's artificial viscosity added to the laminar one (approaching pairs): damps "
             "particle-scale noise, adds about alpha c0 h / 8 of shear viscosity",
      .legacy = "(none)", .h5_optional = true},
+    {.key = "numerics.artificial_reconstruction", .attr = "artificial_reconstruction", .type = K::Bool,
+     .member = member<&SimParams::artificial_reconstruction>(), .def = "false",
+     .allowed = "needs an artificial viscosity (numerics.viscosity = \"artificial\" or numerics.artificial_alpha > 0)",
+     .doc = "the artificial viscosity acts on the velocity jump left at each pair's midpoint after both velocities "
+            "are extrapolated there with their corrected gradients (van Leer limited): a linear velocity field "
+            "is not damped, particle-scale motion is",
+     .legacy = "(none)", .h5_optional = true},
     {.key = "numerics.xsph_eps", .attr = "xsph_eps", .type = K::Float, .unit = "1",
      .member = member<&SimParams::xsph_eps>(), .range = between(0, 1), .allowed = "0 = off",
      .doc = "XSPH velocity correction, 0 = off", .legacy = "fixed at 0.5 by SPHYSICSgen_2D"},

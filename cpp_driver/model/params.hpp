@@ -144,6 +144,11 @@ struct SimParams {
     // With laminar viscosity, an artificial viscosity's alpha on top of it (case key
     // numerics.artificial_alpha; rates.f90): numerical damping of particle-scale noise; 0 = off.
     double artificial_alpha = 0.0;
+    // Monaghan's Pi of the velocity jump left at the pair's midpoint after each particle's
+    // velocity is extrapolated there with its corrected gradient (case key
+    // numerics.artificial_reconstruction; physics/viscosity.f90): damps particle-scale
+    // motion, the resolved flow only at second order in h.
+    bool artificial_reconstruction = false;
     double wall_viscosity = 0.0;       // nu of the repulsive-wall viscous term [m^2/s]
     BoundaryType boundary = BoundaryType::Dynamic;
     int dbc_period = 1;                // steps between dynamic-boundary density updates

@@ -65,6 +65,8 @@ typedef struct sph_viscosity_t {
     int model;                /* 1 artificial, 2 laminar */
     double value;             /* alpha (artificial) or nu [m^2/s] (laminar) */
     double artificial_alpha;  /* laminar: an artificial alpha on top; 0 = off */
+    int reconstruct;          /* 1: Pi of the velocity jump left after the linear
+                                 reconstruction to the pair's midpoint */
 } sph_viscosity_t;
 
 typedef struct sph_boundary_t {

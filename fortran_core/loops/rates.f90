@@ -17,13 +17,14 @@ module rates
   use sorted_state, only: sorted_t, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, R_XU, R_XW
   use list_rebuild, only: gather_sorted
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
-                       SWEEP_FRESH
-  use viscosity, only: artificial_pi, laminar_factor
+                       SWEEP_FRESH, SWEEP_REUSE
+  use viscosity, only: artificial_pi, reconstructed_dq, laminar_factor
   use tensile_correction, only: tensile_r, tensile_term
   use repulsive_wall, only: repulsive_force
   use surface_tension_loops, only: surface_tension_rates
   use axisymmetric_loops, only: axisymmetric_rates
   use density_diffusion_loops, only: density_diffusion_rates
+  use velocity_gradient_loops, only: velocity_gradients, N_GV, G_UX, G_UZ, G_WX, G_WZ
   implicit none
   private
   public :: compute_rates, tensile_q, rates_keep_pairs
@@ -42,6 +43,7 @@ module rates
   type, extends(pair_body_t) :: rates_body_t
     type(sorted_t), pointer :: s => null()
     logical :: repulsive = .false., laminar = .false., artificial = .false., tensile = .false.
+    logical :: reconstruct = .false.   !< Pi of the midpoint jump (s%gv holds the gradients)
     real(rp) :: h = 0.0_rp, eta2 = 0.0_rp, alpha = 0.0_rp, inv_wdp = 0.0_rp, beta = 0.0_rp
     real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
     real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
@@ -66,14 +68,23 @@ contains
 
   !> Whether the rates sweep keeps its pairs for the sweeps that follow at the same positions
   !> (SWEEP_KEEP): the axisymmetric sums, the surface tension passes and the density
-  !> diffusion reuse them. Kept pairs are made outside an open team only (traversal.f90), so
+  !> diffusion reuse them; with the reconstructed Pi, the rates sweep reuses the pairs of the
+  !> velocity gradient sweep before it. Kept pairs are made outside an open team only (traversal.f90), so
   !> pc_step opens none for such a run.
   pure logical function rates_keep_pairs(prm)
     type(sph_params_t), intent(in) :: prm
     rates_keep_pairs = prm%surface_tension%sigma > 0.0_rp .or. &
                        prm%geometry%kind == GEOM_AXISYMMETRIC .or. &
-                       prm%numerics%density_diffusion > 0.0_rp
+                       prm%numerics%density_diffusion > 0.0_rp .or. &
+                       reconstructs(prm)
   end function rates_keep_pairs
+
+  !> Whether Pi is on and takes the midpoint jump (numerics.artificial_reconstruction).
+  pure logical function reconstructs(prm)
+    type(sph_params_t), intent(in) :: prm
+    reconstructs = prm%viscosity%reconstruct /= 0 .and. &
+                   (prm%viscosity%model == VISC_ARTIFICIAL .or. prm%viscosity%artificial_alpha > 0.0_rp)
+  end function reconstructs
 
   subroutine compute_rates(prm, kern, st, s, vmax)
     type(sph_params_t), intent(in) :: prm
@@ -83,7 +94,7 @@ contains
     real(rp), intent(inout) :: vmax
 
     type(rates_body_t) :: body
-    integer :: n, k, i
+    integer :: n, k, i, sweep
     real(rp) :: wdp, fdummy, zeta
     logical :: st_on
 
@@ -95,6 +106,7 @@ contains
     ! Monaghan's Pi: the artificial model's, or numerics.artificial_alpha's on top of the laminar one
     body%artificial = prm%viscosity%model == VISC_ARTIFICIAL .or. &
                       (body%laminar .and. prm%viscosity%artificial_alpha > 0.0_rp)
+    body%reconstruct = reconstructs(prm)
     body%tensile = prm%numerics%tensile /= 0
     body%alpha_art = merge(prm%viscosity%value, prm%viscosity%artificial_alpha, &
                            prm%viscosity%model == VISC_ARTIFICIAL)
@@ -155,8 +167,13 @@ contains
     ! the pairs are kept for the sweeps that follow at the same positions: the axisymmetric
     ! sums and the surface tension passes (surface_tension_loops.f90)
     st_on = prm%surface_tension%sigma > 0.0_rp
-    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, &
-                    merge(SWEEP_KEEP, SWEEP_FRESH, rates_keep_pairs(prm)))
+    sweep = merge(SWEEP_KEEP, SWEEP_FRESH, rates_keep_pairs(prm))
+    ! the reconstructed Pi needs every slot's velocity gradient first; its sweep keeps the pairs
+    if (body%reconstruct) then
+      call velocity_gradients(kern, s)
+      sweep = SWEEP_REUSE
+    end if
+    call pair_sweep(s, kern, PAIRS_ANY_FLUID, body, vmax, sweep)
 
     ! the hoop terms of the axisymmetric mode (continuity, laminar viscosity)
     if (body%axi_pressure) call axisymmetric_rates(prm, kern, s, st%n, kept=.true.)
@@ -210,7 +227,13 @@ contains
                                     b_%eta2, t, red)
       end if
       if (b_%tensile) call pair_tensile(np, pa, pb, w, s%tr, b_%inv_wdp, t)
-      if (b_%artificial) call pair_artificial(np, pa, pb, s%c, b_%alpha_art, b_%h, t)
+      if (b_%artificial) then
+        if (b_%reconstruct) then
+          call pair_artificial_midpoint(np, pa, pb, dx, dz, s%c, s%gv, b_%alpha_art, b_%h, t)
+        else
+          call pair_artificial(np, pa, pb, s%c, b_%alpha_art, b_%h, t)
+        end if
+      end if
       call pair_sum_terms(np, dx, dz, w, f, t)
       if (b_%laminar) call pair_laminar(np, r2, f, b_%nu_lam, t)
     end associate
@@ -267,6 +290,27 @@ contains
                                             2.0_rp * t(k, C_IRHO), t(k, C_DQ))
     end do
   end subroutine pair_artificial
+
+  !> p += Pi_ab of the midpoint jump (reconstructed_dq) with the slots' velocity gradients
+  !> gv(G_*, k) (velocity_gradient_loops.f90).
+  pure subroutine pair_artificial_midpoint(np, pa, pb, dx, dz, c, gv, alpha, h, t)
+    integer, intent(in) :: np, pa(np), pb(np)
+    real(rp), intent(in) :: dx(np), dz(np), c(*), gv(N_GV, *), alpha, h
+    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
+    integer :: k, a, b
+    real(rp) :: ea, eb, dm
+    do k = 1, np
+      a = pa(k)
+      b = pb(k)
+      ea = (dx(k) * (gv(G_UX, a) * dx(k) + gv(G_UZ, a) * dz(k)) + &
+            dz(k) * (gv(G_WX, a) * dx(k) + gv(G_WZ, a) * dz(k))) * t(k, C_IR2)
+      eb = (dx(k) * (gv(G_UX, b) * dx(k) + gv(G_UZ, b) * dz(k)) + &
+            dz(k) * (gv(G_WX, b) * dx(k) + gv(G_WZ, b) * dz(k))) * t(k, C_IR2)
+      dm = reconstructed_dq(t(k, C_DQ), ea, eb)
+      t(k, C_P) = t(k, C_P) + artificial_pi(alpha, h, 0.5_rp * (c(a) + c(b)), &
+                                            2.0_rp * t(k, C_IRHO), dm)
+    end do
+  end subroutine pair_artificial_midpoint
 
   !> The pressure, continuity and XSPH terms.
   pure subroutine pair_sum_terms(np, dx, dz, w, f, t)

@@ -44,6 +44,9 @@ module sorted_state
     ! per-particle inputs of the rates loop (loops/rates.f90): tensile R and repulsive-wall
     ! geometry, kept here so that an evaluation allocates (and page-faults) nothing
     real(rp), allocatable :: tr(:), wnx(:), wnz(:), wdb(:), wdf(:)
+    !> The velocity gradient of each slot for the reconstructed artificial viscosity
+    !> (velocity_gradient_loops.f90): gv(G_*, k), allocated by its first use
+    real(rp), allocatable :: gv(:, :)
     ! one pair list per thread, and the kept pairs of each row (traversal.f90)
     type(pair_list_t), allocatable :: lists(:), cache(:)
     ! the neighbour list: pairs of each row task (rows(0:grid%ncz-1)), build positions

@@ -100,6 +100,15 @@ check(out.returncode == 0 and out.stdout.count("numerics.artificial_alpha=0.02")
 out = subprocess.run([PY, os.path.join(REPO, "tools", "forced_jet_study.py"), "run", "--dry-run",
                       "--artificial-alpha", "2"], capture_output=True, text=True)
 check(out.returncode == 2 and "--artificial-alpha" in out.stderr, f"--artificial-alpha 2 refused (exit {out.returncode})")
+out = subprocess.run([PY, os.path.join(REPO, "tools", "forced_jet_study.py"), "run", "--dry-run", "--root", "/r",
+                      "--artificial-alpha", "0.02", "--reconstruct"], capture_output=True, text=True)
+check(out.returncode == 0 and out.stdout.count("numerics.artificial_reconstruction=true") == len(names)
+      and os.path.join("/r", "n10_alpha0.02_rec", names[0]) in out.stdout,
+      f"run --artificial-alpha 0.02 --reconstruct --dry-run: the key in all {len(names)} runs, in "
+      f"ROOT/n10_alpha0.02_rec (exit {out.returncode})")
+out = subprocess.run([PY, os.path.join(REPO, "tools", "forced_jet_study.py"), "run", "--dry-run", "--reconstruct"],
+                     capture_output=True, text=True)
+check(out.returncode == 2 and "--artificial-alpha" in out.stderr, f"--reconstruct alone refused (exit {out.returncode})")
 
 with tempfile.TemporaryDirectory() as root:
     name, info = names[0], fj.plan(10)[0][3]

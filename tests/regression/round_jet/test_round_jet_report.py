@@ -131,6 +131,14 @@ def main():
               f"--artificial-alpha: {p.stdout}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--artificial-alpha", "2"], capture_output=True, text=True)
         check(p.returncode == 2 and "--artificial-alpha" in p.stderr, f"--artificial-alpha 2: exit {p.returncode}")
+        # --reconstruct: with an alpha, its key too, apart again; without one refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--size-c", "8",
+                            "--artificial-alpha", "0.02", "--reconstruct", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("numerics.artificial_reconstruction=true" in p.stdout and "eps0.01_n10_c8_alpha0.02_rec" in p.stdout,
+              f"--reconstruct: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--reconstruct"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--artificial-alpha" in p.stderr, f"--reconstruct alone: exit {p.returncode}")
         # --axis-pair rings: the key on every run, in a study directory of its own
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
                             "--size-c", "8", "--axis-pair", "rings", "--only", "mc_u0.7814"],

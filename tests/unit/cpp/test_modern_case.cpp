@@ -1016,6 +1016,26 @@ TEST(ModernCase, ArtificialAlphaOnTopOfLaminar) {
     EXPECT_NE(e.find("[0, 1]"), std::string::npos) << e;
 }
 
+// numerics.artificial_reconstruction (cases/CASE_FORMAT.md): off by default; read with the
+// artificial viscosity and with artificial_alpha beside the laminar one, written back and read
+// again; with the laminar viscosity alone refused, naming the key, what it needs and what was
+// found.
+TEST(ModernCase, ArtificialReconstructionNeedsAnArtificialViscosity) {
+    EXPECT_FALSE(parse_modern_case(kMinimal, "case.toml", {}).params.artificial_reconstruction);
+    EXPECT_TRUE(parse_modern_case(kMinimal, "case.toml", {"numerics.artificial_reconstruction=true"})
+                    .params.artificial_reconstruction);
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml",
+                                         {"numerics.viscosity=\"laminar\"", "fluid.mu=1e-3",
+                                          "numerics.artificial_alpha=0.02", "numerics.artificial_reconstruction=true"});
+    EXPECT_TRUE(s.params.artificial_reconstruction);
+    expect_round_trip(s);
+    const std::string e = error_of(
+        kMinimal, {"numerics.viscosity=\"laminar\"", "fluid.mu=1e-3", "numerics.artificial_reconstruction=true"});
+    EXPECT_NE(e.find("numerics.artificial_reconstruction"), std::string::npos) << e;
+    EXPECT_NE(e.find("numerics.artificial_alpha > 0"), std::string::npos) << e;
+    EXPECT_NE(e.find("numerics.artificial_alpha = 0"), std::string::npos) << e;
+}
+
 // numerics.density_diffusion and resolution.jitter (cases/CASE_FORMAT.md): off by default; read,
 // written back and read again; out of range refused; the diffusion refused in the axisymmetric
 // geometry, naming the key, what was expected and what was found.
