@@ -91,31 +91,41 @@ contains
 
   !> The fluid pairs of one row task: the sums of both particles. With d = x_a - x_b and
   !> grad_a W_ab = F d, pair (a, b) adds V_b (u_b - u_a) F d_j and -V_b F d_i d_j to a's sums,
-  !> and the same products times V_a to b's (both signs flip for b).
+  !> and the same products times V_a to b's (both signs flip for b). A particle's pairs follow
+  !> each other in the list and none has it as b: its sums are carried along its run (the
+  !> same additions in the same order as one pair at a time), as in rates.f90.
   subroutine gradient_visit(self, pl, red)
     class(gradient_body_t), intent(inout) :: self
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
     integer :: k, a, b
-    real(rp) :: fx, fz, du, dw, t(N_GV)
+    real(rp) :: fx, fz, du, dw, t(N_GV), sa(N_GV)
     associate (g => self%s%gv, u => self%s%u, w => self%s%w, v => self%v)
-      do k = 1, pl%n
-        if (pl%mixed(k)) cycle
+      k = 1
+      do while (k <= pl%n)
         a = pl%a(k)
-        b = pl%b(k)
-        fx = pl%f(k) * pl%dx(k)
-        fz = pl%f(k) * pl%dz(k)
-        du = u(b) - u(a)
-        dw = w(b) - w(a)
-        t(G_UX) = du * fx
-        t(G_UZ) = du * fz
-        t(G_WX) = dw * fx
-        t(G_WZ) = dw * fz
-        t(M_XX) = -pl%dx(k) * fx
-        t(M_XZ) = -pl%dx(k) * fz
-        t(M_ZZ) = -pl%dz(k) * fz
-        g(:, a) = g(:, a) + v(b) * t
-        g(:, b) = g(:, b) + v(a) * t
+        sa = g(:, a)
+        do while (k <= pl%n)
+          if (pl%a(k) /= a) exit
+          if (.not. pl%mixed(k)) then
+            b = pl%b(k)
+            fx = pl%f(k) * pl%dx(k)
+            fz = pl%f(k) * pl%dz(k)
+            du = u(b) - u(a)
+            dw = w(b) - w(a)
+            t(G_UX) = du * fx
+            t(G_UZ) = du * fz
+            t(G_WX) = dw * fx
+            t(G_WZ) = dw * fz
+            t(M_XX) = -pl%dx(k) * fx
+            t(M_XZ) = -pl%dx(k) * fz
+            t(M_ZZ) = -pl%dz(k) * fz
+            sa = sa + v(b) * t
+            g(:, b) = g(:, b) + v(a) * t
+          end if
+          k = k + 1
+        end do
+        g(:, a) = sa
       end do
     end associate
     red = max(red, 0.0_rp)
