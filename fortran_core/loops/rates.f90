@@ -69,8 +69,8 @@ contains
   !> Whether the rates sweep keeps its pairs for the sweeps that follow at the same positions
   !> (SWEEP_KEEP): the axisymmetric sums, the surface tension passes and the density
   !> diffusion reuse them; with the reconstructed Pi, the rates sweep reuses the pairs of the
-  !> velocity gradient sweep before it. Kept pairs are made outside an open team only (traversal.f90), so
-  !> pc_step opens none for such a run.
+  !> velocity gradient sweep before it. Kept pairs are made outside an open team only
+  !> (traversal.f90), so pc_step opens none for such a run.
   pure logical function rates_keep_pairs(prm)
     type(sph_params_t), intent(in) :: prm
     rates_keep_pairs = prm%surface_tension%sigma > 0.0_rp .or. &
