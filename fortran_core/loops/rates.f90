@@ -83,7 +83,8 @@ contains
   pure logical function reconstructs(prm)
     type(sph_params_t), intent(in) :: prm
     reconstructs = prm%viscosity%reconstruct /= 0 .and. &
-                   (prm%viscosity%model == VISC_ARTIFICIAL .or. prm%viscosity%artificial_alpha > 0.0_rp)
+                   (prm%viscosity%model == VISC_ARTIFICIAL .or. &
+                    prm%viscosity%artificial_alpha > 0.0_rp)
   end function reconstructs
 
   subroutine compute_rates(prm, kern, st, s, vmax)

@@ -2,7 +2,8 @@
 !> (numerics.artificial_reconstruction; physics/viscosity.f90, reconstructed_dq). One sweep
 !> over the fluid pairs that keeps them for the rates sweep after it (the same positions), then
 !> per slot the kernel-gradient corrected gradient
-!>   G_a = [sum_b V_b (u_b - u_a) (x) grad_a W_ab] M_a^-1,  M_a = sum_b V_b (x_b - x_a) (x) grad_a W_ab,
+!>   G_a = [sum_b V_b (u_b - u_a) (x) grad_a W_ab] M_a^-1,
+!>   M_a = sum_b V_b (x_b - x_a) (x) grad_a W_ab,
 !> which is exact for a linear velocity field whatever the neighbourhood (free surface, axis),
 !> as long as M_a is invertible. V_b = m_b / rho_b with the sorted state's masses (in the
 !> axisymmetric mode the planar ones, so the gradient is the meridian plane's); the mirror
