@@ -79,12 +79,19 @@ contains
                        reconstructs(prm)
   end function rates_keep_pairs
 
+  !> Whether Monaghan's Pi is on: the artificial model's, or numerics.artificial_alpha's on top
+  !> of the laminar one.
+  pure logical function artificial_on(prm)
+    type(sph_params_t), intent(in) :: prm
+    artificial_on = prm%viscosity%model == VISC_ARTIFICIAL .or. &
+                    (prm%viscosity%model == VISC_LAMINAR .and. &
+                     prm%viscosity%artificial_alpha > 0.0_rp)
+  end function artificial_on
+
   !> Whether Pi is on and takes the midpoint jump (numerics.artificial_reconstruction).
   pure logical function reconstructs(prm)
     type(sph_params_t), intent(in) :: prm
-    reconstructs = prm%viscosity%reconstruct /= 0 .and. &
-                   (prm%viscosity%model == VISC_ARTIFICIAL .or. &
-                    prm%viscosity%artificial_alpha > 0.0_rp)
+    reconstructs = prm%viscosity%reconstruct /= 0 .and. artificial_on(prm)
   end function reconstructs
 
   subroutine compute_rates(prm, kern, st, s, vmax)
@@ -104,9 +111,7 @@ contains
     body%alpha = prm%viscosity%value
     body%repulsive = prm%boundary%model == BC_REPULSIVE
     body%laminar = prm%viscosity%model == VISC_LAMINAR
-    ! Monaghan's Pi: the artificial model's, or numerics.artificial_alpha's on top of the laminar one
-    body%artificial = prm%viscosity%model == VISC_ARTIFICIAL .or. &
-                      (body%laminar .and. prm%viscosity%artificial_alpha > 0.0_rp)
+    body%artificial = artificial_on(prm)
     body%reconstruct = reconstructs(prm)
     body%tensile = prm%numerics%tensile /= 0
     body%alpha_art = merge(prm%viscosity%value, prm%viscosity%artificial_alpha, &
@@ -228,13 +233,10 @@ contains
                                     b_%eta2, t, red)
       end if
       if (b_%tensile) call pair_tensile(np, pa, pb, w, s%tr, b_%inv_wdp, t)
-      if (b_%artificial) then
-        if (b_%reconstruct) then
-          call pair_artificial_midpoint(np, pa, pb, dx, dz, s%c, s%gv, b_%alpha_art, b_%h, t)
-        else
-          call pair_artificial(np, pa, pb, s%c, b_%alpha_art, b_%h, t)
-        end if
-      end if
+      ! the reconstruction replaces the approach rate that Pi takes (the time-step control
+      ! has had the particles' own in red)
+      if (b_%reconstruct) call pair_midpoint_dq(np, pa, pb, dx, dz, s%gv, t)
+      if (b_%artificial) call pair_artificial(np, pa, pb, s%c, b_%alpha_art, b_%h, t)
       call pair_sum_terms(np, dx, dz, w, f, t)
       if (b_%laminar) call pair_laminar(np, r2, f, b_%nu_lam, t)
     end associate
@@ -292,14 +294,14 @@ contains
     end do
   end subroutine pair_artificial
 
-  !> p += Pi_ab of the midpoint jump (reconstructed_dq) with the slots' velocity gradients
-  !> gv(G_*, k) (velocity_gradient_loops.f90).
-  pure subroutine pair_artificial_midpoint(np, pa, pb, dx, dz, c, gv, alpha, h, t)
+  !> The approach rate of Pi at the pair's midpoint (reconstructed_dq) in place of the
+  !> particles' own, with the slots' velocity gradients gv(G_*, k) (velocity_gradient_loops.f90).
+  pure subroutine pair_midpoint_dq(np, pa, pb, dx, dz, gv, t)
     integer, intent(in) :: np, pa(np), pb(np)
-    real(rp), intent(in) :: dx(np), dz(np), c(*), gv(N_GV, *), alpha, h
+    real(rp), intent(in) :: dx(np), dz(np), gv(N_GV, *)
     real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
     integer :: k, a, b
-    real(rp) :: ea, eb, dm
+    real(rp) :: ea, eb
     do k = 1, np
       a = pa(k)
       b = pb(k)
@@ -307,11 +309,9 @@ contains
             dz(k) * (gv(G_WX, a) * dx(k) + gv(G_WZ, a) * dz(k))) * t(k, C_IR2)
       eb = (dx(k) * (gv(G_UX, b) * dx(k) + gv(G_UZ, b) * dz(k)) + &
             dz(k) * (gv(G_WX, b) * dx(k) + gv(G_WZ, b) * dz(k))) * t(k, C_IR2)
-      dm = reconstructed_dq(t(k, C_DQ), ea, eb)
-      t(k, C_P) = t(k, C_P) + artificial_pi(alpha, h, 0.5_rp * (c(a) + c(b)), &
-                                            2.0_rp * t(k, C_IRHO), dm)
+      t(k, C_DQ) = reconstructed_dq(t(k, C_DQ), ea, eb)
     end do
-  end subroutine pair_artificial_midpoint
+  end subroutine pair_midpoint_dq
 
   !> The pressure, continuity and XSPH terms.
   pure subroutine pair_sum_terms(np, dx, dz, w, f, t)

@@ -47,7 +47,7 @@ contains
     type(sorted_t), intent(inout), target :: s
     type(gradient_body_t) :: body
     real(rp) :: red, det, mxx, mxz, mzz, gx, gz
-    integer :: k, j, n
+    integer :: k, j, n, r
     n = s%n
     if (allocated(s%gv)) then
       if (size(s%gv, 2) < n) deallocate(s%gv)
@@ -68,15 +68,13 @@ contains
         s%gv(G_UX:G_WZ, k) = 0.0_rp
         cycle
       end if
-      ! the rows of the sums times M^-1 = [mzz, -mxz; -mxz, mxx] / det
-      gx = s%gv(G_UX, k)
-      gz = s%gv(G_UZ, k)
-      s%gv(G_UX, k) = (gx * mzz - gz * mxz) / det
-      s%gv(G_UZ, k) = (gz * mxx - gx * mxz) / det
-      gx = s%gv(G_WX, k)
-      gz = s%gv(G_WZ, k)
-      s%gv(G_WX, k) = (gx * mzz - gz * mxz) / det
-      s%gv(G_WZ, k) = (gz * mxx - gx * mxz) / det
+      ! each row (d/dx, d/dz of u, then of w) of the sums times M^-1 = [mzz, -mxz; -mxz, mxx] / det
+      do r = G_UX, G_WX, 2
+        gx = s%gv(r, k)
+        gz = s%gv(r + 1, k)
+        s%gv(r, k) = (gx * mzz - gz * mxz) / det
+        s%gv(r + 1, k) = (gz * mxx - gx * mxz) / det
+      end do
     end do
     ! an image: its particle's gradient, the cross terms times the sign of its mirrored u
     ! (u'(x, z) = -u(-x, z), w'(x, z) = w(-x, z))
