@@ -94,8 +94,8 @@ void register_run(CLI::App& app) {
         if (args->format == "both") o.format = OutputFormat::Both;
         const RunSummary s = run_simulation(o);
         std::cout << fmt::format(
-            "run summary: {} particles ({} fluid), {} steps to t = {:.6g} s, wall {:.2f} s, "
-            "{:.4g} particle-steps/s, {} outputs, {} left the domain{}{}\n",
+            "run summary: {} particles ({} fluid) at the start, {} steps to t = {:.6g} s, "
+            "wall {:.2f} s, {:.4g} particle-steps/s, {} outputs, {} left the domain{}{}\n",
             s.particles, s.fluid, s.steps, s.time, s.wall_seconds, s.particle_steps_per_second(),
             s.outputs, s.removed,
             s.removed_drops > 0 ? fmt::format(", {} drop(s) ({} particles) removed", s.removed_drops,

@@ -35,9 +35,7 @@ namespace fs = std::filesystem;
 namespace sphjet {
 
 double RunSummary::particle_steps_per_second() const {
-    return wall_seconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) /
-                                  wall_seconds
-                            : 0.0;
+    return wall_seconds > 0 ? particle_steps / wall_seconds : 0.0;
 }
 
 namespace {
@@ -505,8 +503,10 @@ void step_until_done(const RunOptions& opts, const CaseSpec& spec, Solver& solve
                 log.line(fmt::format("stopping at t = {:.6g} s: {}", st.time, why));
                 break;
             }
+            const std::size_t in_domain = solver.particles().n_active();
+            sum.particle_steps += static_cast<double>(in_domain);
             const auto now = Clock::now();
-            progress.maybe_report(log, st, prm, sum.particles, now);
+            progress.maybe_report(log, st, prm, in_domain, now);
             if (checkpoints.due(st.step, now)) out.checkpoint();
         }
     } catch (const SimulationError& e) {

@@ -34,8 +34,9 @@ struct RunSummary {
     double time = 0;                  // simulated time reached [s]
     double legacy_time = 0;           // the same on SPHysics' clock [s]
     double wall_seconds = 0;
-    std::size_t particles = 0;
+    std::size_t particles = 0;        // at the start of this invocation
     std::size_t fluid = 0;
+    double particle_steps = 0;        // sum over the steps of the particles in the domain
     std::int64_t outputs = 0;         // snapshots written since t = 0
     std::int64_t removed = 0;         // particles that left the domain
     std::int64_t removed_drops = 0;   // drops removed ([breakup] remove_drops_below_h), since t = 0

@@ -51,4 +51,8 @@ std::size_t ParticleSet::push(double x_, double z_, double u_, double w_, double
     return i;
 }
 
+std::size_t ParticleSet::n_active() const {
+    return static_cast<std::size_t>(std::count(active.begin(), active.end(), 1));
+}
+
 }  // namespace sphjet

@@ -49,6 +49,7 @@ struct ParticleSet {
 
     [[nodiscard]] std::size_t size() const { return x.size(); }
     [[nodiscard]] std::size_t n_fluid() const { return size() - nb; }
+    [[nodiscard]] std::size_t n_active() const;  // particles still in the domain
     void resize(std::size_t n);
     // Appends one particle; returns its index.
     std::size_t push(double x_, double z_, double u_, double w_, double rho_, double p_, double m_,
