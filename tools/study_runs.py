@@ -73,6 +73,7 @@ def parse_log(run_dir):
     out = {"particles": None, "boundary": None, "fluid": None, "wall_s": 0.0, "steps": 0,
            "t_end": None, "particle_steps_per_s": None, "sessions": 0,
            "finished": finished(run_dir)}
+    particle_steps = 0.0
     for line in lines:
         m = re.search(r"\| particles (\d+) \(boundary (\d+), fluid (\d+)\)", line)
         if line.startswith("case:") and m and out["particles"] is None:
@@ -84,10 +85,11 @@ def parse_log(run_dir):
             out["t_end"] = float(m.group(3))
             out["wall_s"] += float(m.group(4))
             out["sessions"] += 1
+            particle_steps += float(m.group(4)) * float(m.group(5))
             out["particle_steps_per_s"] = float(m.group(5))
-    if out["sessions"] > 1 and out["particles"] and out["wall_s"] > 0:
-        # over all sessions: the particle count is the one sphjet uses (particles at start)
-        out["particle_steps_per_s"] = out["particles"] * out["steps"] / out["wall_s"]
+    if out["sessions"] > 1 and out["wall_s"] > 0:
+        # over all sessions: each one's particle-steps (its rate x its wall time) summed
+        out["particle_steps_per_s"] = particle_steps / out["wall_s"]
     if out["sessions"] == 0:
         out["wall_s"] = None
     return out

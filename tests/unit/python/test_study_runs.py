@@ -73,7 +73,7 @@ class RunLogTests(unittest.TestCase):
 
     def test_parse_log_sums_sessions(self):
         # 10 + 20 s of wall time over two sessions; particle-steps/s over both:
-        # 120 particles x (5 + 7) steps / 30 s = 48
+        # (10 s x 60 + 20 s x 42) / 30 s = 48
         self.log("sphjet 1 starting", CASE_LINE, done_line(5, 5, 0.01, 10, 60.0),
                  "sphjet 1 resuming", CASE_LINE, done_line(7, 12, 0.02, 20, 42.0))
         got = sr.parse_log(self.dir)
