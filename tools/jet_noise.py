@@ -19,6 +19,11 @@
   measured C gives with it.
 - spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
   at least 4 d0 long), and its peak ka.
+- noise along the jet (from the snapshots snap_*.h5 at t >= T, where the run wrote them): the
+  pressure's standard deviation over the particles of each 2 d0 slice of the intact jet (s < L
+  of the jet.csv sample nearest in time), its median over the snapshots in units of sigma/a;
+  `quiet to` is where the first slice exceeds sigma/(4a) (the exit's target), and L minus it how
+  far up the jet the noise of the breakup reaches.
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
 planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
 """
@@ -40,7 +45,7 @@ def read_case(run):
     rho = fl.get("rho0", 1000.0)
     nu = fl["mu"] / rho if "mu" in fl else fl.get("nu", 0.0)
     return {
-        "d0": nz["d0"], "u0": nz["u0"], "rho": rho, "nu": nu,
+        "d0": nz["d0"], "u0": nz["u0"], "z0": nz.get("z0", 0.0), "rho": rho, "nu": nu,
         "sigma": case.get("surface_tension", {}).get("sigma", 0.0),
         "ka": nz.get("disturbance_ka", 0.697), "eps": nz.get("disturbance", 0.0),
         "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric",
@@ -128,6 +133,36 @@ def spectrum(surface, d0, a):
     return [((j + 1) * kmax / nk, acc[j] / used) for j in range(nk)]
 
 
+def noise_along(run, z0, d0, p_unit, t0, jet):
+    """[(s0 of a 2 d0 slice, median p std / (sigma/a), snapshots)] over the intact jet of every
+    snapshot at t >= t0; None without snapshots."""
+    names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
+    if not names:
+        return None
+    import h5py
+    import numpy as np
+    times = [float(r["time"]) for r in jet]
+    per = {}
+    for n in names:
+        with h5py.File(os.path.join(run, n), "r") as f:
+            t = float(f.attrs["time"])
+            if t < t0:
+                continue
+            row = jet[min(range(len(times)), key=lambda i: abs(times[i] - t))]
+            if row["broken"] != "1":
+                continue
+            g = f["particles"]
+            on = (g["active"][:] == 1) & (g["kind"][:] == 2)  # fluid (ParticleKind)
+            s = (z0 - g["z"][:][on]) / d0
+            p = g["p"][:][on]
+        length = float(row["L_over_d0"])
+        for b in range(int(length // 2.0)):
+            m = (s >= 2.0 * b) & (s < 2.0 * b + 2.0)
+            if m.sum() >= 5:
+                per.setdefault(b, []).append(float(np.std(p[m])) / p_unit)
+    return [(2.0 * b, median(v), len(v)) for b, v in sorted(per.items())]
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("run")
@@ -202,6 +237,16 @@ def main(argv=None):
         kpk, apk = max(spec, key=lambda e: e[1])
         print(f"spectrum peak: ka = {kpk:.3f}, amplitude {apk:.3e} a")
         summary["spectrum_peak_ka"] = kpk
+    prof = noise_along(args.run, c["z0"], d0, p_unit, t0, jet) if sig > 0 else None
+    if prof:
+        quiet = next((s0 for s0, v, _ in prof if v > 0.25), prof[-1][0] + 2.0)
+        print("pressure std / (sigma/a) along the intact jet (2 d0 slices, median over snapshots): "
+              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _ in prof))
+        print(f"quiet (p std <= sigma/(4a)) to s = {quiet:.0f} d0, {l_mean - quiet:.1f} d0 above the "
+              f"breakup (L {l_mean:.1f} d0)")
+        summary.update({"quiet_to_over_d0": quiet, "noisy_reach_over_d0": l_mean - quiet})
+    elif prof is None:
+        print("noise along the jet: no snapshots (snap_*.h5) in the run directory")
     print("SUMMARY " + " ".join(f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v}" for k, v in summary.items()))
 
     if args.plot:

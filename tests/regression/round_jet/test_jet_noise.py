@@ -13,7 +13,11 @@ median about which the rms is taken is the sampled median, and the fit's ends si
 reading of the diagnostic (a C of 3 against 18). The exit columns are constant (p = 130 +- 20
 Pa, u_r 0.01 m/s): the medians must be those values in units of sigma/a and the capillary
 velocity, to the 6 digits of the SUMMARY line (1e-5 relative). The spectrum's peak must sit at the wave's ka = k d0 / 2 = 0.7 within one bin of its
-grid.
+grid. Ten snapshots (snap_*.h5) hold jet particles whose pressure alternates about sigma/a by
++-0.05 sigma/a up to s = 8 d0 and by +-2 sigma/a beyond, out to 14 d0 (and plug particles above
+the orifice): only the six 2 d0 slices below the orifice and above L = 12 d0 may count. The
+profile must be quiet to s = 8 d0 exactly, the noise must reach 4 d0 above the breakup, and
+the slices' standard deviations must print as 0.05 and 2 (the three digits printed).
 
 usage: test_jet_noise.py   (exit 0 on success, 1 with a message on failure)
 """
@@ -75,10 +79,30 @@ disturbance_ka = {KA}
         f.write("\n".join(surf) + "\n")
 
 
+def write_snapshots(d):
+    import h5py
+    import numpy as np
+    p_unit = SIGMA / A
+    z0 = 0.11
+    for n in range(10):
+        s = np.arange(-2.0, 14.0, 0.05)  # plug particles, then the jet
+        k = np.arange(len(s))
+        amp = np.where(s < 8.0, 0.05, 2.0) * p_unit
+        p = p_unit + np.where(k % 2 == 0, amp, -amp)
+        with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as f:
+            f.attrs["time"] = 0.01 + 40 * n * 1e-4
+            g = f.create_group("particles")
+            g["z"] = z0 - s * D0
+            g["p"] = p
+            g["active"] = np.ones(len(s), dtype=np.int32)
+            g["kind"] = np.full(len(s), 2, dtype=np.int32)
+
+
 def main():
     failures = []
     with tempfile.TemporaryDirectory() as d:
         write_run(d)
+        write_snapshots(d)
         out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
         print(out.stdout + out.stderr)
         if out.returncode != 0:
@@ -106,6 +130,16 @@ def main():
         # the spectrum's grid: 64 bins up to ka = pi / (2 x 0.1) = 15.7, 0.245 apart
         if not abs(val.get("spectrum_peak_ka", 0) - KA) < 0.25:
             failures.append(f"spectrum peak at ka {val.get('spectrum_peak_ka')}, built {KA} (one bin)")
+        if val.get("quiet_to_over_d0") != 8.0:
+            failures.append(f"quiet to s = {val.get('quiet_to_over_d0')} d0, built 8")
+        if not abs(val.get("noisy_reach_over_d0", 0) - 4.0) < 1e-6:
+            failures.append(f"noise reach {val.get('noisy_reach_over_d0')} d0, built 4")
+        m = re.search(r"^pressure std .*?: (.*)$", out.stdout, re.M)
+        prof = dict(kv.split(":") for kv in m.group(1).split(", ")) if m else {}
+        want = {"0": 0.05, "6": 0.05, "8": 2.0, "10": 2.0}
+        close = [abs(float(prof.get(k, "nan")) - v) <= 5e-4 * v for k, v in want.items()]
+        if len(prof) != 6 or not all(close):
+            failures.append(f"noise profile {prof}, built 0.05 to 8 d0 and 2 to 12 d0 in six 2 d0 slices")
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
