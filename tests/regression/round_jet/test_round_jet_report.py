@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """tools/round_jet_study.py on a fake study (synthetic jet.csv, drops.csv and run.log; no sphjet):
-the breakup length is the mean of L over the window t >= 1.25 L_ref / U and needs every sample
+the breakup length is the mean of L over the window t >= 1.5 L_ref / U and needs every sample
 there broken; the fits of L/d0 = C x (x = sqrt(We_d)(1 + 3 Oh_d)) are least squares through the
 origin; the groups are the diameter ones; missing runs are listed; `run --dry-run` sizes a run
 as its docstring says.
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
-t = 1.25 * 67.52 * 0.001194 / 0.7814 = 0.12897 s) has samples 60, 70 (before the window, not
-counted) and 64, 66, 68, 70 in it: mean 67, std sqrt(5) = 2.236. Run mc_u1.0179 has one
-intact sample in its window: no steady length. The fit through the origin to two points
+t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
+not counted; the 90 at 0.14 s would be in a window from 1.25 L_ref / U) and 64, 66, 68, 70 in
+it: mean 67, std sqrt(5) = 2.236. Run mc_u1.0179 has one intact sample in its window: no
+steady length. The fit through the origin to two points
 (x1, y1), (x2, y2) is (x1 y1 + x2 y2) / (x1^2 + x2^2).
 
 usage: test_round_jet_report.py   (exit 0 on success, 1 with a message on failure)
@@ -62,8 +63,9 @@ def main():
         root = os.path.join(tmp, "root")
         sdir = os.path.join(root, "eps0.01_n10")
         d = os.path.join(sdir, "mc_u0.7814")
-        fake_run(d, [(0.05, 10, 1, 60.0), (0.10, 20, 1, 70.0), (0.13, 30, 1, 64.0),
-                     (0.15, 40, 1, 66.0), (0.20, 50, 1, 68.0), (0.25, 60, 1, 70.0)])
+        fake_run(d, [(0.05, 10, 1, 60.0), (0.10, 20, 1, 70.0), (0.14, 25, 1, 90.0),
+                     (0.16, 30, 1, 64.0), (0.18, 40, 1, 66.0), (0.20, 50, 1, 68.0),
+                     (0.25, 60, 1, 70.0)])
         write(os.path.join(d, "drops.csv"),
               "time,step,drop,particles,volume,d_eq_over_d0,xc,zc,s_max_over_d0,satellite\n"
               "0.25,60,0,50,1e-9,1.8,0,0.01,80,0\n0.25,60,1,60,1e-9,2.0,0,0.01,75,0\n"
@@ -80,7 +82,7 @@ def main():
         r = rows.get("mc_u0.7814", {})
         check(r.get("L/d0 SPH (std)") == "67.00 (2.24)", f"mc_u0.7814 L: {r.get('L/d0 SPH (std)')}")
         check(r.get("err vs measured") == "-1%", f"error vs 67.52: {r.get('err vs measured')}")
-        check(r.get("window samples") == "4", f"samples at t >= 0.129 s: {r.get('window samples')}")
+        check(r.get("window samples") == "4", f"samples at t >= 0.155 s: {r.get('window samples')}")
         check(r.get("main drop d/d0") == "1.90", f"main drops (1.8 + 2.0) / 2: {r.get('main drop d/d0')}")
         check(r.get("drops (satellites)") == "3 (1)", f"drops: {r.get('drops (satellites)')}")
         med = r.get("main drops d/d0 window median (drop-samples)")

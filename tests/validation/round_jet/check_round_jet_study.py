@@ -92,7 +92,8 @@ def main():
     spec.loader.exec_module(study)
     common = ["--root", str(work), "--eps", f"{EPS:g}", "--d0-over-dx", f"{D0_OVER_DX:g}",
               "--size-c", f"{SIZE_C:g}"]
-    drop_stale_runs(sphjet, pathlib.Path(study.study_dir(str(work), EPS, D0_OVER_DX, SIZE_C)))
+    opts = study.parse(["run", *common])   # the study directory as the tool names it
+    drop_stale_runs(sphjet, pathlib.Path(study.study_dir(opts.root, opts.eps, opts.d0_over_dx, opts)))
     r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
                         "--only", *RUNS])
     if r.returncode != 0:
