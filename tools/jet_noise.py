@@ -134,8 +134,8 @@ def spectrum(surface, d0, a):
 
 
 def noise_along(run, z0, d0, p_unit, t0, jet):
-    """[(s0 of a 2 d0 slice, median p std / (sigma/a), snapshots)] over the intact jet of every
-    snapshot at t >= t0; None without snapshots."""
+    """[(s0 of a 2 d0 slice, median p std / (sigma/a))] over the intact jet of every snapshot
+    at t >= t0; None without snapshots."""
     names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
     if not names:
         return None
@@ -160,7 +160,7 @@ def noise_along(run, z0, d0, p_unit, t0, jet):
             m = (s >= 2.0 * b) & (s < 2.0 * b + 2.0)
             if m.sum() >= 5:
                 per.setdefault(b, []).append(float(np.std(p[m])) / p_unit)
-    return [(2.0 * b, median(v), len(v)) for b, v in sorted(per.items())]
+    return [(2.0 * b, median(v)) for b, v in sorted(per.items())]
 
 
 def main(argv=None):
@@ -239,9 +239,9 @@ def main(argv=None):
         summary["spectrum_peak_ka"] = kpk
     prof = noise_along(args.run, c["z0"], d0, p_unit, t0, jet) if sig > 0 else None
     if prof:
-        quiet = next((s0 for s0, v, _ in prof if v > 0.25), prof[-1][0] + 2.0)
+        quiet = next((s0 for s0, v in prof if v > 0.25), prof[-1][0] + 2.0)
         print("pressure std / (sigma/a) along the intact jet (2 d0 slices, median over snapshots): "
-              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _ in prof))
+              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v in prof))
         print(f"quiet (p std <= sigma/(4a)) to s = {quiet:.0f} d0, {l_mean - quiet:.1f} d0 above the "
               f"breakup (L {l_mean:.1f} d0)")
         summary.update({"quiet_to_over_d0": quiet, "noisy_reach_over_d0": l_mean - quiet})

@@ -85,11 +85,9 @@ def parse_log(run_dir):
             out["t_end"] = float(m.group(3))
             out["wall_s"] += float(m.group(4))
             out["sessions"] += 1
-            particle_steps += float(m.group(4)) * float(m.group(5))
-            out["particle_steps_per_s"] = float(m.group(5))
-    if out["sessions"] > 1 and out["wall_s"] > 0:
-        # over all sessions: each one's particle-steps (its rate x its wall time) summed
-        out["particle_steps_per_s"] = particle_steps / out["wall_s"]
+            particle_steps += float(m.group(4)) * float(m.group(5))   # its rate x its wall time
+    if out["wall_s"] > 0:
+        out["particle_steps_per_s"] = particle_steps / out["wall_s"]   # over all sessions
     if out["sessions"] == 0:
         out["wall_s"] = None
     return out
