@@ -319,14 +319,6 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
                              "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
         p.split_axis_rings = f->value;
     }
-    if (auto f = dom.boolean("ring_damping")) {
-        if (f->value && !axi)
-            throw InputError(ctx.where(dom.key_path("ring_damping")),
-                             "domain.ring_damping weights the damping pairs by the rings' radii",
-                             "domain.geometry = \"axisymmetric\" with domain.ring_damping = true",
-                             "domain.geometry = \"planar\"");
-        p.ring_damping = f->value;
-    }
     // after [domain]: the key belongs to the rings pair's pressure-consistent CSF
     const Section st = top.sub("surface_tension");
     if (auto f = st.string("rings_curvature")) {

@@ -262,13 +262,6 @@ const Param kParams[] = {
      .doc = "after each step a ring heavier than max(2 x the lattice ring at its radius, 2 x the first column's) "
             "becomes two of half its mass, dz/2 either side of it along the axis",
      .legacy = "(none)", .hand = kRead, .h5_optional = true},
-    {.key = "domain.ring_damping", .attr = "ring_damping", .type = K::Bool,
-     .member = member<&SimParams::ring_damping>(), .def = "false", .allowed = "needs `geometry = \"axisymmetric\"`",
-     .doc = "the artificial viscosity's and the tensile correction's pair forces are equal and opposite between the "
-            "two rings (a's planar term times (r_a + r_b) / (2 r_a)): they conserve the rings' axial momentum and "
-            "the artificial viscosity dissipates their energy; false: the meridian plane's pairs, which do neither "
-            "where the two radii differ",
-     .legacy = "(none)", .hand = kRead, .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),
      .allowed = "needs `geometry = \"axisymmetric\"`; `\"rings\"` needs h >= 2 dx",

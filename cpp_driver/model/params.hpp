@@ -221,9 +221,6 @@ struct SimParams {
     // Rings too heavy for their radius split in two after each step (case key
     // domain.split_axis_rings; rings pair only; Solver::split_heavy_rings).
     bool split_axis_rings = false;
-    // The artificial viscosity and tensile correction pairs weighted so that their forces are
-    // equal and opposite between the two rings (case key domain.ring_damping; rates.f90).
-    bool ring_damping = false;
     // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
     // The normals of the free-surface curvature (case key surface_tension.curvature_normals).

@@ -107,8 +107,7 @@ contains
       .and. any(prm%surface_tension%curvature == [CURVATURE_NORMALS, CURVATURE_SURFACE_FIT]) &
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
-      .and. any(prm%viscosity%reconstruct == [0, 1]) &
-      .and. any(prm%geometry%ring_damping == [0, 1])
+      .and. any(prm%viscosity%reconstruct == [0, 1])
     ! a period must hold the images of both ends apart (two kernel supports)
     if (prm%geometry%periodic_z /= 0) params_ok = params_ok .and. &
       prm%domain%zmax - prm%domain%zmin > 4.0_rp * prm%numerics%h

@@ -8,17 +8,10 @@
 !> Dynamic boundary particles interact as fluid does (their accelerations are not used);
 !> with repulsive walls, boundary particles only push fluid away (plus the wall viscosity).
 !> Boundary-boundary pairs are skipped. In the axisymmetric mode the pressure term and the
-!> continuity are those of axisymmetric_loops.f90 (the pressure is left out here), and the
-!> planar mass is the ring's per radian over its radius R = max(|x|, R_MIN_H h): a pair term
-!> m_b T for a and m_a T for b conserves the meridian plane's momentum, not the rings'. With
-!> domain.ring_damping the artificial viscosity and tensile terms (all that T holds there) are
-!> weighted by Rbar/R_a for a and Rbar/R_b for b, Rbar = (R_a + R_b)/2: the ring forces
-!> 2 pi Rbar m_a m_b T grad W are equal and opposite, so the pair conserves the rings' axial
-!> momentum and Pi (T >= 0 only for approaching pairs) dissipates their energy.
+!> continuity are those of axisymmetric_loops.f90 (the pressure is left out here).
 module rates
   use sphjet_kinds, only: rp, ip, KERNEL_CUBIC, KERNEL_GAUSSIAN, KERNEL_WENDLAND, &
                           VISC_ARTIFICIAL, VISC_LAMINAR, BC_REPULSIVE, GEOM_AXISYMMETRIC
-  use axisymmetric, only: axis_radius
   use sphjet_types, only: sph_params_t, state_t
   use sphjet_kernels, only: kernel_t, kernel_eval
   use sorted_state, only: sorted_t, scatter_rates, N_RATE, R_AX, R_AZ, R_AR, R_XU, R_XW
@@ -55,7 +48,6 @@ module rates
     real(rp) :: alpha_art = 0.0_rp, nu_lam = 0.0_rp  !< alpha, nu of the variant on, 0 if off
     real(rp) :: c0 = 0.0_rp, h_swl = 0.0_rp, gz = 0.0_rp, wall_viscosity = 0.0_rp
     logical :: axi_pressure = .false.   !< the pressure pair is the axisymmetric loop's
-    logical :: ring_damping = .false.   !< the pair's T weighted to equal ring forces (above)
     real(rp), allocatable :: zero(:)    !< P = 0 for axi_pressure
   contains
     procedure :: visit => rates_visit
@@ -135,7 +127,6 @@ contains
     n = s%n
     body%s => s
     body%axi_pressure = prm%geometry%kind == GEOM_AXISYMMETRIC
-    body%ring_damping = body%axi_pressure .and. prm%geometry%ring_damping /= 0
     if (body%axi_pressure) then
       allocate(body%zero(n))
       body%zero = 0.0_rp
@@ -247,7 +238,6 @@ contains
       if (b_%reconstruct) call pair_midpoint_dq(np, pa, pb, dx, dz, s%gv, t)
       if (b_%artificial) call pair_artificial(np, pa, pb, s%c, b_%alpha_art, b_%h, t)
       call pair_sum_terms(np, dx, dz, w, f, t)
-      if (b_%ring_damping) call pair_ring_weights(np, pa, pb, s%x, b_%h, t)
       if (b_%laminar) call pair_laminar(np, r2, f, b_%nu_lam, t)
     end associate
   end subroutine rates_pair_terms
@@ -350,25 +340,6 @@ contains
       end associate
     end do
   end subroutine pair_sum_terms
-
-  !> The ring weights of the pair terms (domain.ring_damping; the module's header): a's
-  !> T_AX, T_AZ times Rbar/R_a, b's times Rbar/R_b.
-  pure subroutine pair_ring_weights(np, pa, pb, x, h, t)
-    integer, intent(in) :: np, pa(np), pb(np)
-    real(rp), intent(in) :: x(*), h
-    real(rp), intent(inout) :: t(CHUNK, N_COLUMNS)
-    integer :: k
-    real(rp) :: ra, rb, rbar
-    do k = 1, np
-      ra = axis_radius(x(pa(k)), h)
-      rb = axis_radius(x(pb(k)), h)
-      rbar = 0.5_rp * (ra + rb)
-      t(k, T_AX) = t(k, T_AX) * (rbar / ra)
-      t(k, T_AZ) = t(k, T_AZ) * (rbar / ra)
-      t(k, T_BX) = t(k, T_BX) * (rbar / rb)
-      t(k, T_BZ) = t(k, T_BZ) * (rbar / rb)
-    end do
-  end subroutine pair_ring_weights
 
   !> The laminar viscosity terms.
   pure subroutine pair_laminar(np, r2, f, nu, t)
