@@ -43,8 +43,9 @@ intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.5
 by when the start-up has gone (the first breakup comes at about L / U, and the unforced jets
 of 0.78 and 1.57 m/s reach their steady lengths at 1.07 and 1.53 L_ref / U); it counts
 only when every sample of that window has the jet broken. Its standard deviation over the
-window is given beside it, and the number of samples in the window (fewer where a run stopped
-within it). Drops (equivalent sphere diameters, satellites are drops smaller than d0): the mean
+window is given beside it, the means over the first and the second half of the window's
+samples (a length still drifting shows as two means apart), and the number of samples in the
+window (fewer where a run stopped within it). Drops (equivalent sphere diameters, satellites are drops smaller than d0): the mean
 of the main drops of the last sample of the window, and the median of the main drops of every
 sample of the window, with the number of drop-samples it is taken over
 (a drop counts once for each sample it is seen in).
@@ -207,7 +208,7 @@ def cmd_run(args):
 
 # ---------------------------------------------------------------- report
 def read_run(run_dir, info):
-    r = {"status": "missing", "L": None, "L_std": None, "n_window": 0, "t_first": None,
+    r = {"status": "missing", "L": None, "L_std": None, "L_halves": None, "n_window": 0, "t_first": None,
          "L_first": None, "drops_main": None, "drops_median": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
@@ -228,6 +229,11 @@ def read_run(run_dir, info):
         ls = [float(x["L_over_d0"]) for x in window]
         r["L"] = sum(ls) / len(ls)
         r["L_std"] = math.sqrt(sum((v - r["L"]) ** 2 for v in ls) / len(ls))
+        # the means over the window's first and second half of the samples: a length still
+        # rising (or falling) shows as two means apart by more than the std allows
+        if len(ls) >= 2:
+            half = len(ls) // 2
+            r["L_halves"] = (sum(ls[:half]) / half, sum(ls[half:]) / (len(ls) - half))
         step = window[-1]["step"]
         try:
             every = read_csv(os.path.join(run_dir, "drops.csv"))
@@ -266,7 +272,8 @@ def report(args):
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
             for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
-              "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "window samples",
+              "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
+              "window samples",
               "err vs measured", "first breakup t [s], L/d0", "main drop d/d0",
               "main drops d/d0 window median (drop-samples)", "drops (satellites)", "status",
               "particles", "wall [s]"]
@@ -284,7 +291,9 @@ def report(args):
             xs_s.append(g["x"]), ys_s.append(r["L"])
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
-                     f"{fmt(r['L'])} ({fmt(r['L_std'])})", f"{r['n_window']}",
+                     f"{fmt(r['L'])} ({fmt(r['L_std'])})",
+                     "-" if r["L_halves"] is None else f"{fmt(r['L_halves'][0])} / {fmt(r['L_halves'][1])}",
+                     f"{r['n_window']}",
                      fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})",

@@ -8,7 +8,7 @@ as its docstring says.
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
 not counted; the 90 at 0.14 s would be in a window from 1.25 L_ref / U) and 64, 66, 68, 70 in
-it: mean 67, std sqrt(5) = 2.236. Run mc_u1.0179 has one intact sample in its window: no
+it: mean 67, std sqrt(5) = 2.236, halves (64, 66) and (68, 70): 65 and 69. Run mc_u1.0179 has one intact sample in its window: no
 steady length. The fit through the origin to two points
 (x1, y1), (x2, y2) is (x1 y1 + x2 y2) / (x1^2 + x2^2).
 
@@ -81,6 +81,7 @@ def main():
             rows = {r["run"]: r for r in csv.DictReader(f)}
         r = rows.get("mc_u0.7814", {})
         check(r.get("L/d0 SPH (std)") == "67.00 (2.24)", f"mc_u0.7814 L: {r.get('L/d0 SPH (std)')}")
+        check(r.get("L/d0 window halves") == "65.00 / 69.00", f"halves: {r.get('L/d0 window halves')}")
         check(r.get("err vs measured") == "-1%", f"error vs 67.52: {r.get('err vs measured')}")
         check(r.get("window samples") == "4", f"samples at t >= 0.155 s: {r.get('window samples')}")
         check(r.get("main drop d/d0") == "1.90", f"main drops (1.8 + 2.0) / 2: {r.get('main drop d/d0')}")
@@ -93,6 +94,7 @@ def main():
         r2 = rows.get("mc_u1.0179", {})
         check(r2.get("L/d0 SPH (std)") == "- (-)", f"an intact sample in the window: {r2.get('L/d0 SPH (std)')}")
         check(r2.get("status") == "finished, no steady breakup", r2.get("status"))
+        check(r2.get("L/d0 window halves") == "-", f"no halves without a length: {r2.get('L/d0 window halves')}")
         check(rows.get("mc_u0.3441", {}).get("status") == "missing", "missing run")
         with open(os.path.join(out, "round_jets.md")) as f:
             md = f.read()
