@@ -298,7 +298,7 @@ def report_tables(out, runs, dx, sdir):
     md.append("\n## Per run\n\nFirst breakup time, head drop at first breakup (paper: 1.98 D0 "
               "at u0 = 0.25 m/s, Wendland, t = 0.78 s; Rayleigh: 1.89 D0), mean orifice speed "
               "(jet.csv u_flux over rows with jet_tip_over_d0 >= 1) against u0, and cost "
-              "(run.log; wall time summed over resumed sessions).\n\n")
+              "(run.log; wall time summed over a resumed run's parts).\n\n")
     t = []
     all_runs = [(f"t1_{k}_{u0_tag(u0)}", u0) for k in KERNELS for u0 in U0S] + \
                [(f"inv_wendland_{u0_tag(u0)}", u0) for u0 in U0S] + \

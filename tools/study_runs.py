@@ -1,7 +1,7 @@
 """What the studies (tools/jet_study.py, tools/round_jet_study.py) share: running their runs
 with sphjet, and reading what a run wrote (run.log, jet.csv, drops.csv) into its summary.
 
-Running: one run at a time, resumable. A run is finished when the last session of its run.log
+Running: one run at a time, resumable. A run is finished when the last part of its run.log
 (the lines from the last `sphjet ... starting|resuming`) has a `done:` line and no `stopped by
 signal` line (sphjet writes `done:` also when interrupted), or when it stopped on a state check
 (a blow-up is a result of the study, reported, not retried). An unfinished run resumes from
@@ -42,7 +42,7 @@ def read_lines(path):
         return []
 
 
-def last_session(lines):
+def last_part(lines):
     """The lines from the last `sphjet ... starting|resuming` on (all lines if none)."""
     start = 0
     for i, line in enumerate(lines):
@@ -53,25 +53,25 @@ def last_session(lines):
 
 
 def blew_up(run_dir):
-    """The run's last session stopped on a state check (NaN, density band, collapsed step):
+    """The run's last part stopped on a state check (NaN, density band, collapsed step):
     a result of the study, not something a resume would get past. -> the FAILED line or None."""
-    session = last_session(read_lines(os.path.join(run_dir, "run.log")))
-    return next((l for l in session if l.startswith("FAILED: state check")), None)
+    part = last_part(read_lines(os.path.join(run_dir, "run.log")))
+    return next((l for l in part if l.startswith("FAILED: state check")), None)
 
 
 def finished(run_dir):
-    session = last_session(read_lines(os.path.join(run_dir, "run.log")))
-    return ((any(l.startswith("done:") for l in session) and
-             not any(l.startswith("stopped by signal") for l in session)) or
+    part = last_part(read_lines(os.path.join(run_dir, "run.log")))
+    return ((any(l.startswith("done:") for l in part) and
+             not any(l.startswith("stopped by signal") for l in part)) or
             blew_up(run_dir) is not None)
 
 
 def parse_log(run_dir):
-    """run.log -> dict particles, boundary, fluid, wall_s (summed over sessions), steps,
-    t_end, particle_steps_per_s, sessions, finished."""
+    """run.log -> dict particles, boundary, fluid, wall_s (summed over the parts), steps,
+    t_end, particle_steps_per_s, parts, finished."""
     lines = read_lines(os.path.join(run_dir, "run.log"))
     out = {"particles": None, "boundary": None, "fluid": None, "wall_s": 0.0, "steps": 0,
-           "t_end": None, "particle_steps_per_s": None, "sessions": 0,
+           "t_end": None, "particle_steps_per_s": None, "parts": 0,
            "finished": finished(run_dir)}
     particle_steps = 0.0
     for line in lines:
@@ -84,11 +84,11 @@ def parse_log(run_dir):
             out["steps"] += int(m.group(1))
             out["t_end"] = float(m.group(3))
             out["wall_s"] += float(m.group(4))
-            out["sessions"] += 1
+            out["parts"] += 1
             particle_steps += float(m.group(4)) * float(m.group(5))   # its rate x its wall time
     if out["wall_s"] > 0:
-        out["particle_steps_per_s"] = particle_steps / out["wall_s"]   # over all sessions
-    if out["sessions"] == 0:
+        out["particle_steps_per_s"] = particle_steps / out["wall_s"]   # over all parts
+    if out["parts"] == 0:
         out["wall_s"] = None
     return out
 

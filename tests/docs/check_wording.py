@@ -6,10 +6,8 @@ Usage: check_wording.py SOURCE_DIR
 Searches README.md, docs/, cases/, cpp_driver/, fortran_core/ and tools/ (every text file)
 for four words of the project's build history, any case, singular or plural. They are given
 by the first 16 hex digits of their SHA-256 (BANNED), so that this file does not spell them;
-a line's words are its runs of letters and digits. A run's own resumed sessions are not that
-history (a run stopped and resumed has several in its run.log, and the study tools sum over
-them): the phrases of ALLOWED are taken out of a line first. Prints each hit as FILE:LINE:
-text, and exits 1 if there is any.
+a line's words are its runs of letters and digits. Prints each hit as FILE:LINE: text, and
+exits 1 if there is any.
 """
 import hashlib
 import os
@@ -19,10 +17,6 @@ import sys
 ROOTS = ("README.md", "docs", "cases", "cpp_driver", "fortran_core", "tools")
 BANNED = {"3f3af1ecebbd1410", "4a502846d070e208", "e81d3b0e9d82feaa", "c3c7674c52b55b0e"}
 TOKEN = re.compile(r"[a-z0-9]+")
-# A run's resumed sessions (tools/study_runs.py reads run.log by them).
-ALLOWED = re.compile(r"last_session|last session of its run\.log|run's last session stopped|"
-                     r"resumed sessions|over all sessions|summed over sessions|\"sessions\"|"
-                     r"sessions, finished|for l in session\b|\bsession = last_session", re.I)
 
 
 def files(source):
@@ -55,7 +49,7 @@ def main():
             continue  # binary: images, HDF5
         n_files += 1
         for n, line in enumerate(text.split("\n"), 1):
-            rest = ALLOWED.sub("", line).lower()
+            rest = line.lower()
             if any(banned(w) for w in TOKEN.findall(rest)):
                 hits.append(f"{os.path.relpath(path, source)}:{n}: {line.strip()[:160]}")
     for h in hits:

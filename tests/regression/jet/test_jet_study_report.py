@@ -13,9 +13,9 @@ Checks, each with its reason:
    from Table 1 (their magnitudes round to the digest's 13/1/14/10/7/6/11/3 %).
 3. L/D0, its time and the head drop come from the first row with broken = 1, not a later
    one; the mean orifice speed uses only rows with jet_tip_over_d0 >= 1.
-4. run.log: wall time summed over resumed sessions (10 + 20 s), particle-steps/s over all of
-   them (each session's printed rate times its wall time, summed, over the summed wall time,
-   to 1e-6: the report's digits); a run whose last session was stopped by a signal is
+4. run.log: wall time summed over a resumed run's parts (10 + 20 s), particle-steps/s over all of
+   them (each part's printed rate times its wall time, summed, over the summed wall time,
+   to 1e-6: the report's digits); a run whose last part was stopped by a signal is
    unfinished even though sphjet writes `done:` then.
 5. Missing runs are named on stdout and in table1.md, and the report still exits 0; figures
    are written (fig5 skipped: no snapshots).
@@ -67,10 +67,10 @@ def jet_csv(rows):
     return "\n".join(out) + "\n"
 
 
-def log(sessions, particles=1802):
-    """sessions: list of (kind 'starting'|'resuming', steps, wall, interrupted)."""
+def log(parts, particles=1802):
+    """parts: list of (kind 'starting'|'resuming', steps, wall, interrupted)."""
     lines, total = [], 0
-    for kind, steps, wall, interrupted in sessions:
+    for kind, steps, wall, interrupted in parts:
         total += steps
         lines.append(f"sphjet 0.1.0 (abc) {kind}")
         lines.append("command: sphjet run ...")
@@ -95,7 +95,7 @@ def study(tmp):
     sdir = os.path.join(root, "dx0.001")
     out = os.path.join(tmp, "report")
 
-    # t1_wendland_u0.25: finished in two sessions (10 s + 20 s), first breakup at row 3
+    # t1_wendland_u0.25: finished in two parts (10 s + 20 s), first breakup at row 3
     d = os.path.join(sdir, "t1_wendland_u0.25")
     write(os.path.join(d, "jet.csv"), jet_csv([
         (0.01, 100, 0.10, 0, 0.0, 0.5, 0, 0.0),      # tip < 1: not in the mean speed
@@ -173,7 +173,7 @@ def study(tmp):
           f"orifice speed vs u0 {r['u_flux_vs_u0_pct']}%")
     # 4. run.log
     check(close(num(r, "wall_s"), 30.0, 1e-9), f"wall {r['wall_s']} s, expected 10 + 20")
-    # each session's rate as its log prints it (3 digits), weighted by its wall time
+    # each part's rate as its log prints it (3 digits), weighted by its wall time
     rate = (float(f"{1802 * 1000 / 10.0:.3g}") * 10.0
             + float(f"{1802 * 2000 / 20.0:.3g}") * 20.0) / 30.0
     check(close(num(r, "particle_steps_per_s"), rate, 1e-6 * rate),

@@ -50,10 +50,10 @@ class RunLogTests(unittest.TestCase):
     def log(self, *lines):
         write(os.path.join(self.dir, "run.log"), "\n".join(lines) + "\n")
 
-    def test_last_session_starts_at_the_last_start_or_resume(self):
+    def test_last_part_starts_at_the_last_start_or_resume(self):
         lines = ["sphjet 1 starting", "a", "sphjet 1 resuming", "b"]
-        self.assertEqual(sr.last_session(lines), ["sphjet 1 resuming", "b"])
-        self.assertEqual(sr.last_session(["x", "y"]), ["x", "y"])
+        self.assertEqual(sr.last_part(lines), ["sphjet 1 resuming", "b"])
+        self.assertEqual(sr.last_part(["x", "y"]), ["x", "y"])
 
     def test_done_after_a_signal_is_not_finished(self):
         # sphjet writes `done:` also when stopped by a signal: the run goes on at the next `run`
@@ -71,14 +71,14 @@ class RunLogTests(unittest.TestCase):
         self.assertEqual(sr.blew_up(self.dir), failed)
         self.assertTrue(sr.finished(self.dir))
 
-    def test_parse_log_sums_sessions(self):
-        # 10 + 20 s of wall time over two sessions; particle-steps/s over both:
+    def test_parse_log_sums_parts(self):
+        # 10 + 20 s of wall time over two parts; particle-steps/s over both:
         # (10 s x 60 + 20 s x 42) / 30 s = 48
         self.log("sphjet 1 starting", CASE_LINE, done_line(5, 5, 0.01, 10, 60.0),
                  "sphjet 1 resuming", CASE_LINE, done_line(7, 12, 0.02, 20, 42.0))
         got = sr.parse_log(self.dir)
         self.assertEqual((got["particles"], got["boundary"], got["fluid"]), (120, 20, 100))
-        self.assertEqual((got["steps"], got["sessions"], got["t_end"]), (12, 2, 0.02))
+        self.assertEqual((got["steps"], got["parts"], got["t_end"]), (12, 2, 0.02))
         self.assertEqual(got["wall_s"], 30.0)
         self.assertEqual(got["particle_steps_per_s"], 48.0)
         self.assertTrue(got["finished"])
@@ -86,7 +86,7 @@ class RunLogTests(unittest.TestCase):
     def test_parse_log_without_a_log(self):
         got = sr.parse_log(self.dir)
         self.assertIsNone(got["wall_s"])
-        self.assertEqual(got["sessions"], 0)
+        self.assertEqual(got["parts"], 0)
         self.assertFalse(got["finished"])
 
 
@@ -128,7 +128,7 @@ class RunCommandTests(unittest.TestCase):
 
 FAKE_SPHJET = """\
 #!/usr/bin/env python3
-# Stands in for sphjet run: writes a run.log with one session; exit code from FAKE_RC.
+# Stands in for sphjet run: writes a run.log of one part; exit code from FAKE_RC.
 import os, sys
 a = sys.argv[1:]
 out = a[a.index("--resume") + 1] if "--resume" in a else a[a.index("--out") + 1]
