@@ -41,7 +41,7 @@ the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d
 orifice (drops beyond leave the run). The breakup length of a run is the mean of the jet's
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.5 L_ref / U,
 by when the start-up has gone (the first breakup comes at about L / U, and the unforced jets
-of 0.78 and 1.57 m/s reach their steady lengths at 1.07 and 1.53 L_ref / U); it counts
+of 0.78 and 1.57 m/s reach their steady lengths at 1.55 and 1.53 L_ref / U); it counts
 only when every sample of that window has the jet broken. Its standard deviation over the
 window is given beside it, the means over the first and the second half of the window's
 samples (a length still drifting shows as two means apart), and the number of samples in the
