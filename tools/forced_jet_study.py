@@ -118,13 +118,13 @@ def plan(n, damping=()):
     return runs
 
 
-def study_dir(root, n, args):
-    """ROOT/nN with args' damping tag (study_runs.damping_tag)."""
-    return os.path.join(root, f"n{n:g}" + damping_tag(args))
+def study_dir(args):
+    """args.root/nN (N = args.d0_over_dx) with args' damping tag (study_runs.damping_tag)."""
+    return os.path.join(args.root, f"n{args.d0_over_dx:g}" + damping_tag(args))
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.d0_over_dx, args)
+    sdir = study_dir(args)
     todo = select_runs(plan(args.d0_over_dx, damping_sets(args)), [SET_NAME], args.only, args.sphjet, args.dry_run)
     title = f"forced jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g})"
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, os.path.join(REPO, BASE_CASE),
@@ -255,7 +255,7 @@ def pressure_noise(snap, info, l_pinch):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.d0_over_dx, args)
+    sdir = study_dir(args)
     open_report(sdir, args.out, f"forced_jet_study.py run --d0-over-dx {args.d0_over_dx:g}" + damping_flags(args))
     header = ["run", "U [m/s]", "We_d", "eps", "delta0/a target", "delta0/a measured",
               "growth / Weber's (temporal), / spatial", "L/d0 pinch-off (pinches)",

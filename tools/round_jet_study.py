@@ -45,10 +45,10 @@ of 0.78 and 1.57 m/s reach their steady lengths at 1.55 and 1.53 L_ref / U); it 
 only when every sample of that window has the jet broken. Its standard deviation over the
 window is given beside it, the means over the first and the second half of the window's
 samples (a length still drifting shows as two means apart), and the number of samples in the
-window (fewer where a run stopped within it). Drops (equivalent sphere diameters, satellites are drops smaller than d0): the mean
-of the main drops of the last sample of the window, and the median of the main drops of every
-sample of the window, with the number of drop-samples it is taken over
-(a drop counts once for each sample it is seen in).
+window (fewer where a run stopped within it). Drops (equivalent sphere diameters, satellites
+are drops smaller than d0): the mean of the main drops of the last sample of the window, and
+the median of the main drops of every sample of the window, with the number of drop-samples it
+is taken over (a drop counts once for each sample it is seen in).
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
@@ -147,16 +147,18 @@ def sizing(u, d0, l_ref, n, refill=False):
         (["nozzle.refill=true"] if refill else [])
 
 
-def plan(eps, n, opts):
+def plan(opts):
     """-> list of (set, name, overrides, info) with info = U, d0, L_ref, L_meas. opts: the parsed
-    options of `run` or `report` (size_c, remove_h, axis_pair, quiet_exit, artificial_alpha,
-    reconstruct). size_c: L_ref = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37
+    options of `run` or `report` (eps, d0_over_dx, size_c, remove_h, axis_pair, quiet_exit,
+    artificial_alpha, reconstruct). eps: nozzle.disturbance of every run; d0_over_dx: the
+    resolution; size_c: L_ref = size_c x d0 (at least 10 d0) for every run instead of the measured or eq 37
     length; axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius
     pair), or "rings_own": the rings pair with surface_tension.rings_curvature = "own", or
     "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct: the damping
     (study_runs.damping_sets)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
+    eps, n = opts.eps, opts.d0_over_dx
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
@@ -186,20 +188,21 @@ def plan(eps, n, opts):
 SET_NAMES = ("mc", "paper")
 
 
-def study_dir(root, eps, n, opts):
-    """ROOT/epsEPS_nN with a suffix for each option of opts (as plan's) that is not the default."""
+def study_dir(opts):
+    """opts.root/epsEPS_nN (opts.eps, opts.d0_over_dx) with a suffix for each option of opts (as
+    plan's) that is not the default."""
     tail = (("" if opts.size_c is None else f"_c{opts.size_c:g}")
             + ("" if opts.remove_h is None else f"_rm{opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
             + damping_tag(opts))
-    return os.path.join(root, f"eps{eps:g}_n{n:g}{tail}")
+    return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
 def cmd_run(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args)
+    sdir = study_dir(args)
     case = os.path.join(REPO, BASE_CASE)
     names = args.set_name or list(SET_NAMES)
-    todo = select_runs(plan(args.eps, args.d0_over_dx, args), names, args.only, args.sphjet, args.dry_run)
+    todo = select_runs(plan(args), names, args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -266,11 +269,11 @@ def read_run(run_dir, info):
 
 
 def report(args):
-    sdir = study_dir(args.root, args.eps, args.d0_over_dx, args)
+    sdir = study_dir(args)
     open_report(sdir, args.out, f"round_jet_study.py run --eps {args.eps:g} --d0-over-dx {args.d0_over_dx:g}"
                 + damping_flags(args))
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
-            for s, name, _sets, info in plan(args.eps, args.d0_over_dx, args)]
+            for s, name, _sets, info in plan(args)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
               "window samples",

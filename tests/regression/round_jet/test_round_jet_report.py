@@ -8,8 +8,8 @@ as its docstring says.
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
 not counted; the 90 at 0.14 s would be in a window from 1.25 L_ref / U) and 64, 66, 68, 70 in
-it: mean 67, std sqrt(5) = 2.236, halves (64, 66) and (68, 70): 65 and 69. Run mc_u1.0179 has one intact sample in its window: no
-steady length. The fit through the origin to two points
+it: mean 67, std sqrt(5) = 2.236, halves (64, 66) and (68, 70): 65 and 69. Run mc_u1.0179 has
+one intact sample in its window: no steady length. The fit through the origin to two points
 (x1, y1), (x2, y2) is (x1 y1 + x2 y2) / (x1^2 + x2^2).
 
 usage: test_round_jet_report.py   (exit 0 on success, 1 with a message on failure)

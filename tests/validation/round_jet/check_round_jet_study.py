@@ -93,7 +93,7 @@ def main():
     common = ["--root", str(work), "--eps", f"{EPS:g}", "--d0-over-dx", f"{D0_OVER_DX:g}",
               "--size-c", f"{SIZE_C:g}"]
     opts = study.parse(["run", *common])   # the study directory as the tool names it
-    drop_stale_runs(sphjet, pathlib.Path(study.study_dir(opts.root, opts.eps, opts.d0_over_dx, opts)))
+    drop_stale_runs(sphjet, pathlib.Path(study.study_dir(opts)))
     r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
                         "--only", *RUNS])
     if r.returncode != 0:
