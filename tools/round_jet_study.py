@@ -41,8 +41,11 @@ the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d
 orifice (drops beyond leave the run). The breakup length of a run is the mean of the jet's
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.5 L_ref / U,
 by when the start-up has gone (the first breakup comes at about L / U, and the unforced jets
-of 0.78 and 1.57 m/s reach their steady lengths at 1.55 and 1.53 L_ref / U); it counts
-only when every sample of that window has the jet broken. Its standard deviation over the
+of 0.78 and 1.57 m/s reach their steady lengths at 1.55 and 1.53 L_ref / U). A window sample
+with the jet intact to within 1 d0 of the box's end means a jet longer than the box: no length.
+Samples intact short of it (a drop touching the jet's end, or a neck held by a thread of axis
+rings, at one check) are skipped and counted when they are at most 5% of the window; more,
+and the run has no steady length. Its standard deviation over the
 window is given beside it, the means over the first and the second half of the window's
 samples (a length still drifting shows as two means apart), and the number of samples in the
 window (fewer where a run stopped within it). Drops (equivalent sphere diameters, satellites
@@ -77,8 +80,14 @@ RHO, MU, SIGMA = 1000.0, 1.0e-3, 0.072       # the base case's water
 D0_MC, D0_PAPER = 0.001194, 0.01
 PAPER_U0S = (0.07, 0.17, 0.20, 0.25)
 RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the fastest-growing wave
+LENGTH_TOL = 0.20     # the breakup lengths' target: within 20% of the measured ones
 RUN_T_FACTOR, WINDOW_T_FACTOR = 2.5, 1.5      # T and the window start, in L_ref / U
 BOX_L_FACTOR = 1.6
+# A window sample with the jet intact short of the box's end is a drop touching the jet's end or
+# a neck held by a thread of axis rings at one check; up to this fraction of such samples the
+# length is the mean over the broken ones (more: no steady length). One reaching within
+# BOX_END_D0 d0 of the box's end means a jet longer than the box: no length.
+INTACT_SKIP_MAX, BOX_END_D0 = 0.05, 1.0
 REFILL_NOZZLE = 3.0   # d0 of a refilling nozzle (--quiet-exit): the plug reaches far beyond 2h upstream
 QUIET_BULK_VISCOSITY = 0.5   # --quiet-exit's numerics.bulk_viscosity (cases/round_jet/README.md)
 
@@ -115,6 +124,20 @@ def fit_line(xs, ys):
     return c, b, (sxy * sxy / (sxx * syy) if syy > 0 else 1.0)
 
 
+def one_c_band(cs, tol):
+    """The interval of C in which C x is within the fraction tol of every measured L/d0 = c x,
+    for c in cs: [max(cs) / (1 + tol), min(cs) / (1 - tol)] (empty when the first end is the
+    larger), or None without values."""
+    return (max(cs) / (1.0 + tol), min(cs) / (1.0 - tol)) if cs else None
+
+
+def absolutely_unstable(we_d):
+    """An inviscid jet without gravity is absolutely unstable (a disturbance grows at the orifice
+    as well as downstream, so it drips rather than jets) for rho U^2 a / sigma < pi (Leib &
+    Goldstein 1986), We_d < 2 pi; viscosity (Oh_d = 0.0034 here) moves that by little."""
+    return we_d < 2.0 * math.pi
+
+
 def read_mc(path=MC_CSV):
     """-> list of (U, L/d0) of the measurements (comment lines start with #)."""
     try:
@@ -130,6 +153,11 @@ def u_tag(u):
     return f"u{u:g}"
 
 
+def box_below(l_ref, d0):
+    """The box's reach below the orifice [m] (drops beyond it leave the run)."""
+    return BOX_L_FACTOR * l_ref + 10.0 * d0
+
+
 def sizing(u, d0, l_ref, n, refill=False):
     """The overrides that size one run: nozzle length, box, orifice height, end time, sampling.
     refill: a nozzle of REFILL_NOZZLE d0 that refills (nozzle.refill) instead of one that holds
@@ -137,7 +165,7 @@ def sizing(u, d0, l_ref, n, refill=False):
     dx = d0 / n
     t_end = RUN_T_FACTOR * l_ref / u
     nozzle = REFILL_NOZZLE if refill else u * t_end / d0 + 2.0
-    below = BOX_L_FACTOR * l_ref + 10.0 * d0
+    below = box_below(l_ref, d0)
     z0 = below
     lz = below + nozzle * d0 + 2.0 * dx
     return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
@@ -163,12 +191,12 @@ def plan(opts):
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
         runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet),
-                     {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas}))
+                     {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, D0_MC)}))
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
         runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet) + ["fluid.c0=4"],
-                     {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None}))
+                     {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER)}))
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
         extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
@@ -210,8 +238,19 @@ def cmd_run(args):
 
 
 # ---------------------------------------------------------------- report
+def split_window(window, box_d0):
+    """The window's jet.csv rows -> (broken, intact, at_end): the samples with the jet broken, those
+    with it intact, and of those the ones whose jet reaches within BOX_END_D0 of the box's end
+    (box_d0 below the orifice, in d0), where the length is the box's and not the jet's."""
+    broken = [x for x in window if is_broken(x)]
+    intact = [x for x in window if not is_broken(x)]
+    at_end = [x for x in intact if float(x["jet_tip_over_d0"]) >= box_d0 - BOX_END_D0]
+    return broken, intact, at_end
+
+
 def read_run(run_dir, info):
-    r = {"status": "missing", "L": None, "L_std": None, "L_halves": None, "n_window": 0, "t_first": None,
+    r = {"status": "missing", "L": None, "L_std": None, "L_halves": None, "n_window": 0, "n_intact": 0,
+         "t_first": None,
          "L_first": None, "drops_main": None, "drops_median": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
@@ -226,10 +265,11 @@ def read_run(run_dir, info):
     first, window = got
     if first is not None:
         r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
-    broken = [x for x in window if is_broken(x)]
     r["n_window"] = len(window)
-    if window and len(broken) == len(window):
-        ls = [float(x["L_over_d0"]) for x in window]
+    broken, intact, at_end = split_window(window, info["box"] / info["d0"])
+    r["n_intact"] = len(intact)
+    if window and not at_end and len(intact) <= INTACT_SKIP_MAX * len(window):
+        ls = [float(x["L_over_d0"]) for x in broken]
         r["L"] = sum(ls) / len(ls)
         r["L_std"] = math.sqrt(sum((v - r["L"]) ** 2 for v in ls) / len(ls))
         # the means over the window's first and second half of the samples: a length still
@@ -237,6 +277,10 @@ def read_run(run_dir, info):
         if len(ls) >= 2:
             half = len(ls) // 2
             r["L_halves"] = (sum(ls[:half]) / half, sum(ls[half:]) / (len(ls) - half))
+        if intact:
+            times = ", ".join(f"{float(x['time']):.4g}" for x in intact)
+            r["notes"].append(f"{len(intact)} of {len(window)} window samples intact short of the box's end "
+                              f"(t = {times} s): skipped")
         step = window[-1]["step"]
         try:
             every = read_csv(os.path.join(run_dir, "drops.csv"))
@@ -254,9 +298,12 @@ def read_run(run_dir, info):
             r["drops_median"] = statistics.median(seen) if seen else None
         except (OSError, KeyError, ValueError) as e:
             r["notes"].append(f"drops.csv: {e}")
+    elif at_end:
+        r["notes"].append(f"{len(at_end)} of {len(window)} samples after t = {t0:.4g} s intact to the box's "
+                          f"end: the jet is longer than the box, no breakup length")
     elif window:
-        r["notes"].append(f"{len(window) - len(broken)} of {len(window)} samples after "
-                          f"t = {t0:.4g} s intact: no steady breakup length")
+        r["notes"].append(f"{len(intact)} of {len(window)} samples after t = {t0:.4g} s intact (more than "
+                          f"{INTACT_SKIP_MAX:.0%}): no steady breakup length")
     boom = blew_up(run_dir)
     if boom:
         r["status"] = "blew up"
@@ -277,11 +324,12 @@ def report(args):
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
               "window samples",
-              "err vs measured", "first breakup t [s], L/d0", "main drop d/d0",
+              "err vs measured", "C = L/(d0 x) measured / SPH", "instability without gravity", "first breakup t [s], L/d0", "main drop d/d0",
               "main drops d/d0 window median (drop-samples)", "drops (satellites)", "status",
               "particles", "wall [s]"]
-    rows, missing = [], []
+    rows, missing, notes = [], [], []
     xs_m, ys_m, xs_s, ys_s = [], [], [], []
+    cs_conv, cs_abs = [], []   # measured C = L / (d0 x), convectively and absolutely unstable speeds
     for s, name, info, r in runs:
         g = groups(info["U"], info["d0"])
         if r["status"] == "missing":
@@ -290,14 +338,20 @@ def report(args):
                else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
         if info["L_meas"] is not None:
             xs_m.append(g["x"]), ys_m.append(info["L_meas"])
+            (cs_abs if absolutely_unstable(g["We_d"]) else cs_conv).append(info["L_meas"] / g["x"])
+        if r["notes"]:
+            notes.append(f"{name}: " + "; ".join(r["notes"]))
         if s == "mc" and r["L"] is not None:
             xs_s.append(g["x"]), ys_s.append(r["L"])
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
                      f"{fmt(r['L'])} ({fmt(r['L_std'])})",
                      "-" if r["L_halves"] is None else f"{fmt(r['L_halves'][0])} / {fmt(r['L_halves'][1])}",
-                     f"{r['n_window']}",
+                     f"{r['n_window']}" + (f" ({r['n_intact']} intact)" if r["n_intact"] else ""),
                      fmt(err, "+.0f") + ("%" if err is not None else ""),
+                     f"{fmt(None if info['L_meas'] is None else info['L_meas'] / g['x'], '.1f')} / "
+                     f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",
+                     "absolute" if absolutely_unstable(g["We_d"]) else "convective",
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})",
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
@@ -312,6 +366,13 @@ def report(args):
     def line_text(fit):
         return "-" if fit is None else f"L/d0 = {fit[0]:.2f} x {fit[1]:+.1f}, R^2 = {fit[2]:.3f}"
 
+    def band_text(cs):
+        band = one_c_band(cs, LENGTH_TOL)
+        if band is None:
+            return "-"
+        return (f"C from {band[0]:.3f} to {band[1]:.3f}" if band[0] <= band[1]
+                else f"none ({band[0]:.3f} > {band[1]:.3f})")
+
     text = (f"# Round jets (generated by tools/round_jet_study.py report)\n\n"
             f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else sdir}: d0/dx = "
             f"{args.d0_over_dx:g}, nozzle disturbance {args.eps:g} (plug speed u0 (1 + eps "
@@ -322,8 +383,16 @@ def report(args):
             f"| measured ({len(xs_m)} jets) | "
             f"{fmt(c_m)} | {line_text(line_m)} |\n"
             f"| SPH ({len(xs_s)} runs) | {fmt(c_s)} | {line_text(line_s)} |\n\n"
+            f"One C for every speed, with every length within {LENGTH_TOL:.0%} of the measured one "
+            f"(max C / {1 + LENGTH_TOL:g} to min C / {1 - LENGTH_TOL:g} of the measured C = L/(d0 x)):\n"
+            f"- the {len(cs_conv)} speeds with We_d >= 2 pi (convectively unstable): {band_text(cs_conv)};\n"
+            f"- all {len(cs_conv) + len(cs_abs)} speeds: {band_text(cs_conv + cs_abs)}.\n"
+            f"Below We_d = 2 pi a jet without gravity is absolutely unstable (Leib & Goldstein 1986) "
+            f"and breaks near the orifice: {len(cs_abs)} of the measured speeds, where this model (no gravity) "
+            f"cannot form the measured jet.\n\n"
             f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
-            f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n")
+            f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
+            + ("\nNotes:\n" + "".join(f"- {n}\n" for n in notes) if notes else ""))
     with open(os.path.join(args.out, "round_jets.md"), "w") as f:
         f.write(text)
     if not args.no_figures:

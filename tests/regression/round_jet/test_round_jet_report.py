@@ -9,8 +9,9 @@ The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window 
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
 not counted; the 90 at 0.14 s would be in a window from 1.25 L_ref / U) and 64, 66, 68, 70 in
 it: mean 67, std sqrt(5) = 2.236, halves (64, 66) and (68, 70): 65 and 69. Run mc_u1.0179 has
-one intact sample in its window: no steady length. The fit through the origin to two points
-(x1, y1), (x2, y2) is (x1 y1 + x2 y2) / (x1^2 + x2^2).
+one intact sample of two in its window: no steady length. A window's samples intact short of the
+box's end are skipped up to 5% of it; one intact to the box's end leaves no length. The fit
+through the origin to two points (x1, y1), (x2, y2) is (x1 y1 + x2 y2) / (x1^2 + x2^2).
 
 usage: test_round_jet_report.py   (exit 0 on success, 1 with a message on failure)
 """
@@ -47,9 +48,9 @@ def write(path, text):
 
 
 def fake_run(d, samples):
-    """samples: (time, step, broken, L/d0)."""
-    rows = [HEADER] + [f"{t},{s},0,0,0.78,0.78,{b},{l * 0.001194},{l},{l + 2},1,1.9,1.9,0,0.3,5"
-                       for t, s, b, l in samples]
+    """samples: (time, step, broken, L/d0[, jet tip / d0 (default L/d0 + 2)])."""
+    rows = [HEADER] + [f"{x[0]},{x[1]},0,0,0.78,0.78,{x[2]},{x[3] * 0.001194},{x[3]},"
+                       f"{x[4] if len(x) > 4 else x[3] + 2},1,1.9,1.9,0,0.3,5" for x in samples]
     write(os.path.join(d, "jet.csv"), "\n".join(rows) + "\n")
     write(os.path.join(d, "run.log"),
           "sphjet 0.1.0 (abc) starting\n"
@@ -73,6 +74,17 @@ def main():
               "0.1,20,0,90,1e-9,9.0,0,0.01,70,0\n")   # before the window: not in the median
         fake_run(os.path.join(sdir, "mc_u1.0179"),
                  [(0.05, 10, 1, 80.0), (0.2, 20, 1, 90.0), (0.25, 30, 0, 0.0)])
+        # mc_u1.5699 (L_ref 94.96 d0, box 1.6 L_ref + 10 d0 = 161.9 d0, window from 0.10834 s): one
+        # sample of 21 intact short of the box's end (a drop touching the jet's end): skipped and
+        # counted. mc_u1.2545 (box 164.4 d0, window from 0.1378 s): one of 21 intact to within
+        # 1 d0 of the box's end: the jet is longer than the box, no length.
+        fake_run(os.path.join(sdir, "mc_u1.5699"),
+                 [(0.11 + 0.001 * i, 100 + i, 1, 100.0 + (i % 2)) for i in range(20)]
+                 + [(0.2, 200, 0, 0.0, 80.0)])
+        write(os.path.join(sdir, "mc_u1.5699", "drops.csv"),
+              "time,step,drop,particles,volume,d_eq_over_d0,xc,zc,s_max_over_d0,satellite\n")
+        fake_run(os.path.join(sdir, "mc_u1.2545"),
+                 [(0.14 + 0.001 * i, 100 + i, 1, 90.0) for i in range(20)] + [(0.2, 200, 0, 0.0, 164.0)])
         out = os.path.join(tmp, "out")
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures"],
                            capture_output=True, text=True)
@@ -96,10 +108,31 @@ def main():
         check(r2.get("status") == "finished, no steady breakup", r2.get("status"))
         check(r2.get("L/d0 window halves") == "-", f"no halves without a length: {r2.get('L/d0 window halves')}")
         check(rows.get("mc_u0.3441", {}).get("status") == "missing", "missing run")
+        r3 = rows.get("mc_u1.5699", {})
+        check(r3.get("L/d0 SPH (std)") == "100.50 (0.50)", f"20 broken samples of 100, 101: {r3.get('L/d0 SPH (std)')}")
+        check(r3.get("window samples") == "21 (1 intact)", f"the intact one counted: {r3.get('window samples')}")
+        r4 = rows.get("mc_u1.2545", {})
+        check(r4.get("L/d0 SPH (std)") == "- (-)", f"intact to the box's end: {r4.get('L/d0 SPH (std)')}")
+        # C = L / (d0 x), measured and SPH; the regime without gravity (We_d against 2 pi)
+        x1 = rjs.groups(0.7814, 0.001194)["x"]
+        check(r.get("C = L/(d0 x) measured / SPH") == f"{67.52 / x1:.1f} / {67.0 / x1:.1f}",
+              f"C columns: {r.get('C = L/(d0 x) measured / SPH')}")
+        check(r.get("instability without gravity") == "convective", "We_d 10.1: convective")
+        check(rows.get("mc_u0.3441", {}).get("instability without gravity") == "absolute", "We_d 1.96: absolute")
         with open(os.path.join(out, "round_jets.md")) as f:
             md = f.read()
-        x1 = rjs.groups(0.7814, 0.001194)["x"]
-        check(f"| SPH (1 runs) | {67.0 / x1:.2f} |" in md, f"C of one SPH point = 67 / x: {md[-600:]}")
+        x3 = rjs.groups(1.5699, 0.001194)["x"]
+        c_two = (x1 * 67.0 + x3 * 100.5) / (x1 * x1 + x3 * x3)
+        check(f"| SPH (2 runs) | {c_two:.2f} |" in md, f"C through the origin of two SPH points: {md[-600:]}")
+        check("mc_u1.5699: 1 of 21 window samples intact short of the box's end (t = 0.2 s): skipped" in md,
+              f"the skipped sample's note: {md[-900:]}")
+        check("mc_u1.2545: 1 of 21 samples after t = 0.1378 s intact to the box's end" in md,
+              f"the box's end note: {md[-900:]}")
+        # one C within 20% of every measured c x: [max c / 1.2, min c / 0.8]
+        lo, hi = rjs.one_c_band([15.0, 20.0], 0.2)
+        check(abs(lo - 20.0 / 1.2) < 1e-12 and abs(hi - 15.0 / 0.8) < 1e-12, f"band of 15, 20: {lo}, {hi}")
+        check(rjs.absolutely_unstable(2 * math.pi - 1e-9) and not rjs.absolutely_unstable(2 * math.pi),
+              "absolute instability below We_d = 2 pi")
         g = rjs.groups(0.3441, 0.001194)
         check(abs(g["Oh_d"] - 1e-3 / math.sqrt(1000 * 0.072 * 0.001194)) < 1e-12, "Oh_d")
         check(abs(rjs.fit_origin([1.0, 2.0], [3.0, 5.0]) - 13.0 / 5.0) < 1e-12, "fit through origin")
