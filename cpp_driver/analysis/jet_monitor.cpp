@@ -119,6 +119,7 @@ JetSample JetMonitor::sample(const ParticleSet& ps, double time, std::int64_t st
         Drop& q = d[c];
         q.size += down.m[k] / down.rho[k];
         q.s_max = seen[c] ? std::max(q.s_max, down_s[k]) : down_s[k];
+        q.s_min = seen[c] ? std::min(q.s_min, down_s[k]) : down_s[k];
         seen[c] = 1;
         // The jet: the cluster of the particle nearest the orifice within the band.
         if (down_l[k] <= band_ && (down_l[nearest] > band_ || down_s[k] < down_s[nearest])) nearest = k;

@@ -56,6 +56,7 @@ struct Drop {
     bool satellite = false;  // d_eq < d0
     double xc = 0, zc = 0;   // centroid (mean position) [m]
     double s_max = 0;        // farthest particle along the axis [m]
+    double s_min = 0;        // nearest particle along the axis [m]
     std::vector<std::size_t> members;  // its particles' indices in the particle set (for removal)
 };
 

@@ -185,7 +185,8 @@ std::string custom_line(const Param& r, const CaseSpec& spec, const EchoFlags& e
         (k == "nozzle.disturbance" || k == "nozzle.disturbance_ka"))
         return line(key, value_of(r, &*spec.nozzle), comment_of(r));
     if (spec.breakup && ((k == "breakup.stop_after" && spec.breakup->stop_after >= 0) ||
-                         (k == "breakup.remove_drops_below_h" && spec.breakup->remove_drops_below_h > 0)))
+                         (k == "breakup.remove_drops_below_h" && spec.breakup->remove_drops_below_h > 0) ||
+                         (k == "breakup.remove_drops_beyond_d0" && spec.breakup->remove_drops_beyond_d0 > 0)))
         return line(key, value_of(r, &*spec.breakup), comment_of(r));
     return "";
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "geometry/nozzle.hpp"
 #include "io/file_write.hpp"
@@ -63,7 +64,10 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
       mon_(*spec.nozzle, spec.breakup.value_or(BreakupSpec{}), spec.params.h, spec.params.rho0,
            spec.nozzle->ex == 0 ? spec.params.dz : spec.params.dx, spec.params.geometry == Geometry::Axisymmetric),
       log_(std::move(log)) {
-    if (spec.breakup) remove_below_ = spec.breakup->remove_drops_below_h * spec.params.h;
+    if (spec.breakup) {
+        remove_below_ = spec.breakup->remove_drops_below_h * spec.params.h;
+        remove_beyond_ = spec.breakup->remove_drops_beyond_d0 * spec.nozzle->d0;
+    }
     if (resume) {
         const auto rows = keep_until(dir_ / "jet.csv", step);
         (void)keep_until(dir_ / "drops.csv", step);
@@ -73,18 +77,21 @@ JetRun::JetRun(const CaseSpec& spec, const fs::path& dir, bool resume, const Par
             count_orifice_speed(std::stod(r.at(4)), std::stod(r.at(9)) >= 1.0 || r.at(6) == "1");
         }
         if (!rows.empty()) last_row_ = std::pair{std::stod(rows.back().at(2)), std::stod(rows.back().at(0))};
-        if (remove_below_ > 0)
-            for (const auto& r : keep_until(dir_ / "removed_drops.csv", step))
-                ++removed_drops_, removed_particles_ += std::stoll(r.at(2));
+        if (removes())
+            for (const auto& r : keep_until(dir_ / "removed_drops.csv", step)) {
+                const bool sunk = r.size() > 7 && r.at(7) == "beyond_d0";
+                ++(sunk ? sunk_drops_ : small_drops_);
+                removed_particles_ += std::stoll(r.at(2));
+            }
     }
     jet_csv_.emplace(dir_ / "jet.csv", "the jet table", resume, analysis::jet_csv_header() + "\n");
     drops_csv_.emplace(dir_ / "drops.csv", "the drops table", resume, analysis::drops_csv_header(mon_.round()) + "\n");
     surface_csv_.emplace(dir_ / "jet_surface.csv", "the jet surface table", resume,
                          analysis::surface_csv_header() + "\n");
-    if (remove_below_ > 0)
+    if (removes())
         removed_csv_.emplace(dir_ / "removed_drops.csv", "the removed drops table", resume,
-                             std::string(mon_.round() ? "time,step,particles,volume,d_eq_over_d0,xc,zc"
-                                                      : "time,step,particles,area,d_eq_over_d0,xc,zc") +
+                             std::string(mon_.round() ? "time,step,particles,volume,d_eq_over_d0,xc,zc,rule"
+                                                      : "time,step,particles,area,d_eq_over_d0,xc,zc,rule") +
                                  "\n");
     mon_.start(ps, time);
     if (last_row_) mon_.restore(last_row_->first, last_row_->second);
@@ -121,24 +128,27 @@ std::vector<std::size_t> JetRun::sample(const ParticleSet& ps, double time, std:
                                          : fmt::format("{} drop(s), the head drop {:.3g} D0 across", s.drops.size(),
                                                        s.drops.front().d_eq / d0)));
     }
-    // Drops below remove_below_ (never the jet: s.drops holds the other clusters only). The
-    // choice reads the state at this check alone, which a checkpoint holds: a resumed run
-    // removes the same drops at the same steps.
+    // Drops below remove_below_, and once the jet is broken those wholly beyond its end by
+    // remove_beyond_ (never the jet: s.drops holds the other clusters only). The choice reads
+    // the state at this check alone, which a checkpoint holds: a resumed run removes the same
+    // drops at the same steps.
     std::vector<std::size_t> gone;
-    if (remove_below_ > 0) {
-        for (const analysis::Drop& q : s.drops) {
-            if (!(q.d_eq < remove_below_)) continue;
-            const double h = spec_.params.h;
-            removed_csv_->append(fmt::format("{:.9g},{},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", time, step, q.particles,
-                                             q.size, q.d_eq / d0, q.xc, q.zc));
+    const double h = spec_.params.h;
+    for (const analysis::Drop& q : s.drops) {
+        const bool small = remove_below_ > 0 && q.d_eq < remove_below_;
+        const bool beyond = remove_beyond_ > 0 && s.length && q.s_min > *s.length + remove_beyond_;
+        if (!small && !beyond) continue;
+        removed_csv_->append(fmt::format("{:.9g},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", time, step, q.particles,
+                                         q.size, q.d_eq / d0, q.xc, q.zc, small ? "below_h" : "beyond_d0"));
+        // The sink removes a drop at nearly every pinch-off: counted at the end, not logged.
+        if (small)
             log_(fmt::format("step {} t = {:.6g} s: removed a drop of {} particles, d_eq = {:.3g} D0 = {:.3g} h "
                              "< {:g} h, at x = {:.6g} m, z = {:.6g} m ({:.3g} D0 from the orifice)",
                              step, time, q.particles, q.d_eq / d0, q.d_eq / h, spec_.breakup->remove_drops_below_h,
                              q.xc, q.zc, q.s_max / d0));
-            ++removed_drops_;
-            removed_particles_ += static_cast<std::int64_t>(q.particles);
-            gone.insert(gone.end(), q.members.begin(), q.members.end());
-        }
+        ++(small ? small_drops_ : sunk_drops_);
+        removed_particles_ += static_cast<std::int64_t>(q.particles);
+        gone.insert(gone.end(), q.members.begin(), q.members.end());
     }
     return gone;
 }
@@ -190,9 +200,16 @@ void JetRun::finish(bool hdf5) {
                                    "13 sqrt(We_d)(1 + 3 Oh_d) = {:.4g}",
                                    g.we, g.oh, g.eq37, g.we_d, g.oh_d, g.eq37_d)
                      : fmt::format("eq 37 (We = {:.3g}, Oh = {:.3g}) gives {:.4g}", g.we, g.oh, g.eq37);
-    if (remove_below_ > 0)
-        log_(fmt::format("jet: {} drop(s) removed ({} particles) with d_eq < {:g} h", removed_drops_,
-                         removed_particles_, spec_.breakup->remove_drops_below_h));
+    if (removes()) {
+        std::vector<std::string> by;
+        if (remove_below_ > 0)
+            by.push_back(fmt::format("{} with d_eq < {:g} h", small_drops_, spec_.breakup->remove_drops_below_h));
+        if (remove_beyond_ > 0)
+            by.push_back(fmt::format("{} wholly beyond the jet's end by {:g} D0", sunk_drops_,
+                                     spec_.breakup->remove_drops_beyond_d0));
+        log_(fmt::format("jet: {} drop(s) removed ({} particles): {}", removed_drops(), removed_particles_,
+                         fmt::join(by, ", ")));
+    }
     if (first_time_)
         log_(fmt::format("jet: first breakup at t = {:.6g} s, L/D0 = {:.4g}; {}", *first_time_,
                          *first_length_ / nz.d0, eq37));

@@ -3,9 +3,9 @@
 // row per sample, one per drop and sample, one per slice of the jet's surface profile and
 // sample), reports the first breakup in the log, says when the run may stop
 // ([breakup] stop_after), and at the end copies the samples into DIR/run.h5 (/jet).
-// With [breakup] remove_drops_below_h it also picks, at each check, the drops to remove
-// (their particles' indices: the caller makes them inactive), logs them and writes
-// DIR/removed_drops.csv. On resume the rows written after the checkpoint's step go away, the
+// With [breakup] remove_drops_below_h or remove_drops_beyond_d0 it also picks, at each check,
+// the drops to remove (their particles' indices: the caller makes them inactive), logs the
+// small ones and writes DIR/removed_drops.csv. On resume the rows written after the checkpoint's step go away, the
 // first breakup is read back from jet.csv and the removed drops are counted from
 // removed_drops.csv.
 #pragma once
@@ -34,7 +34,8 @@ public:
 
     // After a step: samples when due (every check_every, or when output_written with
     // check_every = 0). Returns the indices of the particles of the drops to remove (empty
-    // unless remove_drops_below_h is set and a check found such a drop).
+    // unless remove_drops_below_h or remove_drops_beyond_d0 is set and a check found such a
+    // drop).
     [[nodiscard]] std::vector<std::size_t> after_step(const ParticleSet& ps, double time, std::int64_t step,
                                                       bool output_written);
     // nozzle.refill: the plug rows to add now (geometry/nozzle.hpp; empty without refill).
@@ -46,8 +47,9 @@ public:
     void finish(bool hdf5);
 
     [[nodiscard]] std::optional<double> first_breakup_time() const { return first_time_; }
-    // Drops removed since t = 0 (remove_drops_below_h), and their particles.
-    [[nodiscard]] std::int64_t removed_drops() const { return removed_drops_; }
+    // Drops removed since t = 0 (remove_drops_below_h and remove_drops_beyond_d0), and their
+    // particles.
+    [[nodiscard]] std::int64_t removed_drops() const { return small_drops_ + sunk_drops_; }
     [[nodiscard]] std::int64_t removed_drop_particles() const { return removed_particles_; }
 
 private:
@@ -66,8 +68,11 @@ private:
     double u_sum_ = 0;
     double u_dev_max_ = 0;
     std::int64_t u_n_ = 0;
-    double remove_below_ = 0;  // d_eq [m] below which a drop is removed; 0: none
-    std::int64_t removed_drops_ = 0, removed_particles_ = 0;
+    [[nodiscard]] bool removes() const { return remove_below_ > 0 || remove_beyond_ > 0; }
+
+    double remove_below_ = 0;   // d_eq [m] below which a drop is removed; 0: none
+    double remove_beyond_ = 0;  // [m] past the jet's end beyond which a drop is removed; 0: none
+    std::int64_t small_drops_ = 0, sunk_drops_ = 0, removed_particles_ = 0;
 };
 
 }  // namespace sphjet

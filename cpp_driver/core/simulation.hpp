@@ -39,7 +39,7 @@ struct RunSummary {
     double particle_steps = 0;        // sum over the steps of the particles in the domain
     std::int64_t outputs = 0;         // snapshots written since t = 0
     std::int64_t removed = 0;         // particles that left the domain
-    std::int64_t removed_drops = 0;   // drops removed ([breakup] remove_drops_below_h), since t = 0
+    std::int64_t removed_drops = 0;   // drops removed ([breakup] remove_drops_*), since t = 0
     std::int64_t removed_drop_particles = 0;  // and their particles
     bool interrupted = false;         // stopped by a signal (a checkpoint was written)
     [[nodiscard]] double particle_steps_per_second() const;

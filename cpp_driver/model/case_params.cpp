@@ -398,6 +398,10 @@ const Param kParams[] = {
     {.key = "breakup.remove_drops_below_h", .type = K::Float, .unit = "1",
      .member = member<&BreakupSpec::remove_drops_below_h>(), .range = kNonNegative, .def = "0 (off)",
      .doc = "drops with d_eq below this x h are removed at the checks", .legacy = "(none)", .hand = kEcho},
+    {.key = "breakup.remove_drops_beyond_d0", .type = K::Float, .unit = "1",
+     .member = member<&BreakupSpec::remove_drops_beyond_d0>(), .range = kNonNegative, .def = "0 (off)",
+     .doc = "once the jet is broken, drops wholly farther than this x D0 past its end are removed at the checks",
+     .legacy = "(none)", .hand = kEcho},
 
     // [[wall]]
     {.key = "wall[].x", .type = K::Float, .unit = "m", .member = member<&WallSpec::x>(), .allowed = "in [0, lx]",

@@ -123,6 +123,10 @@ struct BreakupSpec {
     // Drops with d_eq < this x h are removed at the checks; 0 = never. A drop of radius below
     // h has no interior and collapses (cases/CASE_FORMAT.md [breakup]).
     double remove_drops_below_h = 0;
+    // Once the jet is broken, drops wholly farther than this x d0 past its end (the breakup
+    // length) are removed at the checks: a sink that follows the jet, so that the run's cost
+    // follows the jet's length and not the box's; 0 = never (cases/CASE_FORMAT.md [breakup]).
+    double remove_drops_beyond_d0 = 0;
 };
 
 enum class OutputFormat { Legacy, Hdf5, Both };
