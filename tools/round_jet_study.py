@@ -5,11 +5,12 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--set-name mc paper] [--only RUN ...] [--threads 2]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--set-name mc paper] [--only RUN ...]
+      [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--out cases/round_jet]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--out cases/round_jet]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -31,7 +32,9 @@ numerics.bulk_viscosity = 0.5 (which damps the jet's sound waves, cases/round_je
 numerics.artificial_alpha = A (Monaghan's artificial viscosity on top of the laminar one, which
 damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alphaA), and
 --reconstruct numerics.artificial_reconstruction, which keeps that damping to the particle-scale
-motion (suffix _alphaA_rec).
+motion (suffix _alphaA_rec). --sink M removes, at every check once the jet is broken, the drops
+wholly farther than M d0 past its end (breakup.remove_drops_beyond_d0, a sink that follows the
+jet), so that a run costs its jet's length and not its box's (suffix _sinkM).
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -210,10 +213,22 @@ def plan(opts):
     if quiet:
         extra += [f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}", "domain.split_axis_rings=true"]
     extra += damping_sets(opts)
+    if opts.sink is not None:
+        extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
 SET_NAMES = ("mc", "paper")
+
+
+def study_flags(opts):
+    """-> the command-line flags that give opts' study (as study_dir names it)."""
+    return (f" --eps {opts.eps:g} --d0-over-dx {opts.d0_over_dx:g}"
+            + ("" if opts.size_c is None else f" --size-c {opts.size_c:g}")
+            + ("" if opts.remove_h is None else f" --remove-drops-below-h {opts.remove_h:g}")
+            + ("" if opts.axis_pair is None else f" --axis-pair {opts.axis_pair}")
+            + (" --quiet-exit" if opts.quiet_exit else "") + damping_flags(opts)
+            + ("" if opts.sink is None else f" --sink {opts.sink:g}"))
 
 
 def study_dir(opts):
@@ -222,7 +237,7 @@ def study_dir(opts):
     tail = (("" if opts.size_c is None else f"_c{opts.size_c:g}")
             + ("" if opts.remove_h is None else f"_rm{opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
-            + damping_tag(opts))
+            + damping_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -317,8 +332,7 @@ def read_run(run_dir, info):
 
 def report(args):
     sdir = study_dir(args)
-    open_report(sdir, args.out, f"round_jet_study.py run --eps {args.eps:g} --d0-over-dx {args.d0_over_dx:g}"
-                + damping_flags(args))
+    open_report(sdir, args.out, "round_jet_study.py run" + study_flags(args))
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
             for s, name, _sets, info in plan(args)]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
@@ -451,6 +465,9 @@ def parse(argv=None):
                             "that refills (nozzle.refill) and domain.split_axis_rings in every run (needs a "
                             "rings --axis-pair)")
         add_damping_arguments(p)
+        p.add_argument("--sink", type=float, default=None, metavar="M",
+                       help="remove the drops wholly farther than M d0 past the jet's end at the checks "
+                            "(breakup.remove_drops_beyond_d0; default: none, the box's end is the only sink)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -466,6 +483,8 @@ def parse(argv=None):
         ap.error(f"--remove-drops-below-h {args.remove_h}: expected a positive number")
     if args.size_c is not None and not args.size_c > 0:
         ap.error(f"--size-c {args.size_c}: expected a positive number")
+    if args.sink is not None and not args.sink > 0:
+        ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
     check_damping(ap, args)

@@ -203,6 +203,17 @@ def main():
               and "domain.split_axis_rings=true" in p.stdout
               and "nozzle.length_over_d0=3 " in p.stdout and "eps0.01_n10_c8_rings_fit_quiet" in p.stdout,
               f"--quiet-exit: {p.stdout}")
+        # --sink 15: the sink that follows the jet on every run, in a directory of its own; 0 refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--size-c", "8", "--sink", "15", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("breakup.remove_drops_beyond_d0=15" in p.stdout and "eps0.01_n10_c8_sink15" in p.stdout,
+              f"--sink: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--sink", "0"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--sink" in p.stderr, f"--sink 0: exit {p.returncode}")
+        check(rjs.study_flags(rjs.parse(["report", "--eps", "0", "--axis-pair", "rings_fit", "--quiet-exit",
+                                         "--sink", "15"])) ==
+              " --eps 0 --d0-over-dx 10 --axis-pair rings_fit --quiet-exit --sink 15", "the report's run command")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
