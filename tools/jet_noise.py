@@ -23,7 +23,10 @@
   pressure's standard deviation over the particles of each 2 d0 slice of the intact jet (s < L
   of the jet.csv sample nearest in time), its median over the snapshots in units of sigma/a;
   `quiet to` is where the first slice exceeds sigma/(4a) (the exit's target), and L minus it how
-  far up the jet the noise of the breakup reaches.
+  far up the jet the noise of the breakup reaches. For a round jet with resolution.dx in its
+  case.toml, the axis order of each slice as well: its particles within 0.6 dx of the axis (the
+  nozzle builds the innermost rings at dx/2) over the count of the nozzle's lattice stretched
+  with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order.
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
 planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
 """
@@ -49,6 +52,7 @@ def read_case(run):
         "sigma": case.get("surface_tension", {}).get("sigma", 0.0),
         "ka": nz.get("disturbance_ka", 0.697), "eps": nz.get("disturbance", 0.0),
         "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric",
+        "dx": case.get("resolution", {}).get("dx"),
     }
 
 
@@ -133,16 +137,20 @@ def spectrum(surface, d0, a):
     return [((j + 1) * kmax / nk, acc[j] / used) for j in range(nk)]
 
 
-def noise_along(run, z0, d0, p_unit, t0, jet):
-    """[(s0 of a 2 d0 slice, median p std / (sigma/a))] over the intact jet of every snapshot
-    at t >= t0; None without snapshots."""
+def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
+    """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None)] over the intact
+    jet of every snapshot at t >= t0; None without snapshots. axis_dx (a round jet's particle
+    spacing dx) adds the axis order: the particles within 0.6 dx of the axis (the rings nearest
+    it, at dx/2 as built) over the count of an ordered lattice stretched with the flow, 2 (d0/dx)
+    u0 / |mean axial velocity| in a 2 d0 slice; it is 1 while the rows hold the nozzle's order
+    and falls where they leave the axis."""
     names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
     if not names:
         return None
     import h5py
     import numpy as np
     times = [float(r["time"]) for r in jet]
-    per = {}
+    per, order = {}, {}
     for n in names:
         with h5py.File(os.path.join(run, n), "r") as f:
             t = float(f.attrs["time"])
@@ -155,12 +163,18 @@ def noise_along(run, z0, d0, p_unit, t0, jet):
             on = (g["active"][:] == 1) & (g["kind"][:] == 2)  # fluid (ParticleKind)
             s = (z0 - g["z"][:][on]) / d0
             p = g["p"][:][on]
+            if axis_dx:
+                r, w = np.abs(g["x"][:][on]), g["w"][:][on]
         length = float(row["L_over_d0"])
         for b in range(int(length // 2.0)):
             m = (s >= 2.0 * b) & (s < 2.0 * b + 2.0)
             if m.sum() >= 5:
                 per.setdefault(b, []).append(float(np.std(p[m])) / p_unit)
-    return [(2.0 * b, median(v)) for b, v in sorted(per.items())]
+                speed = abs(float(np.mean(w[m]))) if axis_dx else 0.0
+                if speed > 0:
+                    ordered = 2.0 * (d0 / axis_dx) * u0 / speed
+                    order.setdefault(b, []).append(float(np.sum(m & (r < 0.6 * axis_dx))) / ordered)
+    return [(2.0 * b, median(v), median(order[b]) if b in order else None) for b, v in sorted(per.items())]
 
 
 def main(argv=None):
@@ -237,11 +251,18 @@ def main(argv=None):
         kpk, apk = max(spec, key=lambda e: e[1])
         print(f"spectrum peak: ka = {kpk:.3f}, amplitude {apk:.3e} a")
         summary["spectrum_peak_ka"] = kpk
-    prof = noise_along(args.run, c["z0"], d0, p_unit, t0, jet) if sig > 0 else None
+    prof = (noise_along(args.run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0)
+            if sig > 0 else None)
     if prof:
-        quiet = next((s0 for s0, v in prof if v > 0.25), prof[-1][0] + 2.0)
+        quiet = next((s0 for s0, v, _o in prof if v > 0.25), prof[-1][0] + 2.0)
         print("pressure std / (sigma/a) along the intact jet (2 d0 slices, median over snapshots): "
-              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v in prof))
+              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _o in prof))
+        orders = [(s0, o) for s0, _v, o in prof if o is not None]
+        if orders:
+            print("axis order along the intact jet (rings within 0.6 dx of the axis over an ordered lattice "
+                  "stretched with the flow, 2 d0 slices, median over snapshots): "
+                  + ", ".join(f"{s0:.0f}:{o:.2f}" for s0, o in orders))
+            summary["axis_order_min"] = min(o for _s, o in orders)
         print(f"quiet (p std <= sigma/(4a)) to s = {quiet:.0f} d0, {l_mean - quiet:.1f} d0 above the "
               f"breakup (L {l_mean:.1f} d0)")
         summary.update({"quiet_to_over_d0": quiet, "noisy_reach_over_d0": l_mean - quiet})

@@ -17,7 +17,9 @@ grid. Ten snapshots (snap_*.h5) hold jet particles whose pressure alternates abo
 +-0.05 sigma/a up to s = 8 d0 and by +-2 sigma/a beyond, out to 14 d0 (and plug particles above
 the orifice): only the six 2 d0 slices below the orifice and above L = 12 d0 may count. The
 profile must be quiet to s = 8 d0 exactly, the noise must reach 4 d0 above the breakup, and
-the slices' standard deviations must print as 0.05 and 2 (the three digits printed).
+the slices' standard deviations must print as 0.05 and 2 (the three digits printed). The
+snapshots' rows leave the axis by half from 4 to 8 d0 and are stretched twice (twice u0) but in
+order beyond: the axis order must print 1, 0.5 and 1 there (the counts are exact).
 
 usage: test_jet_noise.py   (exit 0 on success, 1 with a message on failure)
 """
@@ -35,6 +37,7 @@ PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executabl
 
 D0, U0, SIGMA, RHO, MU = 0.001194, 0.7814, 0.072, 1000.0, 1.0e-3
 A = D0 / 2
+DX = D0 / 10
 DELTA0, KS = 1e-4, 0.8          # delta0 / a, growth per d0
 KA = 0.7                        # the wave: k d0 = 2 ka
 PERIODS, SAMPLES = 40, 400
@@ -51,6 +54,8 @@ mu = {MU}
 sigma = {SIGMA}
 [domain]
 geometry = "axisymmetric"
+[resolution]
+dx = {DX}
 [nozzle]
 x0 = 0.0
 z0 = 0.11
@@ -89,10 +94,18 @@ def write_snapshots(d):
         k = np.arange(len(s))
         amp = np.where(s < 8.0, 0.05, 2.0) * p_unit
         p = p_unit + np.where(k % 2 == 0, amp, -amp)
+        # the axis order: every other particle on the axis (20 in 2 d0, the lattice's 2 d0/dx at
+        # u0) up to 4 d0; every fourth from 4 to 8 d0 (half of the rows off the axis); beyond,
+        # every fourth at twice u0 (the rows stretched twice, still in order)
+        on_axis = np.where((s >= 4.0) & (s < 14.0), k % 4 == 0, k % 2 == 0)
+        x = np.where(on_axis, 0.5 * DX, 1.5 * DX)
+        w = np.where(s >= 8.0, -2.0 * U0, -U0)
         with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as f:
             f.attrs["time"] = 0.01 + 40 * n * 1e-4
             g = f.create_group("particles")
             g["z"] = z0 - s * D0
+            g["x"] = x
+            g["w"] = w
             g["p"] = p
             g["active"] = np.ones(len(s), dtype=np.int32)
             g["kind"] = np.full(len(s), 2, dtype=np.int32)
@@ -136,6 +149,12 @@ def main():
             failures.append(f"quiet to s = {val.get('quiet_to_over_d0')} d0, built 8")
         if not abs(val.get("noisy_reach_over_d0", 0) - 4.0) < 1e-6:
             failures.append(f"noise reach {val.get('noisy_reach_over_d0')} d0, built 4")
+        m = re.search(r"^axis order .*?: (.*)$", out.stdout, re.M)
+        if not m or m.group(1) != "0:1.00, 2:1.00, 4:0.50, 6:0.50, 8:1.00, 10:1.00":
+            failures.append(f"axis order {m.group(1) if m else None}: built 1 to 4 d0, 0.5 to 8 d0, 1 beyond "
+                            "(stretched twice)")
+        if val.get("axis_order_min") != 0.5:
+            failures.append(f"axis_order_min {val.get('axis_order_min')}, built 0.5")
         m = re.search(r"^pressure std .*?: (.*)$", out.stdout, re.M)
         prof = dict(kv.split(":") for kv in m.group(1).split(", ")) if m else {}
         want = {"0": 0.05, "6": 0.05, "8": 2.0, "10": 2.0}
