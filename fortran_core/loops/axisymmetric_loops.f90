@@ -222,11 +222,24 @@ contains
     real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*), ddx(*), ddz(*)
     integer :: k, a, b
     real(rp) :: q, t, fs, fp, dra, drb, dzz
+    real(rp), allocatable :: fsk(:), fpk(:)   ! on the heap: a row's pair list may be long
+    ! The kernel's derivatives first, in a loop of their own: each reads a cell of the 4 MB
+    ! tables at a place no earlier pair predicts, and a short loop keeps many of those reads in
+    ! flight at once, where the sums' long body would wait for each (the same operations, so
+    ! the same numbers).
+    allocate(fsk(np), fpk(np))
+    do k = 1, np
+      a = pa(k)
+      b = pb(k)
+      if (rl(a) .and. rl(b)) &
+        call ring_kernel_derivs(dx(k)**2 + dz(k)**2, x(a) * x(b), h, cells, fsk(k), fpk(k))
+    end do
     do k = 1, np
       a = pa(k)
       b = pb(k)
       if (rl(a) .and. rl(b)) then
-        call ring_kernel_derivs(dx(k)**2 + dz(k)**2, x(a) * x(b), h, cells, fs, fp)
+        fs = fsk(k)
+        fp = fpk(k)
         dra = 2.0_rp * dx(k) * fs + x(b) * fp
         drb = -2.0_rp * dx(k) * fs + x(a) * fp
         dzz = 2.0_rp * dz(k) * fs
