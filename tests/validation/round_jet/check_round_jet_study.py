@@ -65,11 +65,11 @@ def build_id(line):
     return m.group(1) if m else None
 
 
-def drop_stale_runs(sphjet, sdir):
-    """Removes the runs made by another build than sphjet, so that they are run again."""
+def drop_stale_runs(sphjet, sdir, runs=RUNS):
+    """Removes the runs (names) made by another build than sphjet, so that they are run again."""
     v = subprocess.run([str(sphjet), "--version"], capture_output=True, text=True)
     current = build_id(v.stdout)
-    for name in RUNS:
+    for name in runs:
         log = sdir / name / "run.log"
         if not log.exists():
             continue

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Validation: the quiet round jets (cases/round_jet/README.md, "The jets at their steady
+lengths") at the four speeds of Mansour & Chigier (1994) spread over the convectively unstable
+range (0.78, 1.02, 1.25, 1.57 m/s; below We_d = 2 pi a jet without gravity is absolutely
+unstable), d0/dx = 10, no imposed disturbance, with the quiet exit, alpha 0.02 with the
+reconstruction and the sink 15 d0 past the jet's end:
+
+    round_jet_study.py run --eps 0 --axis-pair rings_fit --quiet-exit --artificial-alpha 0.02 \\
+        --reconstruct --sink 15 --only mc_u0.7814 mc_u1.0179 mc_u1.2545 mc_u1.5699
+
+About 3 h of one core (1.5 h on two), resumable (a killed test continues where it stopped);
+runs made by another build are made again. Each run is read over its window (t >= 1.5 L_ref/U)
+by the study's report and by tools/jet_noise.py. Two modes:
+
+--noise-floor: the noise floor and the exit, the targets of the quiet jets.
+  - every run has a breakup length over its window;
+  - C = ln(a/delta0) of jet_noise.py's envelope fit at least 10 at every speed (the jets broke
+    at C = 3.4 before the quiet exit; the measurements' fit is 18.4; measured 15.8-17.2);
+  - the exit's pressure (the median over the window's samples of the jet's particles within
+    2 d0 of the orifice) within 5% of sigma/a on average, its standard deviation at most
+    sigma/(4a) (measured 0.965 and 0.11 sigma/a).
+--mansour-chigier: the lengths within 20% of the measured ones at the four speeds. NOT MET at
+  1.02 and 1.57 m/s (-23%, +21%): these jets follow Weber's law with one C (16.7-17.8) while the
+  measured C falls from 21.9 to 14.7 over these speeds, and no one C is within 20% of all of
+  them (the report's interval). This test fails until the model changes; it is not widened.
+Usage: check_quiet_round_jets.py SPHJET SOURCE_DIR WORK_DIR --noise-floor|--mansour-chigier
+"""
+import csv
+import importlib.util
+import pathlib
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from check_round_jet_study import PY, drop_stale_runs, number  # noqa: E402  (the same directory)
+
+STUDY = ["--eps", "0", "--d0-over-dx", "10", "--axis-pair", "rings_fit", "--quiet-exit",
+         "--artificial-alpha", "0.02", "--reconstruct", "--sink", "15"]
+RUNS = ["mc_u0.7814", "mc_u1.0179", "mc_u1.2545", "mc_u1.5699"]
+C_MIN = 10.0          # the noise floor's target: C = ln(a/delta0) >= 10
+EXIT_MEAN_TOL = 0.05  # the exit pressure's mean within 5% of sigma/a
+EXIT_STD_MAX = 0.25   # and its standard deviation at most sigma/(4a)
+MC_TOL = 0.20
+
+
+def summary(text):
+    m = re.search(r"^SUMMARY (.*)$", text, re.M)
+    return {k: float(v) for k, v in (kv.split("=") for kv in m.group(1).split())} if m else None
+
+
+def main():
+    modes = ("--noise-floor", "--mansour-chigier")
+    if len(sys.argv) != 5 or sys.argv[4] not in modes:
+        sys.exit(__doc__)
+    sphjet, src, work = map(pathlib.Path, sys.argv[1:4])
+    mode = sys.argv[4]
+    tool = src / "tools" / "round_jet_study.py"
+    sys.path.insert(0, str(tool.parent))
+    spec = importlib.util.spec_from_file_location("round_jet_study", tool)
+    study = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(study)
+    common = ["--root", str(work), *STUDY]
+    opts = study.parse(["run", *common])
+    sdir = pathlib.Path(study.study_dir(opts))
+    drop_stale_runs(sphjet, sdir, RUNS)
+    r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
+                        "--only", *RUNS])
+    if r.returncode != 0:
+        sys.exit(f"FAIL: round_jet_study.py run exited {r.returncode}")
+    out = work / "report_quiet"
+    r = subprocess.run([PY, str(tool), "report", *common, "--out", str(out), "--no-figures"])
+    if r.returncode != 0:
+        sys.exit(f"FAIL: round_jet_study.py report exited {r.returncode}")
+    with open(out / "round_jets.csv") as f:
+        rows = {row["run"]: row for row in csv.DictReader(f) if row["run"] in RUNS}
+    windows = {name: study.WINDOW_T_FACTOR * info["L_ref"] / info["U"] for _s, name, _sets, info in study.plan(opts)}
+
+    failures = []
+    for name in RUNS:
+        row = rows.get(name)
+        length = number(row["L/d0 SPH (std)"]) if row else None
+        if length is None:
+            failures.append(f"{name}: no breakup length ({row['status'] if row else 'not in the report'})")
+            continue
+        measured = float(row["L/d0 measured"])
+        noise = subprocess.run([PY, str(src / "tools" / "jet_noise.py"), str(sdir / name),
+                                "--from", f"{windows[name]:.6g}"], capture_output=True, text=True)
+        s = summary(noise.stdout)
+        if noise.returncode != 0 or s is None:
+            failures.append(f"{name}: jet_noise.py exited {noise.returncode}: {noise.stderr[-500:]}")
+            continue
+        print(f"{name}: L/d0 = {row['L/d0 SPH (std)']} (measured {measured}, {length / measured - 1:+.0%}); "
+              f"C = {s.get('C', float('nan')):.2f} (growth {s.get('omega_over_weber', float('nan')):.3f} of "
+              f"Weber's, delta0 {s.get('delta0_over_a', float('nan')):.3g} a); exit p "
+              f"{s['p_exit_mean_over_sigma_a']:.3f} +- {s['p_exit_std_over_sigma_a']:.3f} sigma/a")
+        if mode == "--noise-floor":
+            if not s.get("C", 0.0) >= C_MIN:
+                failures.append(f"{name}: C = {s.get('C')} below {C_MIN:g}")
+            if not abs(s["p_exit_mean_over_sigma_a"] - 1.0) <= EXIT_MEAN_TOL:
+                failures.append(f"{name}: exit pressure {s['p_exit_mean_over_sigma_a']:.3f} sigma/a, "
+                                f"not within {EXIT_MEAN_TOL:.0%}")
+            if not s["p_exit_std_over_sigma_a"] <= EXIT_STD_MAX:
+                failures.append(f"{name}: exit pressure std {s['p_exit_std_over_sigma_a']:.3f} sigma/a above "
+                                f"{EXIT_STD_MAX:g}")
+        elif abs(length / measured - 1.0) > MC_TOL:
+            failures.append(f"{name}: L/d0 {length} against the measured {measured} "
+                            f"({length / measured - 1.0:+.0%}, the target is {MC_TOL:.0%})")
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
