@@ -56,6 +56,19 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
+def round_jet_with_spheres(src, work, name, spheres):
+    """work (made empty) / name: cases/round_jet/round_jet.toml with a sphere of fluid on the
+    axis ([[fluid.disc]] with xc = 0) for each (zc, radius) of spheres -> its path."""
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    case = work / name
+    text = (src / "cases" / "round_jet" / "round_jet.toml").read_text()
+    for zc, r in spheres:
+        text += f"\n[[fluid.disc]]\nxc = 0.0\nzc = {zc!r}\nradius = {r!r}\n"
+    case.write_text(text)
+    return case
+
+
 def same_tables(a, b, first_flux):
     """removed_drops.csv, drops.csv and jet.csv equal byte for byte; with first_flux=False
     jet.csv's first data row without its flux and u_flux (columns 3 and 4)."""
@@ -74,13 +87,7 @@ def main():
     with_h5py()
     import numpy as np
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
-    shutil.rmtree(work, ignore_errors=True)
-    work.mkdir(parents=True)
-    case = work / "round_jet_drops.toml"
-    text = (src / "cases" / "round_jet" / "round_jet.toml").read_text()
-    for zc, r in ((Z_SMALL, R_SMALL), (Z_LARGE, R_LARGE)):
-        text += f"\n[[fluid.disc]]\nxc = 0.0\nzc = {zc!r}\nradius = {r!r}\n"
-    case.write_text(text)
+    case = round_jet_with_spheres(src, work, "round_jet_drops.toml", ((Z_SMALL, R_SMALL), (Z_LARGE, R_LARGE)))
     fails = []
 
     ref = work / "on"

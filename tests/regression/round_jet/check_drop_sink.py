@@ -22,14 +22,14 @@ Checks, each with its reason:
      check.
 Usage: check_drop_sink.py SPHJET SOURCE_DIR WORK_DIR
 """
-import csv
 import os
 import pathlib
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from summary_checks import h5_particles, resumed_particles, same_particles, sphjet_run, with_h5py  # noqa: E402  (tests/regression/)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_drop_removal import round_jet_with_spheres, rows  # noqa: E402  (the same directory)
 
 D0, DX = 0.001194, 0.0001194
 Z0 = 0.05
@@ -38,22 +38,10 @@ SETS = ["nozzle.disturbance=0", "nozzle.length_over_d0=6", "time.tmax=0.002", "t
         "breakup.check_every=0.0001", "output.format=\"hdf5\""]
 
 
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
 def main():
     with_h5py()
-    import numpy as np
     sphjet, src, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
-    shutil.rmtree(work, ignore_errors=True)
-    work.mkdir(parents=True)
-    case = work / "round_jet_sink.toml"
-    text = (src / "cases" / "round_jet" / "round_jet.toml").read_text()
-    for zc, r in SPHERES:
-        text += f"\n[[fluid.disc]]\nxc = 0.0\nzc = {zc!r}\nradius = {r!r}\n"
-    case.write_text(text)
+    case = round_jet_with_spheres(src, work, "round_jet_sink.toml", SPHERES)
     fails = []
 
     far = work / "m15"

@@ -25,7 +25,6 @@ by the study's report and by tools/jet_noise.py. Two modes:
   them (the report's interval). This test fails until the model changes; it is not widened.
 Usage: check_quiet_round_jets.py SPHJET SOURCE_DIR WORK_DIR --noise-floor|--mansour-chigier
 """
-import csv
 import importlib.util
 import pathlib
 import re
@@ -33,7 +32,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from check_round_jet_study import PY, drop_stale_runs, number  # noqa: E402  (the same directory)
+from check_round_jet_study import PY, drop_stale_runs, number, run_and_report  # noqa: E402  (the same directory)
 
 STUDY = ["--eps", "0", "--d0-over-dx", "10", "--axis-pair", "rings_fit", "--quiet-exit",
          "--artificial-alpha", "0.02", "--reconstruct", "--sink", "15"]
@@ -64,16 +63,7 @@ def main():
     opts = study.parse(["run", *common])
     sdir = pathlib.Path(study.study_dir(opts))
     drop_stale_runs(sphjet, sdir, RUNS)
-    r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
-                        "--only", *RUNS])
-    if r.returncode != 0:
-        sys.exit(f"FAIL: round_jet_study.py run exited {r.returncode}")
-    out = work / "report_quiet"
-    r = subprocess.run([PY, str(tool), "report", *common, "--out", str(out), "--no-figures"])
-    if r.returncode != 0:
-        sys.exit(f"FAIL: round_jet_study.py report exited {r.returncode}")
-    with open(out / "round_jets.csv") as f:
-        rows = {row["run"]: row for row in csv.DictReader(f) if row["run"] in RUNS}
+    rows = run_and_report(tool, common, sphjet, RUNS, work / "report_quiet")
     windows = {name: study.WINDOW_T_FACTOR * info["L_ref"] / info["U"] for _s, name, _sets, info in study.plan(opts)}
 
     failures = []

@@ -79,6 +79,20 @@ def drop_stale_runs(sphjet, sdir, runs=RUNS):
             shutil.rmtree(sdir / name)
 
 
+def run_and_report(tool, common, sphjet, runs, out):
+    """round_jet_study.py run (two threads) and report (into out) of runs with the options
+    common -> the report's rows of those runs, by name; exits with FAIL if either fails."""
+    r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
+                        "--only", *runs])
+    if r.returncode != 0:
+        sys.exit(f"FAIL: round_jet_study.py run exited {r.returncode}")
+    r = subprocess.run([PY, str(tool), "report", *common, "--out", str(out), "--no-figures"])
+    if r.returncode != 0:
+        sys.exit(f"FAIL: round_jet_study.py report exited {r.returncode}")
+    with open(out / "round_jets.csv") as f:
+        return {row["run"]: row for row in csv.DictReader(f) if row["run"] in runs}
+
+
 def main():
     modes = ("--weber", "--rayleigh-drops", "--mansour-chigier")
     if len(sys.argv) != 5 or sys.argv[4] not in modes:
@@ -94,16 +108,7 @@ def main():
               "--size-c", f"{SIZE_C:g}"]
     opts = study.parse(["run", *common])   # the study directory as the tool names it
     drop_stale_runs(sphjet, pathlib.Path(study.study_dir(opts)))
-    r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
-                        "--only", *RUNS])
-    if r.returncode != 0:
-        sys.exit(f"FAIL: round_jet_study.py run exited {r.returncode}")
-    out = work / "report"
-    r = subprocess.run([PY, str(tool), "report", *common, "--out", str(out), "--no-figures"])
-    if r.returncode != 0:
-        sys.exit(f"FAIL: round_jet_study.py report exited {r.returncode}")
-    with open(out / "round_jets.csv") as f:
-        rows = {row["run"]: row for row in csv.DictReader(f) if row["run"] in RUNS}
+    rows = run_and_report(tool, common, sphjet, RUNS, work / "report")
 
     failures = []
     xs, ls = [], []
