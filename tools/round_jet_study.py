@@ -338,7 +338,8 @@ def report(args):
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
               "window samples",
-              "err vs measured", "C = L/(d0 x) measured / SPH", "instability without gravity", "first breakup t [s], L/d0", "main drop d/d0",
+              "err vs measured", "C = L/(d0 x) measured / SPH", "instability without gravity",
+              "first breakup t [s], L/d0", "main drop d/d0",
               "main drops d/d0 window median (drop-samples)", "drops (satellites)", "status",
               "particles", "wall [s]"]
     rows, missing, notes = [], [], []

@@ -5,9 +5,9 @@
 // ([breakup] stop_after), and at the end copies the samples into DIR/run.h5 (/jet).
 // With [breakup] remove_drops_below_h or remove_drops_beyond_d0 it also picks, at each check,
 // the drops to remove (their particles' indices: the caller makes them inactive), logs the
-// small ones and writes DIR/removed_drops.csv. On resume the rows written after the checkpoint's step go away, the
-// first breakup is read back from jet.csv and the removed drops are counted from
-// removed_drops.csv.
+// small ones and writes DIR/removed_drops.csv. On resume the rows written after the
+// checkpoint's step go away, the first breakup is read back from jet.csv and the removed drops
+// are counted from removed_drops.csv.
 #pragma once
 
 #include <cstdint>
@@ -51,6 +51,8 @@ public:
     // particles.
     [[nodiscard]] std::int64_t removed_drops() const { return small_drops_ + sunk_drops_; }
     [[nodiscard]] std::int64_t removed_drop_particles() const { return removed_particles_; }
+    // Whether a rule removes drops (remove_drops_below_h or remove_drops_beyond_d0 set).
+    [[nodiscard]] bool removes() const { return remove_below_ > 0 || remove_beyond_ > 0; }
 
 private:
     std::vector<std::size_t> sample(const ParticleSet& ps, double time, std::int64_t step);
@@ -68,8 +70,6 @@ private:
     double u_sum_ = 0;
     double u_dev_max_ = 0;
     std::int64_t u_n_ = 0;
-    [[nodiscard]] bool removes() const { return remove_below_ > 0 || remove_beyond_ > 0; }
-
     double remove_below_ = 0;   // d_eq [m] below which a drop is removed; 0: none
     double remove_beyond_ = 0;  // [m] past the jet's end beyond which a drop is removed; 0: none
     std::int64_t small_drops_ = 0, sunk_drops_ = 0, removed_particles_ = 0;

@@ -560,8 +560,7 @@ void finish_run(const RunOptions& opts, const CaseSpec& spec, Solver& solver, Ru
                          "the domain{}",
                          sum.steps, sum.total_steps, sum.time, sum.legacy_time, sum.wall_seconds,
                          sum.particle_steps_per_second(), sum.outputs, sum.removed,
-                         spec.breakup && (spec.breakup->remove_drops_below_h > 0 ||
-                                          spec.breakup->remove_drops_beyond_d0 > 0)
+                         jet && jet->removes()
                              ? fmt::format("; {} drop(s) ({} particles) removed", sum.removed_drops,
                                            sum.removed_drop_particles)
                              : std::string()));
