@@ -41,6 +41,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from axisymmetric import weber_omega  # noqa: E402
 
 
+class NoiseError(Exception):
+    """A run that cannot be read (the message names it)."""
+
+
 def read_case(run):
     with open(os.path.join(run, "case.toml"), "rb") as f:
         case = tomllib.load(f)
@@ -57,8 +61,11 @@ def read_case(run):
 
 
 def read_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+    try:
+        with open(path, newline="") as f:
+            return list(csv.DictReader(f))
+    except OSError as e:
+        raise NoiseError(f"cannot read {path} ({e.strerror})")
 
 
 def median(v):
@@ -177,31 +184,29 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
     return [(2.0 * b, median(v), median(order[b]) if b in order else None) for b, v in sorted(per.items())]
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("run")
-    ap.add_argument("--from", dest="t0", type=float, default=None,
-                    help="first sample time [s] (default: twice the first breakup time: the start-up head gone)")
-    ap.add_argument("--plot", default=None, help="write the envelope and the spectrum to this PNG")
-    args = ap.parse_args(argv)
-
-    c = read_case(args.run)
+def analyse(run, t0=None):
+    """Prints the measures of the run directory `run` over its samples at t >= t0 (None: twice
+    the first breakup time) and returns them: a dict with "summary" (the SUMMARY line's values)
+    and what the plot draws. NoiseError for a run without the files or samples it needs."""
+    try:
+        c = read_case(run)
+    except (OSError, KeyError, tomllib.TOMLDecodeError) as e:
+        raise NoiseError(f"{run}: cannot read its case.toml ({e})")
     d0, u0 = c["d0"], c["u0"]
     a = 0.5 * d0
-    jet = read_rows(os.path.join(args.run, "jet.csv"))
+    jet = read_rows(os.path.join(run, "jet.csv"))
     if not jet:
-        sys.exit(f"jet_noise.py: {args.run}/jet.csv has no samples")
+        raise NoiseError(f"{run}/jet.csv has no samples")
     if "p_exit_mean" not in jet[0]:
-        sys.exit(f"jet_noise.py: {args.run}/jet.csv has no exit-noise columns (a run older than them)")
-    t0 = args.t0
+        raise NoiseError(f"{run}/jet.csv has no exit-noise columns (a run older than them)")
     if t0 is None:
         first = next((float(r["time"]) for r in jet if r["broken"] == "1"), None)
         t0 = 2.0 * first if first is not None else 0.5 * float(jet[-1]["time"])
     rows = [r for r in jet if float(r["time"]) >= t0]
     if not rows:
-        sys.exit(f"jet_noise.py: no sample at t >= {t0:g} s (the run ends at {jet[-1]['time']} s)")
+        raise NoiseError(f"{run}: no sample at t >= {t0:g} s (the run ends at {jet[-1]['time']} s)")
     steps = {r["step"] for r in rows}
-    surface = [r for r in read_rows(os.path.join(args.run, "jet_surface.csv")) if r["step"] in steps]
+    surface = [r for r in read_rows(os.path.join(run, "jet_surface.csv")) if r["step"] in steps]
 
     sig = c["sigma"]
     p_unit = sig / a if sig > 0 else float("nan")
@@ -251,7 +256,7 @@ def main(argv=None):
         kpk, apk = max(spec, key=lambda e: e[1])
         print(f"spectrum peak: ka = {kpk:.3f}, amplitude {apk:.3e} a")
         summary["spectrum_peak_ka"] = kpk
-    prof = (noise_along(args.run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0)
+    prof = (noise_along(run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0)
             if sig > 0 else None)
     if prof:
         quiet = next((s0 for s0, v, _o in prof if v > 0.25), prof[-1][0] + 2.0)
@@ -269,34 +274,56 @@ def main(argv=None):
     elif prof is None:
         print("noise along the jet: no snapshots (snap_*.h5) in the run directory")
     print("SUMMARY " + " ".join(f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v}" for k, v in summary.items()))
+    return {"summary": summary, "case": c, "env": env, "fit": fit, "spec": spec, "w_max": w_max,
+            "ka_max": ka_max, "t_cap": t_cap}
 
+
+def plot(run, got, out):
+    """The envelope and its fit beside the spectrum, from analyse's `got`, to the PNG out."""
+    c, env, fit, spec = got["case"], got["env"], got["fit"], got["spec"]
+    d0, u0, sig = c["d0"], c["u0"], c["sigma"]
+    w_max, ka_max, t_cap = got["w_max"], got["ka_max"], got["t_cap"]
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    if env:
+        ax1.semilogy([e[0] for e in env], [e[1] for e in env], ".", label="A(s) / a")
+    if fit:
+        k, ln_d, s0, s1 = fit
+        ss = [0.0, s1]
+        ax1.semilogy(ss, [math.exp(ln_d + k * s) for s in ss], "-", label=f"fit: C = {-ln_d:.2f}")
+        if c["round"] and sig > 0:
+            kw = w_max / t_cap / u0 * d0
+            ax1.semilogy(ss, [math.exp(ln_d + kw * (s - s0) + k * s0) for s in ss], "--",
+                         label="Weber's growth")
+    ax1.set_xlabel("s / d0 (from the orifice)")
+    ax1.set_ylabel("disturbance amplitude / a")
+    ax1.legend()
+    if spec:
+        ax2.semilogy([e[0] for e in spec], [e[1] for e in spec], "-")
+        ax2.axvline(ka_max, ls=":", color="k")
+    ax2.set_xlabel("ka")
+    ax2.set_ylabel("mean amplitude / a")
+    fig.suptitle(os.path.basename(os.path.normpath(run)))
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    print(f"plot: {out}")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("run")
+    ap.add_argument("--from", dest="t0", type=float, default=None,
+                    help="first sample time [s] (default: twice the first breakup time: the start-up head gone)")
+    ap.add_argument("--plot", default=None, help="write the envelope and the spectrum to this PNG")
+    args = ap.parse_args(argv)
+    try:
+        got = analyse(args.run, args.t0)
+    except NoiseError as e:
+        sys.exit(f"jet_noise.py: {e}")
     if args.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
-        if env:
-            ax1.semilogy([e[0] for e in env], [e[1] for e in env], ".", label="A(s) / a")
-        if fit:
-            k, ln_d, s0, s1 = fit
-            ss = [0.0, s1]
-            ax1.semilogy(ss, [math.exp(ln_d + k * s) for s in ss], "-", label=f"fit: C = {-ln_d:.2f}")
-            if c["round"] and sig > 0:
-                kw = w_max / t_cap / u0 * d0
-                ax1.semilogy(ss, [math.exp(ln_d + kw * (s - s0) + k * s0) for s in ss], "--",
-                             label="Weber's growth")
-        ax1.set_xlabel("s / d0 (from the orifice)")
-        ax1.set_ylabel("disturbance amplitude / a")
-        ax1.legend()
-        if spec:
-            ax2.semilogy([e[0] for e in spec], [e[1] for e in spec], "-")
-            ax2.axvline(ka_max, ls=":", color="k")
-        ax2.set_xlabel("ka")
-        ax2.set_ylabel("mean amplitude / a")
-        fig.suptitle(os.path.basename(os.path.normpath(args.run)))
-        fig.tight_layout()
-        fig.savefig(args.plot, dpi=90)
-        print(f"plot: {args.plot}")
+        plot(args.run, got, args.plot)
     return 0
 
 

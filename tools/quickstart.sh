@@ -1,30 +1,19 @@
 #!/usr/bin/env bash
-# The main job on a fresh machine: install, build, and run the paper's jet 4 (u0 = 0.25 m/s,
-# Wendland, gravity along the jet) at the coarse D0/dx = 10 of cases/jet/jet.toml to its first
-# breakup (about 30 s of running on two cores), then print the breakup length beside the
-# paper's correlation (eq 37). Output goes to runs/quickstart_jet/ (open sphjet.xmf in
-# ParaView; jet.csv and drops.csv are the breakup record). The dam break of earlier versions
-# is cases/quickstart/dambreak.toml.
+# The main job on a fresh machine: install, build, and run one of the laminar round water jets
+# that Mansour & Chigier (1994) measured (d0 = 1.194 mm, U = 1.2545 m/s, no imposed
+# disturbance) in the axisymmetric mode, with the round-jet study's numerics
+# (cases/round_jet/README.md) at a coarse d0/dx = 6 and a short window (0.4 L/U from
+# 1.5 L/U), then print its breakup length beside the measurement and the theory, and its main
+# drops beside Rayleigh's. About 4 minutes on two cores. Output goes to
+# runs/quickstart/.../mc_u1.2545/ (open sphjet.xmf in ParaView; jet.csv and drops.csv are the
+# breakup record). The paper's planar jets are cases/jet/ and tools/jet_study.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh
 bash tools/build.sh
-out=runs/quickstart_jet
-./build/cpp_driver/sphjet run cases/jet/jet.toml --out "$out" --force
+study=(--root runs/quickstart --eps 0 --axis-pair rings_fit --quiet-exit --artificial-alpha 0.02
+       --reconstruct --sink 15 --d0-over-dx 6 --window 0.4)
+/usr/bin/python3 tools/round_jet_study.py run "${study[@]}" --only mc_u1.2545
 echo
-grep -E "^jet: |^done: " "$out/run.log"
-/usr/bin/python3 - "$out/jet.csv" <<'PY'
-import csv, math, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-first = next((r for r in rows if r["broken"] == "1"), None)
-rho, u0, d0, sigma, mu = 1000.0, 0.25, 0.01, 0.072, 1.0e-3
-we = rho * u0 ** 2 * (d0 / 2) / sigma
-oh = math.sqrt(we) / (rho * u0 * (d0 / 2) / mu)
-eq37 = 13 * math.sqrt(we) * (1 + 3 * oh)
-if first is None:
-    print(f"the jet did not break; eq 37: L/D0 = {eq37:.2f}")
-else:
-    print(f"first breakup at t = {float(first['time']):.3f} s: L/D0 = {float(first['L_over_d0']):.2f} "
-          f"(paper, Wendland: 28.10; eq 37: {eq37:.2f}). At D0/dx = 10 this planar jet breaks where "
-          f"gravity has thinned it to a few particles: see cases/jet/README.md.")
-PY
+/usr/bin/python3 tools/round_jet_study.py report "${study[@]}" --only mc_u1.2545 --brief \
+    --out runs/quickstart/report

@@ -5,12 +5,13 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--set-name mc paper] [--only RUN ...]
-      [--threads 2]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--set-name mc paper]
+      [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--out cases/round_jet]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--out cases/round_jet]
+      [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -39,7 +40,8 @@ jet), so that a run costs its jet's length and not its box's (suffix _sinkM).
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
 for every run, at least 10 d0, in a study directory of its own: runs sized for jets that
-break well before the measured length, at a fraction of the cost): it runs to T = 2.5 L_ref / U, the nozzle holds
+break well before the measured length, at a fraction of the cost): it runs to T = (1.5 + W) L_ref / U
+(W = --window, 1 by default; another W has a study directory of its own, suffix _wW), the nozzle holds
 the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d0 below the
 orifice (drops beyond leave the run). The breakup length of a run is the mean of the jet's
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.5 L_ref / U,
@@ -63,13 +65,20 @@ L / d0 = C x + b with its R^2 to each. The paper's eq 37 is the same form with r
 (We = We_d / 2, Oh = Oh_d sqrt 2) and C = 13.
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
+`report --brief` prints each run in a few lines instead of the table: its length beside the
+measured one, eq 37 and Weber's law with the measurements' C, and beside Weber's length with the
+run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_noise.py over
+the window); its main drops beside Rayleigh's.
 """
+import contextlib
 import csv
+import io
 import math
 import os
 import statistics
 import sys
 
+import jet_noise
 from study_runs import (StudyError, add_damping_arguments, add_run_arguments, blew_up, check_damping,
                         damping_flags, damping_sets, damping_tag, dispatch, drops_at, first_breakup, fmt,
                         is_broken, md_table, open_report, read_csv, run_all, run_summary, select_runs,
@@ -84,7 +93,7 @@ D0_MC, D0_PAPER = 0.001194, 0.01
 PAPER_U0S = (0.07, 0.17, 0.20, 0.25)
 RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the fastest-growing wave
 LENGTH_TOL = 0.20     # the breakup lengths' target: within 20% of the measured ones
-RUN_T_FACTOR, WINDOW_T_FACTOR = 2.5, 1.5      # T and the window start, in L_ref / U
+WINDOW_T_FACTOR, WINDOW_LENGTH = 1.5, 1.0    # the window's start and (default) length, in L_ref / U
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -161,12 +170,13 @@ def box_below(l_ref, d0):
     return BOX_L_FACTOR * l_ref + 10.0 * d0
 
 
-def sizing(u, d0, l_ref, n, refill=False):
+def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH):
     """The overrides that size one run: nozzle length, box, orifice height, end time, sampling.
     refill: a nozzle of REFILL_NOZZLE d0 that refills (nozzle.refill) instead of one that holds
-    the fluid of the whole run."""
+    the fluid of the whole run; window: the window's length in L_ref / U (the run ends at
+    WINDOW_T_FACTOR + window of them)."""
     dx = d0 / n
-    t_end = RUN_T_FACTOR * l_ref / u
+    t_end = (WINDOW_T_FACTOR + window) * l_ref / u
     nozzle = REFILL_NOZZLE if refill else u * t_end / d0 + 2.0
     below = box_below(l_ref, d0)
     z0 = below
@@ -189,16 +199,16 @@ def plan(opts):
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct: the damping
     (study_runs.damping_sets)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
-    eps, n = opts.eps, opts.d0_over_dx
+    eps, n, window = opts.eps, opts.d0_over_dx, opts.window
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
-        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet),
+        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet, window),
                      {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, D0_MC)}))
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
-        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet) + ["fluid.c0=4"],
+        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window) + ["fluid.c0=4"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER)}))
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
@@ -228,7 +238,8 @@ def study_flags(opts):
             + ("" if opts.remove_h is None else f" --remove-drops-below-h {opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f" --axis-pair {opts.axis_pair}")
             + (" --quiet-exit" if opts.quiet_exit else "") + damping_flags(opts)
-            + ("" if opts.sink is None else f" --sink {opts.sink:g}"))
+            + ("" if opts.sink is None else f" --sink {opts.sink:g}")
+            + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}"))
 
 
 def study_dir(opts):
@@ -237,7 +248,8 @@ def study_dir(opts):
     tail = (("" if opts.size_c is None else f"_c{opts.size_c:g}")
             + ("" if opts.remove_h is None else f"_rm{opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
-            + damping_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}"))
+            + damping_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
+            + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -333,8 +345,8 @@ def read_run(run_dir, info):
 def report(args):
     sdir = study_dir(args)
     open_report(sdir, args.out, "round_jet_study.py run" + study_flags(args))
-    runs = [(s, name, info, read_run(os.path.join(sdir, name), info))
-            for s, name, _sets, info in plan(args)]
+    chosen = select_runs(plan(args), SET_NAMES, args.only, None, True)
+    runs = [(s, name, info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
               "window samples",
@@ -412,8 +424,42 @@ def report(args):
         f.write(text)
     if not args.no_figures:
         figure(args.out, runs, c_m, c_s)
-    print(text)
+    print("\n\n".join(brief(sdir, args, s, name, info, r) for s, name, info, r in runs) if args.brief else text)
     return 0
+
+
+def brief(sdir, args, s, name, info, r):
+    """One run in a few lines: its length beside the measurement and the theory, its drops beside
+    Rayleigh's."""
+    g = groups(info["U"], info["d0"])
+    t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
+    lines = [f"{name}: U = {info['U']:g} m/s (We_d = {g['We_d']:.3g}, Oh_d = {g['Oh_d']:.2g}), "
+             f"d0/dx = {args.d0_over_dx:g}, {r['status']}"]
+    if r["L"] is None:
+        return "\n".join(lines + [f"  no breakup length: {'; '.join(r['notes']) or 'no samples'}"])
+    lines.append(f"  breakup length L/d0 = {r['L']:.1f} (std {r['L_std']:.1f}) over {r['n_window']} samples "
+                 f"from t = {t0:.4g} s")
+    if info["L_meas"] is not None:
+        lines.append(f"  measured (Mansour & Chigier 1994): {info['L_meas']:.1f}, this run "
+                     f"{100.0 * (r['L'] - info['L_meas']) / info['L_meas']:+.0f}%")
+    try:
+        with contextlib.redirect_stdout(io.StringIO()):
+            noise = jet_noise.analyse(os.path.join(sdir, name), t0)["summary"]
+    except jet_noise.NoiseError as e:
+        noise = {"error": str(e)}
+    if "L_weber_over_d0" in noise:
+        lines.append(f"  theory: Weber's L = u0 ln(a/delta0) / omega_max = {noise['L_weber_over_d0']:.1f}, with "
+                     f"this run's disturbance at the orifice, delta0 = {noise['delta0_over_a']:.2g} a "
+                     f"(tools/jet_noise.py; its growth is {noise['omega_over_weber']:.2f} of Weber's)")
+    else:
+        lines.append(f"  theory: no fit of the disturbance's growth ({noise.get('error', 'no growing stretch')})")
+    mc = read_mc()
+    c_m = fit_origin([groups(u, D0_MC)["x"] for u, _l in mc], [l for _u, l in mc])
+    lines.append(f"  the paper's eq 37: {g['eq37']:.1f}; Weber's law L/d0 = C sqrt(We_d)(1 + 3 Oh_d) with the "
+                 f"measurements' C = {c_m:.1f}: {c_m * g['x']:.1f}")
+    lines.append(f"  main drops: {fmt(r['drops_median'])} d0 (median over the window, {r['n_main_window']} "
+                 f"drop-samples); Rayleigh's: {RAYLEIGH_DROP} d0")
+    return "\n".join(lines)
 
 
 def figure(out, runs, c_m, c_s):
@@ -469,6 +515,9 @@ def parse(argv=None):
         p.add_argument("--sink", type=float, default=None, metavar="M",
                        help="remove the drops wholly farther than M d0 past the jet's end at the checks "
                             "(breakup.remove_drops_beyond_d0; default: none, the box's end is the only sink)")
+        p.add_argument("--window", type=float, default=WINDOW_LENGTH, metavar="W",
+                       help=f"the window's length in L_ref / U: every run ends at {WINDOW_T_FACTOR:g} + W of "
+                            f"them (default {WINDOW_LENGTH:g}; suffix _wW)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -477,6 +526,11 @@ def parse(argv=None):
         else:
             p.add_argument("--out", default=os.path.join(REPO, "cases", "round_jet"))
             p.add_argument("--no-figures", action="store_true")
+            p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
+                           help="only these runs (default: every run of the plan)")
+            p.add_argument("--brief", action="store_true",
+                           help="print each run in a few lines (its length beside the measurement and "
+                                "the theory, its drops beside Rayleigh's) instead of the table")
     args = ap.parse_args(argv)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
@@ -484,6 +538,8 @@ def parse(argv=None):
         ap.error(f"--remove-drops-below-h {args.remove_h}: expected a positive number")
     if args.size_c is not None and not args.size_c > 0:
         ap.error(f"--size-c {args.size_c}: expected a positive number")
+    if not args.window > 0:
+        ap.error(f"--window {args.window}: expected a positive number of L_ref / U")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):

@@ -3,7 +3,8 @@
 the breakup length is the mean of L over the window t >= 1.5 L_ref / U and needs every sample
 there broken; the fits of L/d0 = C x (x = sqrt(We_d)(1 + 3 Oh_d)) are least squares through the
 origin; the groups are the diameter ones; missing runs are listed; `run --dry-run` sizes a run
-as its docstring says.
+as its docstring says; `report --only --brief` prints the chosen run in lines (its theory line
+checked on test_jet_noise.py's synthetic run, whose answer is known).
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -138,7 +139,7 @@ def main():
         check(abs(rjs.fit_origin([1.0, 2.0], [3.0, 5.0]) - 13.0 / 5.0) < 1e-12, "fit through origin")
         c, b, r2fit = rjs.fit_line([1.0, 2.0, 3.0], [2.0, 4.0, 6.0])
         check(abs(c - 2) < 1e-12 and abs(b) < 1e-12 and abs(r2fit - 1) < 1e-12, "line fit")
-        # run --dry-run: the run of U = 0.7814 m/s lasts 2.5 L_ref / U with a nozzle that holds it
+        # run --dry-run: the run of U = 0.7814 m/s lasts 2.5 L_ref / U (--window 1) with a nozzle that holds it
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
                             "--only", "mc_u0.7814"],
                            capture_output=True, text=True)
@@ -214,6 +215,41 @@ def main():
         check(rjs.study_flags(rjs.parse(["report", "--eps", "0", "--axis-pair", "rings_fit", "--quiet-exit",
                                          "--sink", "15"])) ==
               " --eps 0 --d0-over-dx 10 --axis-pair rings_fit --quiet-exit --sink 15", "the report's run command")
+        # --window 0.4: runs end at 1.9 L_ref / U, in a directory of its own; 0 refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--window", "0.4", "--only", "mc_u0.7814"], capture_output=True, text=True)
+        t_end = 1.9 * 67.52 * 0.001194 / 0.7814
+        check(f"time.tmax={t_end:.6g}" in p.stdout and "eps0.01_n10_w0.4" in p.stdout, f"--window: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--window", "0"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--window" in p.stderr, f"--window 0: exit {p.returncode}")
+        check(rjs.study_flags(rjs.parse(["report", "--window", "0.4"])) == " --eps 0.01 --d0-over-dx 10 --window 0.4",
+              "the report's run command with --window")
+        # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
+        # inputs (the fake run has no case.toml: said so, not a crash)
+        p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
+                            "mc_u0.7814", "--brief"], capture_output=True, text=True)
+        c_meas = rjs.fit_origin([rjs.groups(u, 0.001194)["x"] for u, _l in rjs.read_mc()],
+                                [l for _u, l in rjs.read_mc()])
+        for want in ("mc_u0.7814: U = 0.7814 m/s", "breakup length L/d0 = 67.0 (std 2.2) over 4 samples",
+                     "measured (Mansour & Chigier 1994): 67.5, this run -1%", "theory: no fit",
+                     f"the measurements' C = {c_meas:.1f}: {c_meas * x1:.1f}",
+                     "main drops: 2.00 d0 (median over the window, 3 drop-samples); Rayleigh's: 1.89 d0"):
+            check(want in p.stdout, f"--brief lacks {want!r}: {p.stdout} {p.stderr}")
+        check("mc_u1.0179" not in p.stdout and abs(c_meas - 18.4) < 0.05,
+              f"--only: one run; the measurements' C 18.4: {c_meas}")
+        # the theory line on tests/regression/round_jet/test_jet_noise.py's synthetic run (delta0 =
+        # 1e-4 a, Weber's L = 30.5 d0 there), the window from t = 0
+        sys.path.insert(0, HERE)
+        import test_jet_noise  # noqa: E402
+        syn = os.path.join(tmp, "syn", "mc_u0.7814")
+        os.makedirs(syn)
+        test_jet_noise.write_run(syn)
+        info = {"U": 0.7814, "d0": 0.001194, "L_ref": 0.0, "L_meas": 67.52}
+        r = {"status": "finished", "L": 12.0, "L_std": 0.0, "n_window": 400, "drops_median": 1.9,
+             "n_main_window": 5, "notes": []}
+        text = rjs.brief(os.path.dirname(syn), rjs.parse(["report"]), "mc", "mc_u0.7814", info, r)
+        check("theory: Weber's L = u0 ln(a/delta0) / omega_max = 30.5, with this run's disturbance at the "
+              "orifice, delta0 = 0.0001 a" in text, f"the theory line: {text}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
