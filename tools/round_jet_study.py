@@ -345,7 +345,7 @@ def read_run(run_dir, info):
 def report(args):
     sdir = study_dir(args)
     open_report(sdir, args.out, "round_jet_study.py run" + study_flags(args))
-    chosen = select_runs(plan(args), SET_NAMES, args.only, None, True)
+    chosen = select_runs(plan(args), SET_NAMES, args.only, None, dry_run=True)   # no binary needed
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
@@ -424,13 +424,13 @@ def report(args):
         f.write(text)
     if not args.no_figures:
         figure(args.out, runs, c_m, c_s)
-    print("\n\n".join(brief(sdir, args, s, name, info, r) for s, name, info, r in runs) if args.brief else text)
+    print("\n\n".join(brief(sdir, args, name, info, r) for _s, name, info, r in runs) if args.brief else text)
     return 0
 
 
-def brief(sdir, args, s, name, info, r):
-    """One run in a few lines: its length beside the measurement and the theory, its drops beside
-    Rayleigh's."""
+def brief(sdir, args, name, info, r):
+    """The run `name` of the study in sdir (its plan info, its read_run r) in a few lines: its
+    length beside the measurement and the theory, its drops beside Rayleigh's."""
     g = groups(info["U"], info["d0"])
     t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
     lines = [f"{name}: U = {info['U']:g} m/s (We_d = {g['We_d']:.3g}, Oh_d = {g['Oh_d']:.2g}), "

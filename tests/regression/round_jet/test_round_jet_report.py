@@ -247,7 +247,7 @@ def main():
         info = {"U": 0.7814, "d0": 0.001194, "L_ref": 0.0, "L_meas": 67.52}
         r = {"status": "finished", "L": 12.0, "L_std": 0.0, "n_window": 400, "drops_median": 1.9,
              "n_main_window": 5, "notes": []}
-        text = rjs.brief(os.path.dirname(syn), rjs.parse(["report"]), "mc", "mc_u0.7814", info, r)
+        text = rjs.brief(os.path.dirname(syn), rjs.parse(["report"]), "mc_u0.7814", info, r)
         check("theory: Weber's L = u0 ln(a/delta0) / omega_max = 30.5, with this run's disturbance at the "
               "orifice, delta0 = 0.0001 a" in text, f"the theory line: {text}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
