@@ -165,6 +165,17 @@ def u_tag(u):
     return f"u{u:g}"
 
 
+def window_start(info):
+    """The window's start [s] of a run of the plan (its info: U, L_ref)."""
+    return WINDOW_T_FACTOR * info["L_ref"] / info["U"]
+
+
+def measured_c():
+    """C of L/d0 = C x through the origin over every measured jet (18.4)."""
+    mc = read_mc()
+    return fit_origin([groups(u, D0_MC)["x"] for u, _l in mc], [l for _u, l in mc])
+
+
 def box_below(l_ref, d0):
     """The box's reach below the orifice [m] (drops beyond it leave the run)."""
     return BOX_L_FACTOR * l_ref + 10.0 * d0
@@ -281,7 +292,7 @@ def read_run(run_dir, info):
          "L_first": None, "drops_main": None, "drops_median": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
-    t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
+    t0 = window_start(info)
 
     def first_and_window(rows):
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
@@ -424,15 +435,19 @@ def report(args):
         f.write(text)
     if not args.no_figures:
         figure(args.out, runs, c_m, c_s)
-    print("\n\n".join(brief(sdir, args, name, info, r) for _s, name, info, r in runs) if args.brief else text)
+    if args.brief:
+        c_all = measured_c()
+        text = "\n\n".join(brief(sdir, args, name, info, r, c_all) for _s, name, info, r in runs)
+    print(text)
     return 0
 
 
-def brief(sdir, args, name, info, r):
+def brief(sdir, args, name, info, r, c_all):
     """The run `name` of the study in sdir (its plan info, its read_run r) in a few lines: its
-    length beside the measurement and the theory, its drops beside Rayleigh's."""
+    length beside the measurement and the theory (c_all: measured_c()), its drops beside
+    Rayleigh's."""
     g = groups(info["U"], info["d0"])
-    t0 = WINDOW_T_FACTOR * info["L_ref"] / info["U"]
+    t0 = window_start(info)
     lines = [f"{name}: U = {info['U']:g} m/s (We_d = {g['We_d']:.3g}, Oh_d = {g['Oh_d']:.2g}), "
              f"d0/dx = {args.d0_over_dx:g}, {r['status']}"]
     if r["L"] is None:
@@ -453,10 +468,8 @@ def brief(sdir, args, name, info, r):
                      f"(tools/jet_noise.py; its growth is {noise['omega_over_weber']:.2f} of Weber's)")
     else:
         lines.append(f"  theory: no fit of the disturbance's growth ({noise.get('error', 'no growing stretch')})")
-    mc = read_mc()
-    c_m = fit_origin([groups(u, D0_MC)["x"] for u, _l in mc], [l for _u, l in mc])
     lines.append(f"  the paper's eq 37: {g['eq37']:.1f}; Weber's law L/d0 = C sqrt(We_d)(1 + 3 Oh_d) with the "
-                 f"measurements' C = {c_m:.1f}: {c_m * g['x']:.1f}")
+                 f"measurements' C = {c_all:.1f}: {c_all * g['x']:.1f}")
     lines.append(f"  main drops: {fmt(r['drops_median'])} d0 (median over the window, {r['n_main_window']} "
                  f"drop-samples); Rayleigh's: {RAYLEIGH_DROP} d0")
     return "\n".join(lines)

@@ -228,8 +228,7 @@ def main():
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
                             "mc_u0.7814", "--brief"], capture_output=True, text=True)
-        c_meas = rjs.fit_origin([rjs.groups(u, 0.001194)["x"] for u, _l in rjs.read_mc()],
-                                [l for _u, l in rjs.read_mc()])
+        c_meas = rjs.measured_c()
         for want in ("mc_u0.7814: U = 0.7814 m/s", "breakup length L/d0 = 67.0 (std 2.2) over 4 samples",
                      "measured (Mansour & Chigier 1994): 67.5, this run -1%", "theory: no fit",
                      f"the measurements' C = {c_meas:.1f}: {c_meas * x1:.1f}",
@@ -247,7 +246,7 @@ def main():
         info = {"U": 0.7814, "d0": 0.001194, "L_ref": 0.0, "L_meas": 67.52}
         r = {"status": "finished", "L": 12.0, "L_std": 0.0, "n_window": 400, "drops_median": 1.9,
              "n_main_window": 5, "notes": []}
-        text = rjs.brief(os.path.dirname(syn), rjs.parse(["report"]), "mc_u0.7814", info, r)
+        text = rjs.brief(os.path.dirname(syn), rjs.parse(["report"]), "mc_u0.7814", info, r, c_meas)
         check("theory: Weber's L = u0 ln(a/delta0) / omega_max = 30.5, with this run's disturbance at the "
               "orifice, delta0 = 0.0001 a" in text, f"the theory line: {text}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)

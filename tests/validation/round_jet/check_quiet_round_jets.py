@@ -10,7 +10,7 @@ reconstruction and the sink 15 d0 past the jet's end:
 
 About 3 h of one core (1.5 h on two), resumable (a killed test continues where it stopped);
 runs made by another build are made again. Each run is read over its window (t >= 1.5 L_ref/U)
-by the study's report and by tools/jet_noise.py. Two modes:
+by the study's report and by tools/jet_noise.py (its analyse()). Two modes:
 
 --noise-floor: the noise floor and the exit, the targets of the quiet jets.
   - every run has a breakup length over its window;
@@ -27,12 +27,10 @@ Usage: check_quiet_round_jets.py SPHJET SOURCE_DIR WORK_DIR --noise-floor|--mans
 """
 import importlib.util
 import pathlib
-import re
-import subprocess
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from check_round_jet_study import PY, drop_stale_runs, number, run_and_report  # noqa: E402  (the same directory)
+from check_round_jet_study import drop_stale_runs, number, run_and_report  # noqa: E402  (the same directory)
 
 STUDY = ["--eps", "0", "--d0-over-dx", "10", "--axis-pair", "rings_fit", "--quiet-exit",
          "--artificial-alpha", "0.02", "--reconstruct", "--sink", "15"]
@@ -41,11 +39,6 @@ C_MIN = 10.0          # the noise floor's target: C = ln(a/delta0) >= 10
 EXIT_MEAN_TOL = 0.05  # the exit pressure's mean within 5% of sigma/a
 EXIT_STD_MAX = 0.25   # and its standard deviation at most sigma/(4a)
 MC_TOL = 0.20
-
-
-def summary(text):
-    m = re.search(r"^SUMMARY (.*)$", text, re.M)
-    return {k: float(v) for k, v in (kv.split("=") for kv in m.group(1).split())} if m else None
 
 
 def main():
@@ -59,12 +52,13 @@ def main():
     spec = importlib.util.spec_from_file_location("round_jet_study", tool)
     study = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(study)
+    import jet_noise   # tools/, beside the study tool
     common = ["--root", str(work), *STUDY]
     opts = study.parse(["run", *common])
     sdir = pathlib.Path(study.study_dir(opts))
     drop_stale_runs(sphjet, sdir, RUNS)
     rows = run_and_report(tool, common, sphjet, RUNS, work / "report_quiet")
-    windows = {name: study.WINDOW_T_FACTOR * info["L_ref"] / info["U"] for _s, name, _sets, info in study.plan(opts)}
+    windows = {name: study.window_start(info) for _s, name, _sets, info in study.plan(opts)}
 
     failures = []
     for name in RUNS:
@@ -74,11 +68,10 @@ def main():
             failures.append(f"{name}: no breakup length ({row['status'] if row else 'not in the report'})")
             continue
         measured = float(row["L/d0 measured"])
-        noise = subprocess.run([PY, str(src / "tools" / "jet_noise.py"), str(sdir / name),
-                                "--from", f"{windows[name]:.6g}"], capture_output=True, text=True)
-        s = summary(noise.stdout)
-        if noise.returncode != 0 or s is None:
-            failures.append(f"{name}: jet_noise.py exited {noise.returncode}: {noise.stderr[-500:]}")
+        try:
+            s = jet_noise.analyse(str(sdir / name), windows[name])["summary"]
+        except jet_noise.NoiseError as e:
+            failures.append(f"{name}: jet_noise.py: {e}")
             continue
         print(f"{name}: L/d0 = {row['L/d0 SPH (std)']} (measured {measured}, {length / measured - 1:+.0%}); "
               f"C = {s.get('C', float('nan')):.2f} (growth {s.get('omega_over_weber', float('nan')):.3f} of "
