@@ -5,12 +5,14 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--set-name mc paper]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--cfl K]
+      [--set-name mc paper]
       [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--out cases/round_jet]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--cfl K]
+      [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -35,7 +37,10 @@ damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alp
 --reconstruct numerics.artificial_reconstruction, which keeps that damping to the particle-scale
 motion (suffix _alphaA_rec). --sink M removes, at every check once the jet is broken, the drops
 wholly farther than M d0 past its end (breakup.remove_drops_beyond_d0, a sink that follows the
-jet), so that a run costs its jet's length and not its box's (suffix _sinkM).
+jet), so that a run costs its jet's length and not its box's (suffix _sinkM). --cfl K sets
+time.cfl = K (the Courant number of the variable step, 0.2 in the case) in every run (suffix
+_cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk viscosity's bound,
+so K = 0.3 gives about 1.4 times fewer steps (cases/round_jet/README.md, "The time step").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -236,6 +241,8 @@ def plan(opts):
     extra += damping_sets(opts)
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
+    if opts.cfl is not None:
+        extra.append(f"time.cfl={opts.cfl:g}")
     return [(s, name, sets + extra, info) for s, name, sets, info in runs]
 
 
@@ -250,7 +257,8 @@ def study_flags(opts):
             + ("" if opts.axis_pair is None else f" --axis-pair {opts.axis_pair}")
             + (" --quiet-exit" if opts.quiet_exit else "") + damping_flags(opts)
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
-            + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}"))
+            + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
+            + ("" if opts.cfl is None else f" --cfl {opts.cfl:g}"))
 
 
 def study_dir(opts):
@@ -260,7 +268,8 @@ def study_dir(opts):
             + ("" if opts.remove_h is None else f"_rm{opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
             + damping_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
-            + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}"))
+            + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
+            + ("" if opts.cfl is None else f"_cfl{opts.cfl:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -531,6 +540,9 @@ def parse(argv=None):
         p.add_argument("--window", type=float, default=WINDOW_LENGTH, metavar="W",
                        help=f"the window's length in L_ref / U: every run ends at {WINDOW_T_FACTOR:g} + W of "
                             f"them (default {WINDOW_LENGTH:g}; suffix _wW)")
+        p.add_argument("--cfl", type=float, default=None, metavar="K",
+                       help="time.cfl = K in every run: the Courant number of the variable step "
+                            "(default: the case's, 0.2; suffix _cflK)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -553,6 +565,8 @@ def parse(argv=None):
         ap.error(f"--size-c {args.size_c}: expected a positive number")
     if not args.window > 0:
         ap.error(f"--window {args.window}: expected a positive number of L_ref / U")
+    if args.cfl is not None and not 0 < args.cfl <= 1:
+        ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):

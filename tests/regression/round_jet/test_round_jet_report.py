@@ -224,6 +224,16 @@ def main():
         check(p.returncode == 2 and "--window" in p.stderr, f"--window 0: exit {p.returncode}")
         check(rjs.study_flags(rjs.parse(["report", "--window", "0.4"])) == " --eps 0.01 --d0-over-dx 10 --window 0.4",
               "the report's run command with --window")
+        # --cfl 0.3: time.cfl on every run, in a directory of its own; 0 and above 1 refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
+                            "--window", "0.4", "--cfl", "0.3", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check("time.cfl=0.3" in p.stdout and "eps0.01_n10_w0.4_cfl0.3" in p.stdout, f"--cfl: {p.stdout}")
+        for bad in ("0", "1.5"):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--cfl", bad], capture_output=True, text=True)
+            check(p.returncode == 2 and "--cfl" in p.stderr, f"--cfl {bad}: exit {p.returncode}")
+        check(rjs.study_flags(rjs.parse(["report", "--window", "0.4", "--cfl", "0.3"]))
+              == " --eps 0.01 --d0-over-dx 10 --window 0.4 --cfl 0.3", "the report's run command with --cfl")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
