@@ -72,6 +72,16 @@ void register_run(CLI::App& app) {
             if (!args->out_dir.empty() && args->out_dir != args->resume_dir)
                 throw InputError("sphjet run", "--resume DIR and --out name different directories",
                                  "one run directory", args->out_dir);
+            // a resumed run continues with its checkpoint's parameters (so that it ends
+            // bitwise as the uninterrupted run); a case or a --set would be ignored
+            if (!args->sets.empty())
+                throw InputError("sphjet run", "--set with --resume",
+                                 "no --set: a resumed run keeps the parameters of its checkpoint",
+                                 "--set " + args->sets.front());
+            if (!args->case_path.empty())
+                throw InputError("sphjet run", "a case with --resume",
+                                 "no case: a resumed run keeps the case of its checkpoint",
+                                 args->case_path);
         } else {
             if (args->case_path.empty())
                 throw InputError("sphjet run", "no case given", "a case file (or --resume DIR)",

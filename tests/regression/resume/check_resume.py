@@ -55,6 +55,19 @@ def main():
     log = open(os.path.join(killed, "run.log")).read()
     print("killed with SIGKILL; run.log ends:", log.strip().splitlines()[-1][:120])
 
+    # a --set (or a case) with --resume would be ignored: refused, naming it, and the run
+    # directory left as it was
+    before = {f: os.path.getsize(os.path.join(killed, f)) for f in os.listdir(killed)}
+    case = os.path.join(killed, "case.toml")
+    for extra, named in ((["--set", "fluid.c0=20"], "--set fluid.c0=20"), ([case], case)):
+        bad = subprocess.run([sphjet, "run", "--resume", killed, "--tmax", TMAX, "-q"] + extra,
+                             capture_output=True, text=True)
+        after = {f: os.path.getsize(os.path.join(killed, f)) for f in os.listdir(killed)}
+        print(f"{' '.join(extra)} with --resume: exit {bad.returncode}: {bad.stderr.strip()[:200]}")
+        if bad.returncode == 0 or named not in bad.stderr or before != after:
+            print("0 passed, 1 failed")
+            return 1
+
     out = subprocess.run([sphjet, "run", "--resume", killed, "--tmax", TMAX, "-q"],
                          check=True, capture_output=True, text=True)
     print(out.stdout.strip())
