@@ -93,12 +93,6 @@ module surface_tension
   !> evenly over the support; 1e-9 leaves out only fits through fewer than three distinct s).
   integer, parameter :: N_FIT = 8
   real(rp), parameter :: FIT_DET_MIN = 1.0e-9_rp
-  !> The farthest the fitted point x_a + c0 nhat_a may lie from the particle, in h: the kernel's
-  !> support. A parabola whose point near a is farther than that does not pass by a; it is an
-  !> extrapolation of a few bunched points (where a froth of rings meets the axis: c0 = 574 h,
-  !> kappa h = 9300, against 2.3 from the normals, which stopped a round jet at d0/dx = 20 with
-  !> an axis ring at 15 m/s). On a surface the particles of the outer rows have |c0| below h.
-  real(rp), parameter :: FIT_OFFSET_MAX = 2.0_rp
   !> The surface fit's points: the particles whose depth (csf_depth) is below FIT_DEPTH times their
   !> own spacing sqrt(V): the outer row, whose depth from the colour is about half a spacing (the
   !> next row's about 1.5). With the next row in the fit too, its points and the outer row's, at
@@ -234,10 +228,9 @@ contains
 
   !> The fitted parabola's in-plane curvature kin and, through nrx, the radial part of its unit
   !> normal at the fitted point and that point's offset c0 along the normal. ok = .false. (and
-  !> nothing set) when the points do not determine a parabola (fewer than three distinct s) or
-  !> when its point near the particle lies farther than FIT_OFFSET_MAX h from it.
-  pure subroutine csf_fit_curvature(fit, nx, nz, h, kin, nrx, c0, ok)
-    real(rp), intent(in) :: fit(N_FIT), nx, nz, h
+  !> nothing set) when the points do not determine a parabola (fewer than three distinct s).
+  pure subroutine csf_fit_curvature(fit, nx, nz, kin, nrx, c0, ok)
+    real(rp), intent(in) :: fit(N_FIT), nx, nz
     real(rp), intent(inout) :: kin, nrx, c0
     logical, intent(out) :: ok
     real(rp) :: m(3, 3), r(3), det, c1, c2, mx, mz
@@ -245,8 +238,6 @@ contains
     r = fit(6:8)
     det = det3(m(:, 1), m(:, 2), m(:, 3))
     ok = abs(det) > FIT_DET_MIN * fit(1) * fit(3) * fit(5)
-    if (.not. ok) return
-    ok = abs(det3(r, m(:, 2), m(:, 3))) <= FIT_OFFSET_MAX * h * abs(det)   ! |c0| <= 2 h
     if (.not. ok) return
     c0 = det3(r, m(:, 2), m(:, 3)) / det
     c1 = det3(m(:, 1), r, m(:, 3)) / det
