@@ -39,8 +39,9 @@ motion (suffix _alphaA_rec). --sink M removes, at every check once the jet is br
 wholly farther than M d0 past its end (breakup.remove_drops_beyond_d0, a sink that follows the
 jet), so that a run costs its jet's length and not its box's (suffix _sinkM). --cfl K sets
 time.cfl = K (the Courant number of the variable step, 0.2 in the case) in every run (suffix
-_cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk viscosity's bound,
-so K = 0.3 gives about 1.4 times fewer steps (cases/round_jet/README.md, "The time step").
+_cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk viscosity's bound.
+K = 0.3 takes about 1.4 times fewer steps but is not converged at the pinch-offs (the drops and
+the shed particles change; cases/round_jet/README.md, "The quick start jet"): the study uses 0.2.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
