@@ -24,7 +24,7 @@ module sphjet_capi
   use repulsive_wall, only: wall_normal
   use eos_tait, only: tait_pressure, tait_sound_speed
   use surface_tension_loops, only: surface_tension_rates
-  use surface_tension, only: ST_DELTA_PRESSURE, ST_DELTA_COLOUR
+  use surface_tension, only: ST_DELTA_PRESSURE, ST_DELTA_COLOUR, N_FIT, csf_fit_point, csf_fit_curvature
   implicit none
   private
   public :: sph_workspace_create, sph_workspace_destroy, sph_set_threads, sph_get_threads, &
@@ -330,6 +330,42 @@ contains
     end do
     status = SPH_OK
   end function sph_kernel_eval
+
+  !> The surface fit's parabola (physics/surface_tension.f90: csf_fit_point, csf_fit_curvature)
+  !> through n points (px, pz) with weights om, seen from a particle at the origin with unit
+  !> normal (nx, nz) and particle spacing sqrt(V) = spacing: its in-plane curvature kin, the
+  !> radial part nrx of its normal and its point's offset c0 along the normal; fitted = 0 where
+  !> the fit is refused (kin, nrx, c0 then 0), 1 where it is taken.
+  function sph_surface_fit(n, px, pz, om, nx, nz, spacing, kin, nrx, c0, fitted) result(status) &
+      bind(C, name="sph_surface_fit")
+    integer(c_int64_t), value :: n
+    real(c_double), intent(in) :: px(n), pz(n), om(n)
+    real(c_double), value :: nx, nz, spacing
+    real(c_double), intent(out) :: kin, nrx, c0
+    integer(c_int), intent(out) :: fitted
+    integer(c_int) :: status
+    real(rp) :: fit(N_FIT)
+    logical :: ok
+    integer(i8) :: i
+    status = SPH_ERR_ARGUMENT
+    kin = 0.0_rp
+    nrx = 0.0_rp
+    c0 = 0.0_rp
+    fitted = 0
+    if (n < 0 .or. .not. (spacing > 0.0_rp) .or. abs(hypot(nx, nz) - 1.0_rp) > 1.0e-12_rp) return
+    fit = 0.0_rp
+    do i = 1, n
+      call csf_fit_point(om(i), px(i), pz(i), nx, nz, fit)
+    end do
+    call csf_fit_curvature(fit, nx, nz, spacing, kin, nrx, c0, ok)
+    if (.not. ok) then
+      kin = 0.0_rp
+      nrx = 0.0_rp
+      c0 = 0.0_rp
+    end if
+    fitted = merge(1, 0, ok)
+    status = SPH_OK
+  end function sph_surface_fit
 
   !> All pairs (i < j, 0-based) of active particles closer than 2h, found by the cell search.
   function sph_neighbour_pairs(prm, arr, capacity, pi_, pj_, npairs) result(status) &

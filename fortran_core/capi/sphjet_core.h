@@ -197,6 +197,13 @@ int sph_axis_rings_to_split(const sph_params_t* prm, const sph_arrays_t* arr, in
 int sph_compute_rates(void* ws_handle, const sph_params_t* prm, const sph_arrays_t* arr,
                       double* visc_max);
 int sph_kernel_eval(int kernel, double h, int64_t n, const double* r, double* w, double* f);
+/* The surface fit's parabola through n points (px, pz), weights om, seen from a particle at the
+   origin with unit normal (nx, nz) and spacing sqrt(V) (surface_tension.curvature =
+   "surface_fit"): its in-plane curvature, the radial part of its normal and its point's offset
+   along the normal; fitted = 0 where the fit is refused (fewer than three distinct points along
+   the tangent, or a radius of curvature below one spacing), the outputs then 0. */
+int sph_surface_fit(int64_t n, const double* px, const double* pz, const double* om, double nx,
+                    double nz, double spacing, double* kin, double* nrx, double* c0, int* fitted);
 int sph_neighbour_pairs(const sph_params_t* prm, const sph_arrays_t* arr, int64_t capacity,
                         int64_t* pi_, int64_t* pj_, int64_t* npairs);
 int sph_eos(const sph_params_t* prm, int64_t n, const double* rho, double* p, double* c);

@@ -405,7 +405,8 @@ contains
               xr = s%x(k)
               depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
               if (allocated(wk%fit)) then   ! the fitted curve's curvature, normal and point
-                call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), kin, nrx, c0, fitted)
+                call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), sqrt(wk%v(k)), kin, nrx, &
+                                       c0, fitted)
                 if (fitted) then   ! the outer row's point nearest to k, at its own depth
                   xr = max(0.0_rp, s%x(k) + c0 * wk%nhx(k))
                   depth = max(0.0_rp, depth + c0)
@@ -421,7 +422,8 @@ contains
             kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), depth)
             if (allocated(wk%fit)) then   ! the fitted curve's, moved to the surface
               kin = kap
-              call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), kin, nrx, c0, fitted)
+              call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), sqrt(wk%v(k)), kin, nrx, c0, &
+                                     fitted)
               if (fitted) kap = depth_moved(kin, max(0.0_rp, depth + c0))
             end if
           end if

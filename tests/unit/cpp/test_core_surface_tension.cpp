@@ -256,6 +256,63 @@ TEST(CoreSurfaceTension, SurfaceFitIgnoresSlidingAlongTheSurface) {
         }
 }
 
+// The surface fit's parabola alone (sph_surface_fit): points in the frame of a particle at the
+// origin whose unit normal (into the liquid) is (0, 1), so that s = x and eta = z; spacing
+// dx = h / 2, as in the round jets.
+//  - Points of a circle of radius R = 10 h whose surface passes 0.5 h below the particle, at
+//    s = -2h ... 2h (spacing h/2): taken, c0 = -0.5 h within 0.1% and kin = -1/R within 2%:
+//    the circle's quartic term s^4 / (8 R^3), which the parabola takes up in part, moves the
+//    least-squares c2 by about (s/R)^2 / 4 at the points' spread (measured kin R = -1.0105).
+//  - A flat row 2.1 h below the particle (one deep in a sheet sees the surface there): taken,
+//    kin = 0 and c0 = -2.1 h. How far the curve passes does not refuse a fit.
+//  - Points on parabolas whose curvature at the particle is 0.9 / dx and 1.1 / dx: the first
+//    taken with exactly that curvature, the second refused (a radius below one spacing).
+//  - Two bunches of points either side of the particle, a surface that runs along its normal as
+//    where a froth of rings meets the axis: kin = 293 / h, refused, so the normals' curvature is
+//    used there.
+//  - A normal that is not a unit vector, or a spacing that is not positive, is an argument error.
+TEST(CoreSurfaceTension, SurfaceFitRefusesCurvesTighterThanTheParticles) {
+    const double h = 0.002, dx = 0.5 * h, R = 10 * h, d = 0.5 * h;
+    auto fit = [dx](const std::vector<double>& px, const std::vector<double>& pz, double nx, double nz,
+                    double& kin, double& c0, int& fitted, double spacing = 0) {
+        const std::vector<double> om(px.size(), 1.0);
+        double nrx = 0;
+        return sph_surface_fit(static_cast<std::int64_t>(px.size()), px.data(), pz.data(), om.data(), nx,
+                               nz, spacing == 0 ? dx : spacing, &kin, &nrx, &c0, &fitted);
+    };
+    std::vector<double> px, pz;
+    for (int i = -4; i <= 4; ++i) {
+        const double sx = 0.5 * h * i;
+        px.push_back(sx);
+        pz.push_back(-d + R - std::sqrt(R * R - sx * sx));
+    }
+    double kin = 0, c0 = 0;
+    int fitted = -1;
+    ASSERT_EQ(fit(px, pz, 0, 1, kin, c0, fitted), SPH_OK);
+    EXPECT_EQ(fitted, 1);
+    EXPECT_NEAR(c0, -d, 1e-3 * d);
+    EXPECT_NEAR(kin * R, -1.0, 2e-2);
+    const std::vector<double> flat(px.size(), -2.1 * h);
+    ASSERT_EQ(fit(px, flat, 0, 1, kin, c0, fitted), SPH_OK);
+    EXPECT_EQ(fitted, 1);
+    EXPECT_NEAR(c0, -2.1 * h, 1e-12);
+    EXPECT_NEAR(kin * h, 0.0, 1e-9);
+    for (double kdx : {0.9, 1.1}) {   // eta = -0.3 h + (kdx / dx) s^2 / 2: kin = -kdx / dx at s = 0
+        std::vector<double> bent;
+        for (double sx : px) bent.push_back(-0.3 * h + 0.5 * (kdx / dx) * sx * sx);
+        ASSERT_EQ(fit(px, bent, 0, 1, kin, c0, fitted), SPH_OK);
+        EXPECT_EQ(fitted, kdx < 1 ? 1 : 0) << "curvature " << kdx << " / dx";
+        EXPECT_NEAR(kin * dx, kdx < 1 ? -kdx : 0.0, 1e-9);
+    }
+    ASSERT_EQ(fit({-0.30 * h, -0.28 * h, 0.28 * h, 0.30 * h}, {-0.7 * h, 1.0 * h, 1.0 * h, -0.7 * h}, 0, 1, kin,
+                  c0, fitted),
+              SPH_OK);
+    EXPECT_EQ(fitted, 0);
+    EXPECT_EQ(kin, 0.0);
+    EXPECT_EQ(fit(px, pz, 0, 2, kin, c0, fitted), SPH_ERR_ARGUMENT);
+    EXPECT_EQ(fit(px, pz, 0, 1, kin, c0, fitted, -dx), SPH_ERR_ARGUMENT);
+}
+
 // The same on a square lattice: the staircase edge has its own curvature of order 1/dx at
 // corners, so single particles scatter widely (sd 0.35-1.8 in kappa R) and the mean over the
 // edge particles does not converge to -1/R (measured kappa R: cubic spline -0.960 / -0.970 /
