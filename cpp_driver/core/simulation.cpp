@@ -185,6 +185,7 @@ struct RunStart {
     std::vector<double> list_x, list_z;
     std::vector<double> drho_dt;  // the last density rates: the bulk viscosity's lagged divergence
     std::vector<std::vector<double>> wall;
+    bool legacy_clock = false;  // the checkpoint's output clock
 };
 
 RunStart start_from_checkpoint(const fs::path& dir) {
@@ -198,6 +199,7 @@ RunStart start_from_checkpoint(const fs::path& dir) {
     s.spec.params = cp.params;
     s.particles = std::move(cp.particles);
     s.resumed = cp.state;
+    s.legacy_clock = cp.legacy_clock;
     if (const auto* lx = cp.array("list_x")) s.list_x = *lx;
     if (const auto* lz = cp.array("list_z")) s.list_z = *lz;
     if (const auto* ar = cp.array("drho_dt")) s.drho_dt = *ar;
@@ -332,7 +334,7 @@ public:
         // the bulk viscosity's divergence comes from the last density rates
         if (prm_.bulk_viscosity > 0) kept.push_back({"drho_dt", solver_.ar(), "kg/m^3/s"});
         for (ExtraField& f : solver_.wall_geometry()) kept.push_back(std::move(f));
-        write_checkpoint(dir_, solver_.particles(), st, prm_, kept);
+        write_checkpoint(dir_, solver_.particles(), st, prm_, kept, opts_.legacy_clock);
         saved_.checkpoint = true, saved_.checkpoint_step = st.step,
         saved_.checkpoint_time = st.time;
     }
@@ -568,9 +570,11 @@ void finish_run(const RunOptions& opts, const CaseSpec& spec, Solver& solver, Ru
 
 }  // namespace
 
-RunSummary run_simulation(const RunOptions& opts) {
-    const fs::path dir = opts.out_dir;
-    RunStart start = opts.resume ? start_from_checkpoint(dir) : start_fresh(opts);
+RunSummary run_simulation(const RunOptions& options) {
+    const fs::path dir = options.out_dir;
+    RunStart start = options.resume ? start_from_checkpoint(dir) : start_fresh(options);
+    RunOptions opts = options;   // a resumed run writes on its checkpoint's output clock
+    if (opts.resume) opts.legacy_clock = start.legacy_clock;
     CaseSpec& spec = start.spec;
     if (opts.tmax) spec.params.tmax = *opts.tmax;
     if (opts.format) spec.output.format = *opts.format;

@@ -54,7 +54,8 @@ const std::vector<double>* Checkpoint::array(std::string_view name) const {
 fs::path checkpoint_path(const fs::path& dir) { return dir / "checkpoint.h5"; }
 
 void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState& state,
-                      const SimParams& params, std::span<const ExtraField> extra) {
+                      const SimParams& params, std::span<const ExtraField> extra,
+                      bool legacy_clock) {
     check_sizes(ps, extra);
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -71,6 +72,7 @@ void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState
         h5::write_attr(f, "code_version", h5::code_version());
         h5::write_attr(f, "git_hash", h5::git_hash());
         h5::write_attr(f, "written_utc", h5::utc_now());
+        h5::write_attr(f, "output_clock", std::string(legacy_clock ? "legacy" : "time"));
         {
             h5::Group g = h5::create_group(f, "particles");
             h5::write_attr(g, "n", static_cast<std::int64_t>(ps.size()));
@@ -124,6 +126,13 @@ Checkpoint read_checkpoint(const fs::path& dir_or_file) {
                          std::to_string(version));
     }
     c.code_version = h5::read_attr_string(f, "code_version");
+    if (h5::has_attr(f, "output_clock")) {
+        const std::string clock = h5::read_attr_string(f, "output_clock");
+        if (clock != "legacy" && clock != "time")
+            throw InputError(path.string() + ": attribute output_clock", "unknown output clock",
+                             "\"time\" or \"legacy\"", clock);
+        c.legacy_clock = clock == "legacy";
+    }
     {
         h5::Group g = h5::open_group(f, "particles");
         ParticleSet& ps = c.particles;

@@ -42,6 +42,8 @@ struct Checkpoint {
     SimParams params;
     std::vector<CheckpointArray> extra;  // in name order
     std::string code_version;            // of the code that wrote it
+    bool legacy_clock = false;           // outputs on SPHysics' clock (`sphjet run --legacy-clock`);
+                                         // false where the attribute is absent (older checkpoints)
 
     // The extra array of that name, or nullptr.
     [[nodiscard]] const std::vector<double>* array(std::string_view name) const;
@@ -54,10 +56,11 @@ struct Checkpoint {
 // DIR when missing. extra: named float64 arrays of any length (units are stored when given).
 // Throws std::invalid_argument when the particle arrays differ in length or an extra name is
 // empty or holds '/', WriteError (an InputError) naming the file and the cause ("No space left
-// on device") when the file cannot be written (the old checkpoint stays).
+// on device") when the file cannot be written (the old checkpoint stays). legacy_clock: the
+// run's output clock, kept so that a resumed run writes on the same one.
 void write_checkpoint(const std::filesystem::path& dir, const ParticleSet& ps,
                       const RunState& state, const SimParams& params,
-                      std::span<const ExtraField> extra = {});
+                      std::span<const ExtraField> extra = {}, bool legacy_clock = false);
 
 // Reads DIR/checkpoint.h5 (or the file itself when given a file). Throws InputError naming
 // the file and the missing or unreadable dataset or attribute for a missing, truncated or

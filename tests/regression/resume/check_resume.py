@@ -1,6 +1,10 @@
 #!/usr/bin/env python3
 """Kill -9 a run mid-way, resume it, and the final state equals the uninterrupted run.
 
+Both runs write on SPHysics' clock (--legacy-clock), which the resumed run must take from its
+checkpoint: every snapshot's time is compared too. A --set, a case, a --format or a
+--legacy-clock with --resume is refused, naming it, and leaves the run directory as it was.
+
 Both runs use the same thread count; the core's pair traversal gives every particle its
 contributions in a fixed order (bitwise independent of the thread count), and a checkpoint
 holds every array that the next step reads, so the comparison is bitwise: h5diff with no
@@ -15,6 +19,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from summary_checks import with_h5py  # noqa: E402  (tests/regression/)
+
 SETS = ["--set", "resolution.dx=0.025", "--set", "resolution.dz=0.025",
         "--set", "output.checkpoint_every_steps=40", "--set", "output.format=\"hdf5\"",
         "--set", "time.out=0.01"]
@@ -22,12 +29,14 @@ TMAX = "0.12"
 
 
 def main():
+    with_h5py()
+    import h5py
     sphjet, src, work = sys.argv[1:4]
     case = os.path.join(src, "cases", "quickstart", "dambreak.toml")
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     ref, killed = os.path.join(work, "ref"), os.path.join(work, "killed")
-    base = [sphjet, "run", case, "--tmax", TMAX, "-q"] + SETS
+    base = [sphjet, "run", case, "--tmax", TMAX, "-q", "--legacy-clock"] + SETS
 
     subprocess.run(base + ["--out", ref], check=True)
 
@@ -55,11 +64,13 @@ def main():
     log = open(os.path.join(killed, "run.log")).read()
     print("killed with SIGKILL; run.log ends:", log.strip().splitlines()[-1][:120])
 
-    # a --set (or a case) with --resume would be ignored: refused, naming it, and the run
-    # directory left as it was
+    # a resumed run keeps its checkpoint's case, parameters, format and clock: the options
+    # that would change them are refused, naming them, and the run directory left as it was
     before = {f: os.path.getsize(os.path.join(killed, f)) for f in os.listdir(killed)}
     case = os.path.join(killed, "case.toml")
-    for extra, named in ((["--set", "fluid.c0=20"], "--set fluid.c0=20"), ([case], case)):
+    for extra, named in ((["--set", "fluid.c0=20"], "--set fluid.c0=20"), ([case], case),
+                         (["--format", "both"], "--format both"),
+                         (["--legacy-clock"], "--legacy-clock")):
         bad = subprocess.run([sphjet, "run", "--resume", killed, "--tmax", TMAX, "-q"] + extra,
                              capture_output=True, text=True)
         after = {f: os.path.getsize(os.path.join(killed, f)) for f in os.listdir(killed)}
@@ -88,6 +99,9 @@ def main():
                         "/particles", "/particles"], capture_output=True, text=True)
     print(f"h5diff /particles of {last}: exit {r.returncode}", r.stdout.strip()[:400])
     ok = ok and r.returncode == 0
+    times = [[h5py.File(os.path.join(d, f), "r").attrs["time"] for f in snaps] for d in (ref, killed)]
+    print(f"snapshot times equal: {times[0] == times[1]} (last {times[0][-1]!r} s)")
+    ok = ok and times[0] == times[1]
     print("1 passed, 0 failed" if ok else "0 passed, 1 failed")
     return 0 if ok else 1
 
