@@ -82,16 +82,11 @@ void register_run(CLI::App& app) {
                 throw InputError("sphjet run", "a case with --resume",
                                  "no case: a resumed run keeps the case of its checkpoint",
                                  args->case_path);
-            // and its outputs: the format of its case copy, the clock of its checkpoint
+            // and the format of its case copy (its clock: run_simulation, from the checkpoint)
             if (!args->format.empty())
                 throw InputError("sphjet run", "--format with --resume",
                                  "no --format: a resumed run writes the format it started with",
                                  "--format " + args->format);
-            if (args->legacy_clock)
-                throw InputError("sphjet run", "--legacy-clock with --resume",
-                                 "no --legacy-clock: a resumed run writes on the clock it "
-                                 "started with (kept in its checkpoint)",
-                                 "--legacy-clock");
         } else {
             if (args->case_path.empty())
                 throw InputError("sphjet run", "no case given", "a case file (or --resume DIR)",

@@ -185,7 +185,7 @@ struct RunStart {
     std::vector<double> list_x, list_z;
     std::vector<double> drho_dt;  // the last density rates: the bulk viscosity's lagged divergence
     std::vector<std::vector<double>> wall;
-    bool legacy_clock = false;  // the checkpoint's output clock
+    std::optional<bool> legacy_clock;  // the checkpoint's output clock, where it says
 };
 
 RunStart start_from_checkpoint(const fs::path& dir) {
@@ -574,10 +574,16 @@ RunSummary run_simulation(const RunOptions& options) {
     const fs::path dir = options.out_dir;
     RunStart start = options.resume ? start_from_checkpoint(dir) : start_fresh(options);
     RunOptions opts = options;   // a resumed run writes on its checkpoint's output clock
-    if (opts.resume) opts.legacy_clock = start.legacy_clock;
+    if (opts.resume && start.legacy_clock) {
+        if (opts.legacy_clock && !*start.legacy_clock)
+            throw InputError(checkpoint_path(dir).string(), "--legacy-clock with --resume",
+                             "no --legacy-clock: the run writes on the simulated time",
+                             "--legacy-clock");
+        opts.legacy_clock = *start.legacy_clock;
+    }
     CaseSpec& spec = start.spec;
     if (opts.tmax) spec.params.tmax = *opts.tmax;
-    if (opts.format) spec.output.format = *opts.format;
+    if (opts.format && !opts.resume) spec.output.format = *opts.format;   // resumed: the case copy's
     if (spec.output.format != OutputFormat::Hdf5 && !opts.resume) {
         // The legacy post-processing chain reads INDAT and IPART beside the PART files.
         write_legacy_inputs(dir, spec.params, start.particles, spec.legacy);

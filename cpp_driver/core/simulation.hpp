@@ -22,7 +22,8 @@ struct RunOptions {
     bool force = false;                       // allow writing into a non-empty directory
     bool resume = false;                      // continue from out_dir/checkpoint.h5
     std::optional<OutputFormat> format;       // overrides the case's output format
-    bool legacy_clock = false;                // output cadence on SPHysics' clock
+    bool legacy_clock = false;                // output cadence on SPHysics' clock (on resume
+                                              // the checkpoint's, where it records one)
     std::vector<std::string> overrides;       // --set key=value (modern cases)
     std::string command_line;                 // recorded in the outputs
     bool quiet = false;                       // no progress line (log file still written)

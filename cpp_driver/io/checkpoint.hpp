@@ -19,6 +19,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -42,8 +43,9 @@ struct Checkpoint {
     SimParams params;
     std::vector<CheckpointArray> extra;  // in name order
     std::string code_version;            // of the code that wrote it
-    bool legacy_clock = false;           // outputs on SPHysics' clock (`sphjet run --legacy-clock`);
-                                         // false where the attribute is absent (older checkpoints)
+    // outputs on SPHysics' clock (`sphjet run --legacy-clock`); unset where the file does not
+    // say (written before the clock was kept)
+    std::optional<bool> legacy_clock;
 
     // The extra array of that name, or nullptr.
     [[nodiscard]] const std::vector<double>* array(std::string_view name) const;

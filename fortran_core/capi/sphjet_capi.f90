@@ -30,7 +30,8 @@ module sphjet_capi
   public :: sph_workspace_create, sph_workspace_destroy, sph_set_threads, sph_get_threads, &
             sph_threads_for, &
             sph_prepare, sph_step, sph_density_filter, sph_check_state, sph_compute_rates, &
-            sph_kernel_eval, sph_neighbour_pairs, sph_eos, sph_surface_tension_fields
+            sph_kernel_eval, sph_surface_fit, sph_neighbour_pairs, sph_eos, &
+            sph_surface_tension_fields
 
   !> A step or filter call uses at most one thread per this many particles: a step of a small
   !> case is not worth sharing (some ten parallel regions a step, whose passive wake-ups cost
@@ -357,12 +358,7 @@ contains
     do i = 1, n
       call csf_fit_point(om(i), px(i), pz(i), nx, nz, fit)
     end do
-    call csf_fit_curvature(fit, nx, nz, spacing, kin, nrx, c0, ok)
-    if (.not. ok) then
-      kin = 0.0_rp
-      nrx = 0.0_rp
-      c0 = 0.0_rp
-    end if
+    call csf_fit_curvature(fit, nx, nz, spacing, kin, nrx, c0, ok)   ! refused: nothing set
     fitted = merge(1, 0, ok)
     status = SPH_OK
   end function sph_surface_fit

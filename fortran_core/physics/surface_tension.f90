@@ -100,7 +100,7 @@ module surface_tension
   !> sqrt(V): a parabola bent more sharply than a circle through neighbours one spacing apart
   !> (60 degrees between them) is not drawn by the particles; it fits a few bunched points. Such
   !> a fit is refused and the normals' curvature taken. Where a froth of rings meets the axis
-  !> (the 0.78 m/s round jet at d0/dx = 20, 55 ms) fits gave kappa h up to 9300 (normals: 2.3)
+  !> (the 0.78 m/s round jet at d0/dx = 20, 55 ms) fits gave kappa h up to 4900 (normals: 2.3)
   !> and stopped the run with an axis ring at 15 m/s; refused, the run goes on. On a planar
   !> sheet of 10 spacings, whose true curvature is below 1/(30 dx), 0.7% of the fits bend more
   !> sharply than this (measured at 0.78 s of validation.jet.sheet_no_gravity).

@@ -425,6 +425,31 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     fs::remove_all(dir);
 }
 
+// The run's output clock (`sphjet run --legacy-clock`), which a resumed run takes from its
+// checkpoint: written and read back for both clocks; unset in a file written before it was kept
+// (the resumed run then takes the command line's); an unknown value is an InputError naming it.
+TEST(Checkpoint, KeepsTheOutputClock) {
+    const fs::path dir = fresh_dir("clock");
+    for (const bool legacy : {false, true}) {
+        write_checkpoint(dir, synthetic(10, 4, 2), unusual_state(), SimParams{}, {}, legacy);
+        const Checkpoint c = read_checkpoint(dir);
+        ASSERT_TRUE(c.legacy_clock.has_value());
+        EXPECT_EQ(*c.legacy_clock, legacy);
+    }
+    const fs::path file = dir / "checkpoint.h5";
+    {
+        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+        ASSERT_GE(H5Adelete(f, "output_clock"), 0);
+    }
+    EXPECT_FALSE(read_checkpoint(dir).legacy_clock.has_value());
+    {
+        h5::File f(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+        h5::write_attr(f, "output_clock", std::string("sundial"));
+    }
+    expect_input_error(dir, "output_clock");
+    fs::remove_all(dir);
+}
+
 TEST(Checkpoint, RejectsMismatchedArraysAndKeepsTheOldFile) {
     const fs::path dir = fresh_dir("mismatch");
     write_sample(dir);

@@ -257,28 +257,36 @@ TEST(CoreSurfaceTension, SurfaceFitIgnoresSlidingAlongTheSurface) {
 }
 
 // The surface fit's parabola alone (sph_surface_fit): points in the frame of a particle at the
-// origin whose unit normal (into the liquid) is (0, 1), so that s = x and eta = z; spacing
+// origin whose unit normal (into the liquid) is (0, 1), so that s = -x (s runs along
+// (-nz, nx)) and eta = z; the point sets are symmetric in x, so the sign does not show; spacing
 // dx = h / 2, as in the round jets.
 //  - Points of a circle of radius R = 10 h whose surface passes 0.5 h below the particle, at
-//    s = -2h ... 2h (spacing h/2): taken, c0 = -0.5 h within 0.1% and kin = -1/R within 2%:
+//    x = -2h ... 2h (spacing h/2): taken, c0 = -0.5 h within 0.1% and kin = -1/R within 2%:
 //    the circle's quartic term s^4 / (8 R^3), which the parabola takes up in part, moves the
-//    least-squares c2 by about (s/R)^2 / 4 at the points' spread (measured kin R = -1.0105).
+//    least-squares c2 by about (s/R)^2 / 4 at the points' spread (measured kin R = -1.0105)
+//    and c0 by about 1e-3 of it (measured -0.50049 d).
+//  - The same circle seen with the particle's normal tilted by 20 degrees: the fit's slope is
+//    c1 = -0.35, and kin = -2 c2 / (1 + c1^2)^(3/2) is still -1/R within 3% (measured -1.0236;
+//    -2 c2 alone would be 19% off), the fitted curve's normal radial part nrx within 0.02 of the
+//    circle's, 0 (measured 0.013), and c0 the distance along the tilted normal, -d / cos 20,
+//    within 1% (measured -0.5315 h against -0.5321 h).
 //  - A flat row 2.1 h below the particle (one deep in a sheet sees the surface there): taken,
 //    kin = 0 and c0 = -2.1 h. How far the curve passes does not refuse a fit.
 //  - Points on parabolas whose curvature at the particle is 0.9 / dx and 1.1 / dx: the first
 //    taken with exactly that curvature, the second refused (a radius below one spacing).
 //  - Two bunches of points either side of the particle, a surface that runs along its normal as
-//    where a froth of rings meets the axis: kin = 293 / h, refused, so the normals' curvature is
-//    used there.
-//  - A normal that is not a unit vector, or a spacing that is not positive, is an argument error.
+//    where a froth of rings meets the axis: kin = 293 / h, refused (the loops then keep the
+//    normals' curvature there).
+//  - A normal that is not a unit vector, a spacing that is not positive or a negative count is an
+//    argument error.
 TEST(CoreSurfaceTension, SurfaceFitRefusesCurvesTighterThanTheParticles) {
     const double h = 0.002, dx = 0.5 * h, R = 10 * h, d = 0.5 * h;
-    auto fit = [dx](const std::vector<double>& px, const std::vector<double>& pz, double nx, double nz,
-                    double& kin, double& c0, int& fitted, double spacing = 0) {
+    double nrx = 0;
+    auto fit = [dx, &nrx](const std::vector<double>& px, const std::vector<double>& pz, double nx,
+                          double nz, double& kin, double& c0, int& fitted, double spacing = -1) {
         const std::vector<double> om(px.size(), 1.0);
-        double nrx = 0;
         return sph_surface_fit(static_cast<std::int64_t>(px.size()), px.data(), pz.data(), om.data(), nx,
-                               nz, spacing == 0 ? dx : spacing, &kin, &nrx, &c0, &fitted);
+                               nz, spacing < 0 ? dx : spacing, &kin, &nrx, &c0, &fitted);
     };
     std::vector<double> px, pz;
     for (int i = -4; i <= 4; ++i) {
@@ -292,6 +300,12 @@ TEST(CoreSurfaceTension, SurfaceFitRefusesCurvesTighterThanTheParticles) {
     EXPECT_EQ(fitted, 1);
     EXPECT_NEAR(c0, -d, 1e-3 * d);
     EXPECT_NEAR(kin * R, -1.0, 2e-2);
+    const double tilt = 20.0 * std::acos(-1.0) / 180.0;
+    ASSERT_EQ(fit(px, pz, std::sin(tilt), std::cos(tilt), kin, c0, fitted), SPH_OK);
+    EXPECT_EQ(fitted, 1);
+    EXPECT_NEAR(kin * R, -1.0, 3e-2);
+    EXPECT_NEAR(nrx, 0.0, 2e-2);
+    EXPECT_NEAR(c0, -d / std::cos(tilt), 1e-2 * d);
     const std::vector<double> flat(px.size(), -2.1 * h);
     ASSERT_EQ(fit(px, flat, 0, 1, kin, c0, fitted), SPH_OK);
     EXPECT_EQ(fitted, 1);
@@ -310,7 +324,9 @@ TEST(CoreSurfaceTension, SurfaceFitRefusesCurvesTighterThanTheParticles) {
     EXPECT_EQ(fitted, 0);
     EXPECT_EQ(kin, 0.0);
     EXPECT_EQ(fit(px, pz, 0, 2, kin, c0, fitted), SPH_ERR_ARGUMENT);
-    EXPECT_EQ(fit(px, pz, 0, 1, kin, c0, fitted, -dx), SPH_ERR_ARGUMENT);
+    EXPECT_EQ(fit(px, pz, 0, 1, kin, c0, fitted, 0.0), SPH_ERR_ARGUMENT);
+    EXPECT_EQ(sph_surface_fit(-1, px.data(), pz.data(), px.data(), 0, 1, dx, &kin, &nrx, &c0, &fitted),
+              SPH_ERR_ARGUMENT);
 }
 
 // The same on a square lattice: the staircase edge has its own curvature of order 1/dx at

@@ -5,23 +5,26 @@ on the particle scale, the bulk viscosity), in a box 16 D0 wide with a nozzle th
 2.5 s (about 15 min on two threads). A planar sheet is capillary-stable (Drazin & Reid 1981):
 it must not pinch, so the jet must reach 30 D0 intact.
 
-What is checked, from the run's jet.csv and jet_surface.csv (the paper's rule: a gap > 1.5 h
-along the axis; jet_surface.csv: the intact jet's half-width r(s) every 0.1 D0):
+What is checked, from the run's jet.csv (the paper's rule: a gap > 1.5 h in the band along the
+axis; jet_tip_over_d0: the farthest point of the jet's own linked cluster) and jet_surface.csv
+(that cluster's largest distance from the axis, every 0.1 D0, up to 1 D0 short of its tip):
 - the jet's tip passes 30 D0 in a sample where the rule finds no gap;
-- every gap the rule finds lies inside the rim: the intact jet, over its last RIM_WINDOW = 2 D0
-  before the gap, is somewhere wider than RIM_HALF_WIDTH = 1 D0, twice the sheet's half-width.
-  A pinch-off of the sheet leaves a thin end there (the sheet's 0.5 D0 or less); a gap inside
-  the retracting sheet's rim, a disordered blob several D0 across, has the blob beside it.
-Measured (the largest half-width over the last 2 D0 before a gap, smallest over the gaps, and
-the same gaps' distance from the tip in diameters of a disc of the rim's volume, the rule this
-test used before): main at c2d7f83 with time.cfl = 0.2001 (another realization of the same
-numerics): 583 gaps, 1.87 D0 (2.56 disc diameters); the surface fit's curvature with its
-radius bound (FIT_RADIUS_MIN): 153 gaps, 1.30 D0 (1.60); with a 2h bound on the fit's offset
-(fc94d57): 438 gaps, 1.20 D0 (2.16). The disc's diameter underestimates a blob that leans and
-sheds arms, so that rule passed or failed with the realization; in none of these runs did the
+- no gap is a pinch-off of the sheet. A gap the jet's cluster reaches past, by more than the
+  gap itself (1.5 h = LINK_D0), is not a break at all: the sheet there has bent out of the
+  band, whole. A gap where the cluster ends must have the rim beside it: over the last
+  RIM_WINDOW = 2 D0 before the gap the cluster is somewhere wider than RIM_HALF_WIDTH = 1 D0,
+  twice the sheet's half-width. A pinch-off of the sheet leaves a thin end there (the sheet's
+  0.5 D0 or less); a gap inside the retracting sheet's rim, a disordered blob several D0
+  across, has the blob beside it.
+Measured: main at c2d7f83 with time.cfl = 0.2001 (another realization of the same numerics):
+583 gaps, 550 of them bridged (the sheet bent out of the band, 0.73 s), the rest beside a rim
+at least 2.17 D0 wide; with the surface fit's radius bound (FIT_RADIUS_MIN): 153 gaps, all
+bridged. The rule this test used before (every gap within the diameter of a disc of the
+rim's volume from the tip) failed the first (2.56 diameters) and passed at c2d7f83 itself
+(0.88): it judged the blob's shape, a matter of realization. In none of these runs did the
 sheet pinch (cases/jet/README.md). The same checks on the sheet with gravity (SETS without
-gravity.gz=0, to 0.6 s), which thins and breaks: 248 gaps, the first at 0.106 s with the
-intact jet's last 2 D0 at most 0.23 D0 wide, so every one is a failure, as it must be.
+gravity.gz=0, to 0.6 s), which thins and breaks: 248 gaps, every one where the cluster ends,
+with at most 0.23 D0 beside the first (0.106 s): all failures, as they must be.
 
 usage: check_sheet_no_gravity.py SPHJET SRC WORKDIR   (exit 0 on success, 1 with a message)
 """
@@ -33,7 +36,8 @@ import subprocess
 import sys
 
 D0, U0 = 0.01, 0.25
-REACH = 30.0          # D0: the issue's length for a capillary-stable sheet
+REACH = 30.0          # D0: the length a capillary-stable sheet must reach intact
+LINK_D0 = 0.3         # D0: the gap of the paper's rule, 1.5 h (h = 0.2 D0)
 RIM_WINDOW = 2.0      # D0 before the gap searched for the rim
 RIM_HALF_WIDTH = 1.0  # D0: twice the sheet's half-width
 SETS = ["gravity.gz=0", "time.tmax=2.5", "domain.lx=0.16", "nozzle.x0=0.08", "domain.lz=0.62",
@@ -60,22 +64,23 @@ def check(run):
     else:
         messages.append(f"tip past {REACH:g} D0 intact at t = {float(reached['time']):.3f} s")
     gaps = [r for r in rows if r["broken"] == "1"]
-    narrowest, farthest = math.inf, 0.0
+    bridged, narrowest = 0, math.inf
     for r in gaps:
         t, tip, length = float(r["time"]), float(r["jet_tip_over_d0"]), float(r["L_over_d0"])
-        area = max(U0 * t / D0 - tip, 0.0)          # in D0^2: what left the orifice and is not in the sheet
-        disc = math.sqrt(4.0 * area / math.pi)
-        farthest = max(farthest, (tip - length) / disc if disc > 0 else 0.0)
-        near = [w for s, w in profile[r["step"]] if s > length - RIM_WINDOW]
+        if tip - length > LINK_D0:   # the jet's cluster goes on past the gap: not a break
+            bridged += 1
+            continue
+        near = [w for s, w in profile[r["step"]] if length - RIM_WINDOW < s <= length]
         widest = max(near, default=0.0)
         narrowest = min(narrowest, widest)
         if widest <= RIM_HALF_WIDTH:
-            failures.append(f"t = {t:.4f} s: a gap at {length:.2f} D0 ({tip:.2f} D0 the tip) where the intact "
-                            f"jet's last {RIM_WINDOW:g} D0 are at most {widest:.2f} D0 wide (half-width), "
-                            f"no rim: the sheet pinched")
-    messages.append(f"{len(gaps)} of {len(rows)} samples with a gap; beside each the rim at least "
-                    f"{narrowest if gaps else math.nan:.2f} D0 wide (half-width; the sheet 0.5); the farthest "
-                    f"from the tip at {farthest:.2f} diameters of a disc of the rim's volume")
+            failures.append(f"t = {t:.4f} s: the jet ends at a gap at {length:.2f} D0 and its last "
+                            f"{RIM_WINDOW:g} D0 are at most {widest:.2f} D0 from the axis, no rim: the "
+                            f"sheet pinched")
+    ending = (f"the others beside a rim at least {narrowest:.2f} D0 wide (half-width; the sheet 0.5)"
+              if narrowest < math.inf else "none where the jet ends")
+    messages.append(f"{len(gaps)} of {len(rows)} samples with a gap: {bridged} bridged by the jet past "
+                    f"it, {ending}")
     return messages, failures
 
 
