@@ -3,7 +3,8 @@
 
 Both runs write on SPHysics' clock (--legacy-clock), which the resumed run, started without
 the flag, must take from its checkpoint: every snapshot's time is compared too. A --set, a case
-or a --format with --resume is refused, naming it, and leaves the run directory as it was.
+or a --format with --resume is refused, naming it, and leaves the run directory as it was; so is
+a --legacy-clock where the run writes on the simulated time (a short run of 40 steps).
 
 Both runs use the same thread count; the core's pair traversal gives every particle its
 contributions in a fixed order (bitwise independent of the thread count), and a checkpoint
@@ -106,6 +107,17 @@ def main():
                 times[-1].append(h.attrs["time"])
     print(f"snapshot times equal: {times[0] == times[1]} (last {times[0][-1]!r} s)")
     ok = ok and times[0] == times[1]
+
+    plain = os.path.join(work, "plain")
+    subprocess.run([sphjet, "run", os.path.join(src, "cases", "quickstart", "dambreak.toml"), "--tmax", TMAX,
+                    "-q", "--max-steps", "40", "--out", plain] + SETS, check=True, capture_output=True)
+    before = {f: os.path.getsize(os.path.join(plain, f)) for f in os.listdir(plain)}
+    bad = subprocess.run([sphjet, "run", "--resume", plain, "--legacy-clock", "-q"], capture_output=True,
+                         text=True)
+    after = {f: os.path.getsize(os.path.join(plain, f)) for f in os.listdir(plain)}
+    print(f"--legacy-clock resuming a run on the simulated time: exit {bad.returncode}: "
+          f"{bad.stderr.strip()[:200]}")
+    ok = ok and bad.returncode != 0 and "--legacy-clock" in bad.stderr and before == after
     print("1 passed, 0 failed" if ok else "0 passed, 1 failed")
     return 0 if ok else 1
 
