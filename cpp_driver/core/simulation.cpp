@@ -583,7 +583,7 @@ RunSummary run_simulation(const RunOptions& options) {
     }
     CaseSpec& spec = start.spec;
     if (opts.tmax) spec.params.tmax = *opts.tmax;
-    if (opts.format && !opts.resume) spec.output.format = *opts.format;   // resumed: the case copy's
+    if (opts.format) spec.output.format = *opts.format;   // refused with --resume (cmd_run.cpp)
     if (spec.output.format != OutputFormat::Hdf5 && !opts.resume) {
         // The legacy post-processing chain reads INDAT and IPART beside the PART files.
         write_legacy_inputs(dir, spec.params, start.particles, spec.legacy);

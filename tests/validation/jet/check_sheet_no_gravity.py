@@ -51,7 +51,7 @@ def check(run):
     """The checks above on a finished run directory: (messages, failures)."""
     with open(os.path.join(run, "jet.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    profile = collections.defaultdict(list)   # step -> [(s, r)] of the intact jet, in D0
+    profile = collections.defaultdict(list)   # step -> [(s, r)] of the jet's cluster, in D0
     with open(os.path.join(run, "jet_surface.csv"), newline="") as f:
         for r in csv.DictReader(f):
             if r["r_over_d0"]:
