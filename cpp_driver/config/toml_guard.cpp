@@ -97,20 +97,29 @@ std::string ascii_for_toml(std::string_view text) {
 //  - a bare value of ten characters with '-' at the 5th and 8th (a date's shape), then a
 //    space, one digit and a value terminator ("a = 1979-05-27 7 "): toml++ takes the space
 //    for the date-time separator and scans on past the digit. Never valid TOML (a time after
-//    the space needs hh:mm:ss).
+//    the space needs hh:mm:ss). toml++ counts the ten characters without the underscores
+//    ("a = 1_979-05-27 7 " has the shape too) and ends a value also at '\v' and '\f'.
 // The offset of the first, from a small lexer (comments and the four kinds of string): toml++
 // reaches either only through text that parses, which the lexer follows exactly.
+// toml++'s value terminators in ASCII: whitespace ('\v' and '\f' among it), ',', ']', '}', '#'.
 bool toml_terminator(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ',' || c == ']' || c == '}' || c == '#';
+    return c == ' ' || c == '\t' || (c >= '\n' && c <= '\r') || c == ',' || c == ']' || c == '}' || c == '#';
 }
 
+// Whether the bare value at text[i] is what toml++ takes for a date with a space before the
+// time, followed by one digit and a terminator. Its ten characters are counted as toml++
+// counts them, without '_'; a value with '_' in them is refused whatever follows the digit
+// (never a date, and toml++ steps back over the underscores too).
 bool date_space_digit(std::string_view text, std::size_t i) {
-    if (i + 13 > text.size()) return false;
-    for (std::size_t k = i; k < i + 10; ++k)
-        if (toml_terminator(text[k])) return false;
     const auto digit = [](char c) { return c >= '0' && c <= '9'; };
-    return digit(text[i]) && text[i + 4] == '-' && text[i + 7] == '-' && text[i + 10] == ' ' &&
-           digit(text[i + 11]) && toml_terminator(text[i + 12]);
+    std::string shape;
+    std::size_t j = i;
+    for (; j < text.size() && !toml_terminator(text[j]) && shape.size() <= 10; ++j)
+        if (text[j] != '_') shape += text[j];
+    if (shape.size() != 10 || !digit(shape[0]) || shape[4] != '-' || shape[7] != '-') return false;
+    if (j + 1 >= text.size() || text[j] != ' ' || !digit(text[j + 1])) return false;
+    if (j - i != 10) return true;
+    return j + 2 < text.size() && toml_terminator(text[j + 2]);
 }
 
 std::optional<std::size_t> toml_assertion_hazard(std::string_view text) {
@@ -135,7 +144,7 @@ std::optional<std::size_t> toml_assertion_hazard(std::string_view text) {
                     break;
                 }
                 if (expect_value && c == '}') return i;
-                if ((i == 0 || std::string_view(" \t=[,{").find(text[i - 1]) != std::string_view::npos) &&
+                if ((i == 0 || toml_terminator(text[i - 1]) || std::string_view("=[{").find(text[i - 1]) != std::string_view::npos) &&
                     date_space_digit(text, i))
                     return i;
                 expect_value = false;
@@ -215,7 +224,7 @@ toml::table parse_toml(std::string_view text, const std::string& source_name) {
             if (toml_text[k] == '\n') ++line, start = k + 1;
         throw InputError(source_name + ":" + std::to_string(line) + ":" + std::to_string(*bad - start + 1),
                          "TOML syntax error", toml_text[*bad] == '}' ? "a value or ']'" : "a valid value",
-                         toml_text[*bad] == '}' ? "'}' in an array" : "a date followed by a space and one digit");
+                         toml_text[*bad] == '}' ? "'}' in an array" : "a date followed by a space and one digit (toml++ counts the date's characters without '_')");
     }
     try {
         return toml::parse(toml_text, source_name);

@@ -674,6 +674,11 @@ const BadCase kBad[] = {
     // Text that reaches an assertion in toml++ 3.3 (tests/fuzz/README.md) is a syntax error too.
     {"SyntaxBraceInArray", "lx = 0.5", "lx = [1, }", {"case.toml:9:10", "'}' in an array"}},
     {"SyntaxDateSpaceDigit", "lx = 0.5", "lx = 1979-05-27 7 ", {"case.toml:9:6", "a date followed by a space"}},
+    {"SyntaxDateUnderscoreSpaceDigit", "lx = 0.5", "lx = 1_979-05-27 7 ", {"case.toml:9:6", "a date followed by a space"}},
+    {"SyntaxDateUnderscoreSpaceDigits", "lx = 0.5", "lx = 1979-05-27__ 77", {"case.toml:9:6", "a date followed by a space"}},
+    {"SyntaxDateSpaceDigitVerticalTab", "lx = 0.5", "lx = 1979-05-27 7\v", {"case.toml:9:6", "a date followed by a space"}},
+    // A date-time with a space before the time is valid TOML: the key's type is wrong, no more.
+    {"DateTimeWithSpace", "lx = 0.5", "lx = 1979-05-27 07:32:00", {"lx", "wrong type"}},
 };
 
 INSTANTIATE_TEST_SUITE_P(ModernCase, Validation, ::testing::ValuesIn(kBad),
