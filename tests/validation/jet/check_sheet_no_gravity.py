@@ -10,8 +10,8 @@ axis; jet_tip_over_d0: the farthest point of the jet's own linked cluster) and j
 (that cluster's largest distance from the axis, every 0.1 D0, up to 1 D0 short of its tip):
 - the jet's tip passes 30 D0 in a sample where the rule finds no gap;
 - no gap is a pinch-off of the sheet. A gap the jet's cluster reaches past, by more than the
-  gap itself (1.5 h = LINK_D0), is not a break at all: the sheet there has bent out of the
-  band, whole. A gap where the cluster ends must have the rim beside it: over the last
+  gap itself (breakup.link_over_h x h, 0.3 D0 here, read from the run's case.toml), is not a
+  break at all: the sheet there has bent out of the band, whole. A gap where the cluster ends must have the rim beside it: over the last
   RIM_WINDOW = 2 D0 before the gap the cluster is somewhere wider than RIM_HALF_WIDTH = 1 D0,
   twice the sheet's half-width. A pinch-off of the sheet leaves a thin end there (the sheet's
   0.5 D0 or less); a gap inside the retracting sheet's rim, a disordered blob several D0
@@ -34,10 +34,9 @@ import math
 import os
 import subprocess
 import sys
+import tomllib
 
-D0, U0 = 0.01, 0.25
 REACH = 30.0          # D0: the length a capillary-stable sheet must reach intact
-LINK_D0 = 0.3         # D0: the gap of the paper's rule, 1.5 h (h = 0.2 D0)
 RIM_WINDOW = 2.0      # D0 before the gap searched for the rim
 RIM_HALF_WIDTH = 1.0  # D0: twice the sheet's half-width
 SETS = ["gravity.gz=0", "time.tmax=2.5", "domain.lx=0.16", "nozzle.x0=0.08", "domain.lz=0.62",
@@ -47,8 +46,16 @@ SETS = ["gravity.gz=0", "time.tmax=2.5", "domain.lx=0.16", "nozzle.x0=0.08", "do
         "numerics.artificial_reconstruction=true", "numerics.bulk_viscosity=0.5"]
 
 
+def link_over_d0(run):
+    """The gap of the paper's rule, breakup.link_over_h x h, in D0: from the run's own case copy."""
+    with open(os.path.join(run, "case.toml"), "rb") as f:
+        case = tomllib.load(f)
+    return case["breakup"]["link_over_h"] * case["resolution"]["h"] / case["nozzle"]["d0"]
+
+
 def check(run):
     """The checks above on a finished run directory: (messages, failures)."""
+    link = link_over_d0(run)
     with open(os.path.join(run, "jet.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     profile = collections.defaultdict(list)   # step -> [(s, r)] of the jet's cluster, in D0
@@ -67,7 +74,7 @@ def check(run):
     bridged, narrowest = 0, math.inf
     for r in gaps:
         t, tip, length = float(r["time"]), float(r["jet_tip_over_d0"]), float(r["L_over_d0"])
-        if tip - length > LINK_D0:   # the jet's cluster goes on past the gap: not a break
+        if tip - length > link:   # the jet's cluster goes on past the gap: not a break
             bridged += 1
             continue
         near = [w for s, w in profile[r["step"]] if length - RIM_WINDOW < s <= length]
