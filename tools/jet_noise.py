@@ -27,6 +27,12 @@
   case.toml, the axis order of each slice as well: its particles within 0.6 dx of the axis (the
   nozzle builds the innermost rings at dx/2) over the count of the nozzle's lattice stretched
   with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order.
+- start-up front (the samples before T): at each one the first slice past 1 d0 where r_s departs
+  from a by more than 1e-3 a, the edge of the start-up's disturbance; the straight line through
+  its positions over time gives the speed at which the front leaves the orifice (lab frame) and
+  u0 minus it, the speed at which the disturbance runs up the jet against the fluid (in m/s and
+  in units of sqrt(sigma/(rho a))). A jet whose u0 is close to that speed clears its start-up
+  slowly.
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
 planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
 """
@@ -144,6 +150,36 @@ def spectrum(surface, d0, a):
     return [((j + 1) * kmax / nk, acc[j] / used) for j in range(nk)]
 
 
+FRONT_THRESHOLD = 1e-3   # |r_s/a - 1| that marks the start-up's disturbance (the exit is quieter)
+FRONT_FROM_D0 = 1.0      # the front is looked for past this s/d0 (the orifice's own contraction)
+
+
+def startup_front(surface, t0):
+    """The start-up's disturbance front over the samples at t < t0: (t, s_f/d0) pairs, the first
+    slice past FRONT_FROM_D0 where |r_s/a - 1| > FRONT_THRESHOLD (samples without one skipped),
+    and the least-squares slope ds_f/dt in d0 per second (None below three points)."""
+    per = {}
+    for r in surface:
+        t = float(r["time"])
+        if t < t0:
+            per.setdefault(t, []).append((float(r["s_over_d0"]), float(r["r_over_d0"])))
+    pts = []
+    for t in sorted(per):
+        s = next((s for s, r in sorted(per[t]) if s >= FRONT_FROM_D0 and abs(2.0 * r - 1.0) > FRONT_THRESHOLD),
+                 None)
+        if s is not None:
+            pts.append((t, s))
+    if len(pts) < 3:
+        return pts, None
+    n = len(pts)
+    mt = sum(p[0] for p in pts) / n
+    ms = sum(p[1] for p in pts) / n
+    stt = sum((p[0] - mt) ** 2 for p in pts)
+    if stt == 0.0:
+        return pts, None
+    return pts, sum((p[0] - mt) * (p[1] - ms) for p in pts) / stt
+
+
 def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
     """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None)] over the intact
     jet of every snapshot at t >= t0; None without snapshots. axis_dx (a round jet's particle
@@ -206,7 +242,8 @@ def analyse(run, t0=None):
     if not rows:
         raise NoiseError(f"{run}: no sample at t >= {t0:g} s (the run ends at {jet[-1]['time']} s)")
     steps = {r["step"] for r in rows}
-    surface = [r for r in read_rows(os.path.join(run, "jet_surface.csv")) if r["step"] in steps]
+    all_surface = read_rows(os.path.join(run, "jet_surface.csv"))
+    surface = [r for r in all_surface if r["step"] in steps]
 
     sig = c["sigma"]
     p_unit = sig / a if sig > 0 else float("nan")
@@ -251,6 +288,14 @@ def analyse(run, t0=None):
             l_weber = u0 * (-fit[1]) / (w_max / t_cap) / d0
             print(f"Weber's L = u0 C / omega_max with this C: {l_weber:.3g} d0")
             summary["L_weber_over_d0"] = l_weber
+    front, slope = startup_front(all_surface, t0)
+    if slope is not None:
+        v_f = slope * d0
+        print(f"start-up front (|r_s/a - 1| > {FRONT_THRESHOLD:g} past {FRONT_FROM_D0:g} d0, {len(front)} samples "
+              f"before t = {t0:.4g} s): from s = {front[0][1]:.2f} d0 at {front[0][0]:.4g} s to {front[-1][1]:.2f} d0 "
+              f"at {front[-1][0]:.4g} s; leaves the orifice at {v_f:.3g} m/s, runs up the jet at u0 - that = "
+              f"{u0 - v_f:.3g} m/s = {(u0 - v_f) / v_cap:.3g} sqrt(sigma/(rho a))")
+        summary.update({"front_speed": v_f, "front_upstream_over_vcap": (u0 - v_f) / v_cap})
     spec = spectrum(surface, d0, a)
     if spec:
         kpk, apk = max(spec, key=lambda e: e[1])

@@ -21,6 +21,12 @@ the slices' standard deviations must print as 0.05 and 2 (the three digits print
 snapshots' rows leave the axis by half from 4 to 8 d0 and are stretched twice (twice u0) but in
 order beyond: the axis order must print 1, 0.5 and 1 there (the counts are exact).
 
+The start-up front (jet_noise.startup_front) on a surface quiet to 1e-4 a up to a front at s_f
+= 1.52 d0 + 300 d0/s x t (never on a slice centre) and 1e-2 a beyond it, 60 samples over 0.03 s
+on 0.1 d0 slices: the front must be found at the first slice past s_f in each sample and its
+fitted speed must be 300 d0/s within 1% (the slices round each position by less than 0.1 d0,
+over a 9 d0 travel), with no front found in the samples at or after the cut time.
+
 usage: test_jet_noise.py   (exit 0 on success, 1 with a message on failure)
 """
 import math
@@ -111,6 +117,31 @@ def write_snapshots(d):
             g["kind"] = np.full(len(s), 2, dtype=np.int32)
 
 
+def check_front():
+    """The start-up front's fit on a step that moves at a known speed: a list of failures."""
+    sys.path.insert(0, os.path.join(REPO, "tools"))
+    import jet_noise
+    speed, s_start, cut = 300.0, 1.52, 0.03
+    rows = []
+    for n in range(80):
+        t = n * 0.0005
+        s_f = s_start + speed * t
+        for i in range(200):
+            s = (i + 0.5) * 0.1
+            rel = 1e-2 if s > s_f else 1e-4 * (-1) ** i
+            rows.append({"time": repr(t), "s_over_d0": f"{s:.6g}", "r_over_d0": repr(0.5 * (1 + rel))})
+    pts, slope = jet_noise.startup_front(rows, cut)
+    failures = []
+    if len(pts) != 60 or any(p[0] >= cut for p in pts):
+        failures.append(f"front found in {len(pts)} samples, built 60 before t = {cut}")
+    wrong = [p for p in pts if not 0 < p[1] - (s_start + speed * p[0]) <= 0.1 + 1e-9]
+    if wrong:
+        failures.append(f"front not at the first slice past s_f in {len(wrong)} samples, e.g. {wrong[0]}")
+    if slope is None or not abs(slope / speed - 1) < 0.01:
+        failures.append(f"front speed {slope} d0/s, built {speed} (1%)")
+    return failures
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -161,6 +192,7 @@ def main():
         close = [abs(float(prof.get(k, "nan")) - v) <= 5e-4 * v for k, v in want.items()]
         if len(prof) != 6 or not all(close):
             failures.append(f"noise profile {prof}, built 0.05 to 8 d0 and 2 to 12 d0 in six 2 d0 slices")
+    failures += check_front()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
