@@ -33,6 +33,12 @@
   u0 minus it, the speed at which the disturbance runs up the jet against the fluid (in m/s and
   in units of sqrt(sigma/(rho a))). A jet whose u0 is close to that speed clears its start-up
   slowly.
+- dominant wave (--wave S0 S1, the samples from T whose intact jet covers S0-S1 d0): the peak of
+  the (k, omega) spectrum of r_s(s, t) there, its ka and the speed of its crests in the lab, and
+  the same against the fluid (minus u0). A wave the jet carries (Rayleigh-Plateau's) moves at
+  u0; a capillary wave (ka > 1) runs against the fluid at its phase speed, printed beside it with
+  its group velocity from Rayleigh's inviscid dispersion relation (a group velocity above u0
+  carries a disturbance up the jet).
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
 planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
 """
@@ -44,7 +50,7 @@ import sys
 import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from axisymmetric import weber_omega  # noqa: E402
+from axisymmetric import rayleigh_omega2, weber_omega  # noqa: E402
 
 
 class NoiseError(Exception):
@@ -180,6 +186,42 @@ def startup_front(surface, t0):
     return pts, sum((p[0] - mt) * (p[1] - ms) for p in pts) / stt
 
 
+def dominant_wave(surface, s0, s1):
+    """The peak of the (k, omega) spectrum of r_s(s, t)/a - 1 over the slices in [s0, s1) d0 and
+    the samples whose profile covers them all: (ka, omega [1/s], crest speed [d0/s], samples),
+    omega > 0 for crests moving down the jet; None with fewer than 8 samples or 8 slices. Each
+    slice's mean over the samples is taken out (the steady shape), both directions are Hann
+    windowed, and the transform is taken directly (the samples need not be evenly spaced) on 400 k
+    from one wavelength in the stretch to the slices' Nyquist and 401 omega of either sign up to
+    the samples'."""
+    import numpy as np
+    per = {}
+    for r in surface:
+        s = float(r["s_over_d0"])
+        if s0 <= s < s1:
+            per.setdefault(float(r["time"]), {})[round(s, 6)] = float(r["r_over_d0"])
+    if not per:
+        return None
+    slices = sorted(set().union(*per.values()))
+    times = [t for t in sorted(per) if len(per[t]) == len(slices) and min(per[t].values()) > 0.0]
+    if len(times) < 8 or len(slices) < 8:
+        return None
+    m = np.array([[2.0 * per[t][s] - 1.0 for s in slices] for t in times])
+    m -= m.mean(axis=0)
+    m *= np.hanning(len(times))[:, None] * np.hanning(len(slices))[None, :]
+    t = np.array(times)
+    sv = np.array(slices)
+    ds = float(np.median(np.diff(sv)))
+    dt = float(np.median(np.diff(t)))
+    span = sv[-1] - sv[0] + ds
+    k = np.linspace(2.0 * math.pi / span, math.pi / ds, 400)         # per d0: one wave in the stretch to Nyquist
+    w = np.linspace(-1.0, 1.0, 401) * math.pi / dt                   # 1/s, both signs
+    x = m @ np.exp(-1j * np.outer(sv, k))                             # (samples, k): picks cos(k s - ...)
+    power = np.abs(np.exp(1j * np.outer(w, t)) @ x)                   # (omega, k)
+    i, j = np.unravel_index(int(np.argmax(power)), power.shape)
+    return 0.5 * k[j], float(w[i]), float(w[i] / k[j]), len(times)
+
+
 def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
     """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None)] over the intact
     jet of every snapshot at t >= t0; None without snapshots. axis_dx (a round jet's particle
@@ -220,10 +262,11 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
     return [(2.0 * b, median(v), median(order[b]) if b in order else None) for b, v in sorted(per.items())]
 
 
-def analyse(run, t0=None):
+def analyse(run, t0=None, wave=None):
     """Prints the measures of the run directory `run` over its samples at t >= t0 (None: twice
     the first breakup time) and returns them: a dict with "summary" (the SUMMARY line's values)
-    and what the plot draws. NoiseError for a run without the files or samples it needs."""
+    and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
+    read. NoiseError for a run without the files or samples it needs."""
     try:
         c = read_case(run)
     except (OSError, KeyError, tomllib.TOMLDecodeError) as e:
@@ -296,6 +339,24 @@ def analyse(run, t0=None):
               f"at {front[-1][0]:.4g} s; leaves the orifice at {v_f:.3g} m/s, runs up the jet at u0 - that = "
               f"{u0 - v_f:.3g} m/s = {(u0 - v_f) / v_cap:.3g} sqrt(sigma/(rho a))")
         summary.update({"front_speed": v_f, "front_upstream_over_vcap": (u0 - v_f) / v_cap})
+    if wave is not None:
+        got = dominant_wave(surface, *wave)
+        if got is None:
+            print(f"dominant wave over s = {wave[0]:g}-{wave[1]:g} d0: fewer than 8 samples cover it")
+        else:
+            ka, om, c_d0, n = got
+            c_lab = c_d0 * d0
+            line = (f"dominant wave over s = {wave[0]:g}-{wave[1]:g} d0 ({n} samples): ka = {ka:.3g}, "
+                    f"omega = {om:.4g} 1/s, crests move at {c_lab:+.3g} m/s in the lab (down the jet > 0), "
+                    f"{c_lab - u0:+.3g} m/s against the fluid")
+            if ka > 1.0 and sig > 0:
+                def om_r(x):
+                    return math.sqrt(-rayleigh_omega2(x)) / t_cap
+                c_r = om_r(ka) * a / ka
+                cg_r = (om_r(ka * 1.001) - om_r(ka * 0.999)) / (0.002 * ka / a)
+                line += f"; Rayleigh's capillary wave at that ka: phase speed {c_r:.3g} m/s, group velocity {cg_r:.3g} m/s"
+            print(line)
+            summary.update({"wave_ka": ka, "wave_speed": c_lab})
     spec = spectrum(surface, d0, a)
     if spec:
         kpk, apk = max(spec, key=lambda e: e[1])
@@ -362,9 +423,13 @@ def main(argv=None):
     ap.add_argument("--from", dest="t0", type=float, default=None,
                     help="first sample time [s] (default: twice the first breakup time: the start-up head gone)")
     ap.add_argument("--plot", default=None, help="write the envelope and the spectrum to this PNG")
+    ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
+                    help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
     args = ap.parse_args(argv)
+    if args.wave is not None and not 0.0 <= args.wave[0] < args.wave[1]:
+        ap.error(f"--wave S0 S1 needs 0 <= S0 < S1 (d0), got {args.wave[0]:g} {args.wave[1]:g}")
     try:
-        got = analyse(args.run, args.t0)
+        got = analyse(args.run, args.t0, args.wave)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

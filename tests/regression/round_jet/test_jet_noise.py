@@ -21,6 +21,10 @@ the slices' standard deviations must print as 0.05 and 2 (the three digits print
 snapshots' rows leave the axis by half from 4 to 8 d0 and are stretched twice (twice u0) but in
 order beyond: the axis order must print 1, 0.5 and 1 there (the counts are exact).
 
+With `--wave 0.5 8` the dominant wave must be the built one: ka within one step of the k grid
+(0.038 over that stretch) of 0.7, and its crests' speed omega / k within 3% of the built 5.36
+m/s (omega falls on its grid; half a k step is 2.7% of k).
+
 The start-up front (jet_noise.startup_front) on a surface quiet to 1e-4 a up to a front at s_f
 = 1.52 d0 + 300 d0/s x t (never on a slice centre) and 1e-2 a beyond it, 60 samples over 0.03 s
 on 0.1 d0 slices: the front must be found at the first slice past s_f in each sample and its
@@ -149,7 +153,7 @@ def main():
     with tempfile.TemporaryDirectory() as d:
         write_run(d)
         write_snapshots(d)
-        out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
+        out = subprocess.run([PY, TOOL, d, "--from", "0", "--wave", "0.5", "8"], capture_output=True, text=True)
         print(out.stdout + out.stderr)
         if out.returncode != 0:
             print(f"FAIL: jet_noise.py exited {out.returncode}")
@@ -184,6 +188,13 @@ def main():
         if not m or m.group(1) != "0:1.00, 2:1.00, 4:0.50, 6:0.50, 8:1.00, 10:1.00":
             failures.append(f"axis order {m.group(1) if m else None}: built 1 to 4 d0, 0.5 to 8 d0, 1 beyond "
                             "(stretched twice)")
+        # the wave's crests move down at omega / k: 40 periods in 400 samples 1e-4 s apart, k = 2 KA per d0
+        omega_built = 2 * math.pi * PERIODS / (SAMPLES * 1e-4)
+        c_built = omega_built / (2 * KA) * D0
+        if not abs(val.get("wave_ka", 0) - KA) < 0.04:
+            failures.append(f"dominant wave at ka {val.get('wave_ka')}, built {KA} (one k step, 0.038)")
+        if not abs(val.get("wave_speed", 0) / c_built - 1) < 0.03:
+            failures.append(f"dominant wave's crests at {val.get('wave_speed')} m/s, built {c_built:.4g} (3%)")
         if val.get("axis_order_min") != 0.5:
             failures.append(f"axis_order_min {val.get('axis_order_min')}, built 0.5")
         m = re.search(r"^pressure std .*?: (.*)$", out.stdout, re.M)
