@@ -157,7 +157,7 @@ def spectrum(surface, d0, a):
 
 
 FRONT_THRESHOLD = 1e-3   # |r_s/a - 1| that marks the start-up's disturbance (the exit is quieter)
-FRONT_FROM_D0 = 1.0      # the front is looked for past this s/d0 (the orifice's own contraction)
+FRONT_FROM_D0 = 1.0      # the front is looked for past this s/d0 (clear of the exit's own shape)
 
 
 def startup_front(surface, t0):
@@ -349,7 +349,7 @@ def analyse(run, t0=None, wave=None):
             line = (f"dominant wave over s = {wave[0]:g}-{wave[1]:g} d0 ({n} samples): ka = {ka:.3g}, "
                     f"omega = {om:.4g} 1/s, crests move at {c_lab:+.3g} m/s in the lab (down the jet > 0), "
                     f"{c_lab - u0:+.3g} m/s against the fluid")
-            if ka > 1.0 and sig > 0:
+            if ka > 1.01 and sig > 0:   # the stable branch, clear of ka = 1 where omega -> 0
                 def om_r(x):
                     return math.sqrt(-rayleigh_omega2(x)) / t_cap
                 c_r = om_r(ka) * a / ka
