@@ -46,6 +46,7 @@ import argparse
 import csv
 import math
 import os
+import statistics
 import sys
 import tomllib
 
@@ -120,13 +121,8 @@ def fit_growth(env):
     pts = [(s, math.log(A)) for s, A, _ in env[i0:cross + 1] if A > 0]
     if len(pts) < 3:
         return None
-    n = len(pts)
-    sx = sum(p[0] for p in pts)
-    sy = sum(p[1] for p in pts)
-    sxx = sum(p[0] ** 2 for p in pts)
-    sxy = sum(p[0] * p[1] for p in pts)
-    k = (n * sxy - sx * sy) / (n * sxx - sx * sx)
-    return k, (sy - k * sx) / n, pts[0][0], pts[-1][0]
+    k, ln_d = statistics.linear_regression([p[0] for p in pts], [p[1] for p in pts])
+    return k, ln_d, pts[0][0], pts[-1][0]
 
 
 def spectrum(surface, d0, a):
@@ -177,13 +173,7 @@ def startup_front(surface, t0):
             pts.append((t, s))
     if len(pts) < 3:
         return pts, None
-    n = len(pts)
-    mt = sum(p[0] for p in pts) / n
-    ms = sum(p[1] for p in pts) / n
-    stt = sum((p[0] - mt) ** 2 for p in pts)
-    if stt == 0.0:
-        return pts, None
-    return pts, sum((p[0] - mt) * (p[1] - ms) for p in pts) / stt
+    return pts, statistics.linear_regression([p[0] for p in pts], [p[1] for p in pts]).slope
 
 
 def dominant_wave(surface, s0, s1):
