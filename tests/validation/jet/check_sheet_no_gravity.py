@@ -12,10 +12,10 @@ axis; jet_tip_over_d0: the farthest point of the jet's own linked cluster) and j
 - no gap is a pinch-off of the sheet. A gap the jet's cluster reaches past, by more than the
   gap itself (breakup.link_over_h x h, 0.3 D0 here, read from the run's case.toml), is not a
   break at all: the sheet there has bent out of the band, whole. A gap where the cluster ends
-  must have the rim beside it: over the last RIM_WINDOW = 2 D0 before the gap the cluster is somewhere wider than RIM_HALF_WIDTH = 1 D0,
-  twice the sheet's half-width. A pinch-off of the sheet leaves a thin end there (the sheet's
-  0.5 D0 or less); a gap inside the retracting sheet's rim, a disordered blob several D0
-  across, has the blob beside it.
+  must have the rim beside it: over the last RIM_WINDOW = 2 D0 before the gap the cluster is
+  somewhere wider than RIM_HALF_WIDTH = 1 D0, twice the sheet's half-width. A pinch-off of the
+  sheet leaves a thin end there (the sheet's 0.5 D0 or less); a gap inside the retracting
+  sheet's rim, a disordered blob several D0 across, has the blob beside it.
 Measured: main at c2d7f83 with time.cfl = 0.2001 (another realization of the same numerics):
 583 gaps, 550 of them bridged (the sheet bent out of the band, 0.73 s), the rest beside a rim
 at least 2.17 D0 wide; with the surface fit's radius bound (FIT_RADIUS_MIN): 153 gaps, all
