@@ -21,7 +21,8 @@ Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
   growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
                                         growth rate of the Fourier mode of r_s(z) vs Rayleigh
   roughness RUN --radius A --period L --dx DX [--sigma S --rho R0 --nu NU]
-                   r_s(z)'s departure from a cylinder, its n = 1 Fourier mode and the rest
+                   r_s(z)'s departure from a cylinder, its n = 1 Fourier mode and the rest,
+                   and the motion inside the column beyond the surface's long modes
   curvature RUN --radius A --wavelength L --eps E --dx DX
                    the CSF curvature's response to a surface wave, per row, at t = 0
                                         a periodic column that should stay as built: the standard
@@ -107,7 +108,7 @@ def snapshots(run):
             if "particles" not in h or "time" not in h.attrs:
                 continue
             g = h["particles"]
-            d = {k: g[k][()] for k in ("x", "z", "u", "w", "rho", "p", "m", "curvature") if k in g}
+            d = {k: g[k][()] for k in ("x", "z", "u", "w", "rho", "p", "m", "curvature", "id") if k in g}
             if "kind" in g:
                 d["kind"] = g["kind"][()]
             d["time"] = float(h.attrs["time"])
@@ -364,6 +365,7 @@ def roughness(a):
         rest.append(float(np.sqrt(np.sum(amp[2:] ** 2) / 2.0)))
         peak.append(int(np.argmax(amp[2:])) + 2 if len(amp) > 2 else 0)
     t, sd, mode1, rest = np.array(t), np.array(sd), np.array(mode1), np.array(rest)
+    inner = interior_motion(snaps[:len(t)], a.period, a.dx)
 
     def fit(y, lo):
         """Growth rate of ln y over the snapshots where lo < y < 1e-3 (the linear range)."""
@@ -390,11 +392,58 @@ def roughness(a):
           f"rest_growth={rest_rate:.4g} rest_start={float(rest[0]) if len(rest) else float('nan'):.4g} "
           f"rest_end={float(rest[-1]) if len(rest) else float('nan'):.4g} "
           f"rest_ratio={float(rest[-1] / rest[0]) if len(rest) and rest[0] > 0 else float('nan'):.4g} "
-          f"rest_peak_ka={ka_peak:.3g}")
+          f"rest_peak_ka={ka_peak:.3g}{interior_summary(t, inner, mode1)}")
     if a.table:
-        for ti, si, m1, ri in zip(t, sd, mode1, rest):
-            print(f"{ti:.5f} {si:.6e} {m1:.6e} {ri:.6e}")
+        for i, (ti, si, m1, ri) in enumerate(zip(t, sd, mode1, rest)):
+            print(f"{ti:.5f} {si:.6e} {m1:.6e} {ri:.6e}" + (f" {inner[i]:.6e}" if inner is not None else ""))
     return 0
+
+
+def interior_motion(snaps, period, dx):
+    """How far the particles inside the column (every row but the outermost) have moved since the
+    first snapshot, beyond what the surface's long modes carry: per row of the starting lattice
+    (row i at r = (i + 1/2) dx), each particle's radial and axial displacement less its row's
+    n = 0 and n = 1 Fourier parts along z; the rms over the interior particles, in dx, per
+    snapshot. None where the snapshots carry no particle ids or their count changes."""
+    import numpy as np
+    if not snaps or any("id" not in d or len(d["id"]) != len(snaps[0]["id"]) for d in snaps):
+        return None
+    first = {k: v[np.argsort(snaps[0]["id"])] for k, v in snaps[0].items() if k in ("x", "z", "id")}
+    row = np.rint(np.abs(first["x"]) / dx - 0.5).astype(int)
+    k = 2.0 * math.pi / period
+    rows = [np.flatnonzero(row == i) for i in range(row.max())]   # the outermost row left out
+    basis = [np.stack([np.ones(len(m)), np.cos(k * first["z"][m]), np.sin(k * first["z"][m])], 1)
+             for m in rows]
+    out = []
+    for d in snaps:
+        o = np.argsort(d["id"])
+        if not np.array_equal(d["id"][o], first["id"]):
+            return None
+        dr = np.abs(d["x"][o]) - np.abs(first["x"])
+        dz = d["z"][o] - first["z"]
+        dz -= period * np.rint(dz / period)
+        ss, n = 0.0, 0
+        for m, b in zip(rows, basis):
+            for disp in (dr[m], dz[m]):
+                c = np.linalg.lstsq(b, disp, rcond=None)[0]
+                ss += float(np.sum((disp - b @ c) ** 2))
+            n += len(m)
+        out.append(math.sqrt(ss / n) / dx if n else 0.0)
+    return np.array(out)
+
+
+def interior_summary(t, inner, mode1):
+    """The interior motion's first nonzero value, its last, and its growth rate fitted while the
+    n = 1 mode is below 1e-3 a (past that its harmonics move the interior too)."""
+    import numpy as np
+    if inner is None or len(inner) < 2:
+        return ""
+    m = (inner > 0) & (mode1 < 1e-3)
+    rate = float(np.polyfit(t[m], np.log(inner[m]), 1)[0]) if m.sum() >= 3 else float("nan")
+    t_lin = float(t[m][-1]) if m.any() else float("nan")
+    first = float(inner[inner > 0][0]) if (inner > 0).any() else float("nan")
+    return (f" interior_start_over_dx={first:.4g} interior_end_over_dx={float(inner[-1]):.4g} "
+            f"interior_growth={rate:.4g} interior_fit_to={t_lin:.4g}")
 
 
 # ---------------------------------------------------------------- curvature
