@@ -376,6 +376,10 @@ def roughness(a):
     # the modes: above 10 times their first nonzero value (past the start's relaxation)
     start = lambda y: 10.0 * float(y[y > 0][0]) if (y > 0).any() else 1e-9
     mode1_rate, rest_rate = fit(mode1, start(mode1)), fit(rest, start(rest))
+    # the rest while the n = 1 mode is linear (below 1e-3 a): past that its own harmonics,
+    # which are physics, fill the rest
+    lin1 = (mode1 < 1e-3) & (rest > 0)
+    rest_linear = float(np.polyfit(t[lin1], np.log(rest[lin1]), 1)[0]) if lin1.sum() >= 3 else float("nan")
     weber = float("nan")
     if a.sigma > 0:
         scale = math.sqrt(a.sigma / (a.rho * a.radius ** 3))
@@ -389,7 +393,7 @@ def roughness(a):
           f"sd_end_over_a={float(sd[-1]) if len(sd) else float('nan'):.4g} t_end={float(t[-1]) if len(t) else 0:.4g} "
           f"intact={int(intact)} growth={rate:.4g} weber_max={weber:.4g} growth_over_weber={rate / weber:.4g} "
           f"snapshots={len(t)} mode1_growth={mode1_rate:.4g} mode1_over_weber={mode1_rate / weber:.4g} "
-          f"rest_growth={rest_rate:.4g} rest_start={float(rest[0]) if len(rest) else float('nan'):.4g} "
+          f"rest_growth={rest_rate:.4g} rest_linear_growth={rest_linear:.4g} rest_start={float(rest[0]) if len(rest) else float('nan'):.4g} "
           f"rest_end={float(rest[-1]) if len(rest) else float('nan'):.4g} "
           f"rest_ratio={float(rest[-1] / rest[0]) if len(rest) and rest[0] > 0 else float('nan'):.4g} "
           f"rest_peak_ka={ka_peak:.3g}{interior_summary(t, inner, mode1)}")
