@@ -5,7 +5,8 @@ axisymmetric/check_axi.py); for the scripts that run sphjet themselves, a run th
 succeed (run_or_exit) and a run of a case with overrides, fresh or resumed (sphjet_run); and,
 for the scripts that read HDF5 themselves, getting an interpreter with numpy and h5py
 (with_h5py), a file's /particles (h5_particles) and the final ones of a run stopped and
-resumed (resumed_particles), compared bitwise (same_particles).
+resumed (resumed_particles), compared bitwise (same_particles); for the tests of an analysis
+on synthetic data, its numbers against the known answers (known_answers).
 
 Every function prints what it does; a failure prints `0 passed, N failed` and returns None or
 exit status 1, so that the caller's last line is always `N passed, M failed`."""
@@ -107,6 +108,32 @@ def check(s, expect, show, regress=()):
         print(f"  {k} = {s.get(k)}")
     print(f"{ok} passed, {bad} failed")
     return 0 if bad == 0 else 1
+
+
+def summary_of(cmd):
+    """Runs cmd (run_or_exit), prints its SUMMARY line -> that line's numbers (summary); exits
+    with FAIL when there is none."""
+    r = run_or_exit(cmd)
+    s = summary(r.stdout)
+    if s is None:
+        sys.exit(f"FAIL: {' '.join(map(str, cmd))} printed no SUMMARY line:\n{r.stdout[-3000:]}")
+    print(next(line for line in r.stdout.splitlines() if line.startswith("SUMMARY ")))
+    return s
+
+
+def known_answers(checks):
+    """For the tests of an analysis on synthetic data: checks is a list of (name, measured,
+    known, tolerance); prints one line per check and exits with FAIL naming the ones outside
+    their tolerance (a nan is outside), else prints PASS."""
+    failures = []
+    for name, got, want, tol in checks:
+        good = abs(got - want) <= tol
+        print(f"{'ok  ' if good else 'FAIL'} {name} = {got:.8g} (expected {want:.8g} +- {tol:.3g})")
+        if not good:
+            failures.append(name)
+    if failures:
+        sys.exit(f"FAIL: {', '.join(failures)}")
+    print("PASS")
 
 
 def check_output_of(cmd, expect, show, regress=()):

@@ -15,14 +15,14 @@ usage: test_mode2_tool.py   (exit 0 on success, 1 with a message on failure)
 """
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
 TOOL = os.path.join(REPO, "tools", "axisymmetric.py")
-PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+sys.path.insert(0, os.path.dirname(HERE))
+from summary_checks import known_answers, summary_of, with_h5py  # noqa: E402  (tests/regression/)
 
 OMEGA, GAMMA, AMP, R = math.sqrt(8.0 / (1000.0 * 0.02 ** 3)), 3.0, 0.02, 0.02
 T_OUT = 0.40
@@ -52,33 +52,18 @@ def write_snapshots(d):
 
 
 def main():
-    if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
-        os.execv(PY, [PY, os.path.abspath(__file__)])
-    failures = []
+    with_h5py()   # numpy and h5py: Debian's interpreter, which then runs the tool too
     with tempfile.TemporaryDirectory() as d:
         write_snapshots(d)
-        r = subprocess.run([PY, TOOL, "mode2", d, "--sigma", "1", "--rho", "1000", "--nu", "1e-4"],
-                           capture_output=True, text=True)
-        line = [s for s in r.stdout.splitlines() if s.startswith("SUMMARY")]
-        if r.returncode != 0 or not line:
-            sys.exit(f"FAIL: the tool exited {r.returncode}: {r.stdout}{r.stderr}")
-        print(line[0])
-        v = dict(kv.split("=") for kv in line[0].split()[1:])
+        v = summary_of([sys.executable, TOOL, "mode2", d, "--sigma", "1", "--rho", "1000", "--nu", "1e-4"])
     checks = [
-        ("intact_until", float(v["intact_until"]), T_OUT, 1e-9),
-        ("intact", float(v["intact"]), 0.0, 0.0),
-        ("omega_fit", float(v["omega_fit"]), OMEGA, 0.005 * OMEGA),
-        ("gamma_fit", float(v["gamma_fit"]), GAMMA, 0.05 * GAMMA),
-        ("period", float(v["period"]), 2.0 * math.pi / OMEGA, 0.02 * 2.0 * math.pi / OMEGA),
+        ("intact_until", v["intact_until"], T_OUT, 1e-9),
+        ("intact", v["intact"], 0.0, 0.0),
+        ("omega_fit", v["omega_fit"], OMEGA, 0.005 * OMEGA),
+        ("gamma_fit", v["gamma_fit"], GAMMA, 0.05 * GAMMA),
+        ("period", v["period"], 2.0 * math.pi / OMEGA, 0.02 * 2.0 * math.pi / OMEGA),
     ]
-    for name, got, want, tol in checks:
-        ok = abs(got - want) <= tol
-        print(f"{'ok  ' if ok else 'FAIL'} {name} = {got:.6g} (expected {want:.6g} +- {tol:.3g})")
-        if not ok:
-            failures.append(name)
-    if failures:
-        sys.exit(f"FAIL: {', '.join(failures)}")
-    print("PASS")
+    known_answers(checks)
 
 
 if __name__ == "__main__":

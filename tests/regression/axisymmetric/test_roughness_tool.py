@@ -23,14 +23,14 @@ usage: test_roughness_tool.py   (exit 0 on success, 1 with a message on failure)
 """
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
 TOOL = os.path.join(REPO, "tools", "axisymmetric.py")
-PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+sys.path.insert(0, os.path.dirname(HERE))
+from summary_checks import known_answers, summary_of, with_h5py  # noqa: E402  (tests/regression/)
 
 DX, NROW, NZ = 1e-4, 10, 80
 PERIOD = NZ * DX
@@ -87,35 +87,21 @@ def write_snapshots(d):
 
 
 def main():
-    if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
-        os.execv(PY, [PY, os.path.abspath(__file__)])
+    with_h5py()   # numpy and h5py: Debian's interpreter, which then runs the tool too
     with tempfile.TemporaryDirectory() as d:
         write_snapshots(d)
-        r = subprocess.run([PY, TOOL, "roughness", d, "--radius", str(NROW * DX), "--period",
-                            str(PERIOD), "--dx", str(DX)], capture_output=True, text=True)
-        line = [s for s in r.stdout.splitlines() if s.startswith("SUMMARY")]
-        if r.returncode != 0 or not line:
-            sys.exit(f"FAIL: the tool exited {r.returncode}: {r.stdout}{r.stderr}")
-        print(line[0])
-        v = dict(kv.split("=") for kv in line[0].split()[1:])
+        v = summary_of([sys.executable, TOOL, "roughness", d, "--radius", str(NROW * DX), "--period",
+                        str(PERIOD), "--dx", str(DX)])
     t_lin = 0.034   # the n = 1 amplitude, 0.95 e (the outermost row at 9.5 dx), passes 1e-3 at 34.8 ms
     checks = [
-        ("mode1_growth", float(v["mode1_growth"]), S1, 0.01 * S1),
-        ("rest_linear_growth", float(v["rest_linear_growth"]), S3, 0.01 * S3),
-        ("interior_start_over_dx", float(v["interior_start_over_dx"]), interior(1e-3), 5e-4 * interior(1e-3)),
-        ("interior_end_over_dx", float(v["interior_end_over_dx"]), interior(TIMES[-1]), 5e-4 * interior(TIMES[-1])),
-        ("interior_growth", float(v["interior_growth"]), Q, 5e-4 * Q),
-        ("interior_fit_to", float(v["interior_fit_to"]), t_lin, 1e-9),
+        ("mode1_growth", v["mode1_growth"], S1, 0.01 * S1),
+        ("rest_linear_growth", v["rest_linear_growth"], S3, 0.01 * S3),
+        ("interior_start_over_dx", v["interior_start_over_dx"], interior(1e-3), 5e-4 * interior(1e-3)),
+        ("interior_end_over_dx", v["interior_end_over_dx"], interior(TIMES[-1]), 5e-4 * interior(TIMES[-1])),
+        ("interior_growth", v["interior_growth"], Q, 5e-4 * Q),
+        ("interior_fit_to", v["interior_fit_to"], t_lin, 1e-9),
     ]
-    failures = []
-    for name, got, want, tol in checks:
-        ok = abs(got - want) <= tol
-        print(f"{'ok  ' if ok else 'FAIL'} {name} = {got:.8g} (expected {want:.8g} +- {tol:.3g})")
-        if not ok:
-            failures.append(name)
-    if failures:
-        sys.exit(f"FAIL: {', '.join(failures)}")
-    print("PASS")
+    known_answers(checks)
 
 
 if __name__ == "__main__":
