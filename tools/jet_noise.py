@@ -2,9 +2,11 @@
 """The disturbance of a jet along its length, from a run's jet.csv and jet_surface.csv
 (cases/CASE_FORMAT.md, [breakup]): where it starts, how fast it grows, and how quiet the exit is.
 
-    /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--plot OUT.png]
+    /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--to T1] [--plot OUT.png]
 
-- exit: the medians over the samples (t >= T) of the pressure's mean and standard deviation
+The samples read are those from T to T1 (default: the run's last), so that two runs can be read
+over the same times while one of them goes on.
+- exit: the medians over the samples (T <= t <= T1) of the pressure's mean and standard deviation
   and of the radial velocity's rms over the jet's particles within 2 d0 of the orifice, in
   units of sigma/a (a = d0/2; round jets) and of the capillary velocity sqrt(sigma/(rho a)).
 - envelope: at each slice s of the surface profile r_s(s, t), the disturbance amplitude
@@ -19,7 +21,7 @@
   measured C gives with it.
 - spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
   at least 4 d0 long), and its peak ka.
-- noise along the jet (from the snapshots snap_*.h5 at t >= T, where the run wrote them): the
+- noise along the jet (from the snapshots snap_*.h5 at T <= t <= T1, where the run wrote them): the
   pressure's standard deviation over the particles of each 2 d0 slice of the intact jet (s < L
   of the jet.csv sample nearest in time), its median over the snapshots in units of sigma/a;
   `quiet to` is where the first slice exceeds sigma/(4a) (the exit's target), and L minus it how
@@ -212,9 +214,9 @@ def dominant_wave(surface, s0, s1):
     return 0.5 * k[j], float(w[i]), float(w[i] / k[j]), len(times)
 
 
-def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
+def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf):
     """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None)] over the intact
-    jet of every snapshot at t >= t0; None without snapshots. axis_dx (a round jet's particle
+    jet of every snapshot at t0 <= t <= t1; None without snapshots. axis_dx (a round jet's particle
     spacing dx) adds the axis order: the particles within 0.6 dx of the axis (the rings nearest
     it, at dx/2 as built) over the count of an ordered lattice stretched with the flow, 2 (d0/dx)
     u0 / |mean axial velocity| in a 2 d0 slice; it is 1 while the rows hold the nozzle's order
@@ -229,7 +231,7 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
     for n in names:
         with h5py.File(os.path.join(run, n), "r") as f:
             t = float(f.attrs["time"])
-            if t < t0:
+            if t < t0 or t > t1:
                 continue
             row = jet[min(range(len(times)), key=lambda i: abs(times[i] - t))]
             if row["broken"] != "1":
@@ -252,9 +254,9 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None):
     return [(2.0 * b, median(v), median(order[b]) if b in order else None) for b, v in sorted(per.items())]
 
 
-def analyse(run, t0=None, wave=None):
-    """Prints the measures of the run directory `run` over its samples at t >= t0 (None: twice
-    the first breakup time) and returns them: a dict with "summary" (the SUMMARY line's values)
+def analyse(run, t0=None, wave=None, t1=None):
+    """Prints the measures of the run directory `run` over its samples at t0 <= t <= t1 (t0 None:
+    twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
     read. NoiseError for a run without the files or samples it needs."""
     try:
@@ -271,9 +273,11 @@ def analyse(run, t0=None, wave=None):
     if t0 is None:
         first = next((float(r["time"]) for r in jet if r["broken"] == "1"), None)
         t0 = 2.0 * first if first is not None else 0.5 * float(jet[-1]["time"])
-    rows = [r for r in jet if float(r["time"]) >= t0]
+    t1 = math.inf if t1 is None else t1
+    rows = [r for r in jet if t0 <= float(r["time"]) <= t1]
     if not rows:
-        raise NoiseError(f"{run}: no sample at t >= {t0:g} s (the run ends at {jet[-1]['time']} s)")
+        raise NoiseError(f"{run}: no sample at {t0:g} s <= t <= {t1:g} s (the run's samples: "
+                         f"{jet[0]['time']} to {jet[-1]['time']} s)")
     steps = {r["step"] for r in rows}
     all_surface = read_rows(os.path.join(run, "jet_surface.csv"))
     surface = [r for r in all_surface if r["step"] in steps]
@@ -352,7 +356,7 @@ def analyse(run, t0=None, wave=None):
         kpk, apk = max(spec, key=lambda e: e[1])
         print(f"spectrum peak: ka = {kpk:.3f}, amplitude {apk:.3e} a")
         summary["spectrum_peak_ka"] = kpk
-    prof = (noise_along(run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0)
+    prof = (noise_along(run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0, t1)
             if sig > 0 else None)
     if prof:
         quiet = next((s0 for s0, v, _o in prof if v > 0.25), prof[-1][0] + 2.0)
@@ -412,14 +416,18 @@ def main(argv=None):
     ap.add_argument("run")
     ap.add_argument("--from", dest="t0", type=float, default=None,
                     help="first sample time [s] (default: twice the first breakup time: the start-up head gone)")
+    ap.add_argument("--to", dest="t1", type=float, default=None,
+                    help="last sample time [s] (default: the run's last sample)")
     ap.add_argument("--plot", default=None, help="write the envelope and the spectrum to this PNG")
     ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
     args = ap.parse_args(argv)
+    if args.t0 is not None and args.t1 is not None and args.t1 < args.t0:
+        ap.error(f"--to {args.t1:g} is before --from {args.t0:g}")
     if args.wave is not None and not 0.0 <= args.wave[0] < args.wave[1]:
         ap.error(f"--wave S0 S1 needs 0 <= S0 < S1 (d0), got {args.wave[0]:g} {args.wave[1]:g}")
     try:
-        got = analyse(args.run, args.t0, args.wave)
+        got = analyse(args.run, args.t0, args.wave, args.t1)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

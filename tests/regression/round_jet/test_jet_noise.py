@@ -31,6 +31,9 @@ on 0.1 d0 slices: the front must be found at the first slice past s_f in each sa
 fitted speed must be 300 d0/s within 1% (the slices round each position by less than 0.1 d0,
 over a 9 d0 travel), with no front found in the samples at or after the cut time.
 
+With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
+before `--from` refused with a message naming both.
+
 usage: test_jet_noise.py   (exit 0 on success, 1 with a message on failure)
 """
 import math
@@ -146,6 +149,25 @@ def check_front():
     return failures
 
 
+def check_to(d):
+    """--to: the first 200 samples (t <= 0.02995 s, 20 whole periods) must be read, with the same
+    k_s and C within the tolerances above; --to before --from must be refused. A list of failures."""
+    failures = []
+    out = subprocess.run([PY, TOOL, d, "--from", "0", "--to", "0.02995"], capture_output=True, text=True)
+    m = re.search(r"^SUMMARY (.*)$", out.stdout, re.M)
+    if out.returncode != 0 or not m:
+        return [f"--to: jet_noise.py exited {out.returncode} without a SUMMARY line: {out.stderr}"]
+    val = {k: float(v) for k, v in (kv.split("=") for kv in m.group(1).split())}
+    if val.get("samples") != 200:
+        failures.append(f"--to 0.02995 read {val.get('samples')} samples, built 200 up to then")
+    if not abs(val.get("k_s_per_d0", 0) / KS - 1) < 0.01 or not abs(val.get("C", 0) - math.log(1 / DELTA0)) < 0.05:
+        failures.append(f"--to: k_s {val.get('k_s_per_d0')}, C {val.get('C')}, built {KS}, {math.log(1 / DELTA0):.3f}")
+    out = subprocess.run([PY, TOOL, d, "--from", "0.03", "--to", "0.02"], capture_output=True, text=True)
+    if out.returncode == 0 or "--to 0.02 is before --from 0.03" not in out.stderr:
+        failures.append(f"--to before --from: exit {out.returncode}, stderr {out.stderr.strip()[-200:]}")
+    return failures
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -203,6 +225,7 @@ def main():
         close = [abs(float(prof.get(k, "nan")) - v) <= 5e-4 * v for k, v in want.items()]
         if len(prof) != 6 or not all(close):
             failures.append(f"noise profile {prof}, built 0.05 to 8 d0 and 2 to 12 d0 in six 2 d0 slices")
+        failures += check_to(d)
     failures += check_front()
     for f in failures:
         print("FAIL: " + f)
