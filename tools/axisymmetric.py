@@ -21,15 +21,17 @@ Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
   growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
                                         growth rate of the Fourier mode of r_s(z) vs Rayleigh
   roughness RUN --radius A --period L --dx DX [--sigma S --rho R0 --nu NU]
-                   r_s(z)'s departure from a cylinder, its n = 1 Fourier mode and the rest,
-                   and the motion inside the column beyond the surface's long modes
-  curvature RUN --radius A --wavelength L --eps E --dx DX
-                   the CSF curvature's response to a surface wave, per row, at t = 0
                                         a periodic column that should stay as built: the standard
                                         deviation of r_s(z) over slices of DX (the outermost
                                         particle per slice) per snapshot, its largest value over
                                         the run and its growth rate (fitted where it lies between
-                                        1e-9 and 1e-3 a) against Weber's fastest
+                                        1e-9 and 1e-3 a) against Weber's fastest; r_s's n = 1
+                                        Fourier mode and the rest (rest_linear_growth: fitted
+                                        while n = 1 is below 1e-3 a); the motion inside the
+                                        column beyond each row's n = 0 and 1 parts (interior_*)
+  curvature RUN --radius A --wavelength L --eps E --dx DX
+                                        the CSF curvature's response to a surface wave, per
+                                        row, at t = 0
 Each prints a line `SUMMARY key=value ...` (the format of `sphjet drop`), which
 tests/regression/surface_tension/check_drop.py can check with --analyse.
 """
