@@ -371,17 +371,16 @@ def roughness(a):
 
     def fit(y, lo):
         """Growth rate of ln y over the snapshots where lo < y < 1e-3 (the linear range)."""
-        m = (y > lo) & (y < 1e-3)
-        return float(np.polyfit(t[m], np.log(y[m]), 1)[0]) if m.sum() >= 3 else float("nan")
+        return log_rate(t, y, (y > lo) & (y < 1e-3))
 
     rate = fit(sd, 1e-9)
     # the modes: above 10 times their first nonzero value (past the start's relaxation)
     start = lambda y: 10.0 * float(y[y > 0][0]) if (y > 0).any() else 1e-9
     mode1_rate, rest_rate = fit(mode1, start(mode1)), fit(rest, start(rest))
-    # the rest while the n = 1 mode is linear (below 1e-3 a): past that its own harmonics,
-    # which are physics, fill the rest
-    lin1 = (mode1 < 1e-3) & (rest > 0)
-    rest_linear = float(np.polyfit(t[lin1], np.log(rest[lin1]), 1)[0]) if lin1.sum() >= 3 else float("nan")
+    # the rest and the interior while the n = 1 mode is linear (below 1e-3 a): past that its
+    # own harmonics, which are physics, fill both
+    linear1 = mode1 < 1e-3
+    rest_linear = log_rate(t, rest, linear1 & (rest > 0))
     weber = float("nan")
     if a.sigma > 0:
         scale = math.sqrt(a.sigma / (a.rho * a.radius ** 3))
@@ -398,11 +397,17 @@ def roughness(a):
           f"rest_growth={rest_rate:.4g} rest_linear_growth={rest_linear:.4g} rest_start={float(rest[0]) if len(rest) else float('nan'):.4g} "
           f"rest_end={float(rest[-1]) if len(rest) else float('nan'):.4g} "
           f"rest_ratio={float(rest[-1] / rest[0]) if len(rest) and rest[0] > 0 else float('nan'):.4g} "
-          f"rest_peak_ka={ka_peak:.3g}{interior_summary(t, inner, mode1)}")
+          f"rest_peak_ka={ka_peak:.3g}{interior_summary(t, inner, linear1)}")
     if a.table:
         for i, (ti, si, m1, ri) in enumerate(zip(t, sd, mode1, rest)):
             print(f"{ti:.5f} {si:.6e} {m1:.6e} {ri:.6e}" + (f" {inner[i]:.6e}" if inner is not None else ""))
     return 0
+
+
+def log_rate(t, y, m):
+    """Growth rate of ln y over the snapshots m (a mask; nan with fewer than 3)."""
+    import numpy as np
+    return float(np.polyfit(t[m], np.log(y[m]), 1)[0]) if m.sum() >= 3 else float("nan")
 
 
 def interior_motion(snaps, period, dx):
@@ -418,34 +423,33 @@ def interior_motion(snaps, period, dx):
     row = np.rint(np.abs(first["x"]) / dx - 0.5).astype(int)
     k = 2.0 * math.pi / period
     rows = [np.flatnonzero(row == i) for i in range(row.max())]   # the outermost row left out
-    basis = [np.stack([np.ones(len(m)), np.cos(k * first["z"][m]), np.sin(k * first["z"][m])], 1)
-             for m in rows]
+    # per row, the n = 0 and 1 modes along z and their least-squares pseudo-inverse (the same
+    # for every snapshot: built once)
+    off = []
+    for m in rows:
+        b = np.stack([np.ones(len(m)), np.cos(k * first["z"][m]), np.sin(k * first["z"][m])], 1)
+        off.append((b, np.linalg.pinv(b)))
+    n = sum(len(m) for m in rows)
     out = []
     for d in snaps:
         o = np.argsort(d["id"])
         if not np.array_equal(d["id"][o], first["id"]):
             return None
-        dr = np.abs(d["x"][o]) - np.abs(first["x"])
         dz = d["z"][o] - first["z"]
-        dz -= period * np.rint(dz / period)
-        ss, n = 0.0, 0
-        for m, b in zip(rows, basis):
-            for disp in (dr[m], dz[m]):
-                c = np.linalg.lstsq(b, disp, rcond=None)[0]
-                ss += float(np.sum((disp - b @ c) ** 2))
-            n += len(m)
+        disp = np.stack([np.abs(d["x"][o]) - np.abs(first["x"]), dz - period * np.rint(dz / period)], 1)
+        ss = sum(float(np.sum((disp[m] - b @ (pb @ disp[m])) ** 2)) for m, (b, pb) in zip(rows, off))
         out.append(math.sqrt(ss / n) / dx if n else 0.0)
     return np.array(out)
 
 
-def interior_summary(t, inner, mode1):
-    """The interior motion's first nonzero value, its last, and its growth rate fitted while the
-    n = 1 mode is below 1e-3 a (past that its harmonics move the interior too)."""
-    import numpy as np
+def interior_summary(t, inner, linear1):
+    """The interior motion's first nonzero value, its last, and its growth rate fitted over the
+    snapshots linear1 (where the n = 1 mode is below 1e-3 a; past that its harmonics move the
+    interior too)."""
     if inner is None or len(inner) < 2:
         return ""
-    m = (inner > 0) & (mode1 < 1e-3)
-    rate = float(np.polyfit(t[m], np.log(inner[m]), 1)[0]) if m.sum() >= 3 else float("nan")
+    m = (inner > 0) & linear1
+    rate = log_rate(t, inner, m)
     t_lin = float(t[m][-1]) if m.any() else float("nan")
     first = float(inner[inner > 0][0]) if (inner > 0).any() else float("nan")
     return (f" interior_start_over_dx={first:.4g} interior_end_over_dx={float(inner[-1]):.4g} "

@@ -47,6 +47,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
 TOOL = os.path.join(REPO, "tools", "jet_noise.py")
 PY = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+sys.path.insert(0, os.path.dirname(HERE))
+from summary_checks import summary  # noqa: E402  (tests/regression/)
 
 D0, U0, SIGMA, RHO, MU = 0.001194, 0.7814, 0.072, 1000.0, 1.0e-3
 A = D0 / 2
@@ -154,10 +156,9 @@ def check_to(d):
     k_s and C within the tolerances above; --to before --from must be refused. A list of failures."""
     failures = []
     out = subprocess.run([PY, TOOL, d, "--from", "0", "--to", "0.02995"], capture_output=True, text=True)
-    m = re.search(r"^SUMMARY (.*)$", out.stdout, re.M)
-    if out.returncode != 0 or not m:
+    val = summary(out.stdout)
+    if out.returncode != 0 or val is None:
         return [f"--to: jet_noise.py exited {out.returncode} without a SUMMARY line: {out.stderr}"]
-    val = {k: float(v) for k, v in (kv.split("=") for kv in m.group(1).split())}
     if val.get("samples") != 200:
         failures.append(f"--to 0.02995 read {val.get('samples')} samples, built 200 up to then")
     if not abs(val.get("k_s_per_d0", 0) / KS - 1) < 0.01 or not abs(val.get("C", 0) - math.log(1 / DELTA0)) < 0.05:
@@ -180,12 +181,10 @@ def main():
         if out.returncode != 0:
             print(f"FAIL: jet_noise.py exited {out.returncode}")
             return 1
-        m = re.search(r"^SUMMARY (.*)$", out.stdout, re.M)
-        if not m:
+        val = summary(out.stdout)
+        if val is None:
             print("FAIL: no SUMMARY line")
             return 1
-        got = dict(kv.split("=") for kv in m.group(1).split())
-        val = {k: float(v) for k, v in got.items()}
         c_true = math.log(1 / DELTA0)
         if not abs(val.get("k_s_per_d0", 0) / KS - 1) < 0.01:
             failures.append(f"k_s {val.get('k_s_per_d0')} per d0, built with {KS} (1%)")
