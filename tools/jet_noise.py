@@ -15,7 +15,8 @@ over the same times while one of them goes on.
 - fit: ln A(s) = ln(delta0) + k_s s over the growing stretch (from the smallest A after the
   first half d0 to where A first passes a/4): the spatial growth k_s, its temporal equivalent
   omega = k_s u0 (the jet carries the disturbance at u0), and the intercept delta0 at the
-  orifice. C = ln(a/delta0) is the constant of Weber's law L = u0 C / omega.
+  orifice. C = ln(a/delta0) is the constant of Weber's law L = u0 C / omega; C / k_s is where the
+  fitted line reaches a, the breakup length linear growth gives with the jet's own delta0 and k_s.
 - theory: Weber's (1931) viscous growth rate, the largest over ka and at the case's forcing
   wavenumber (nozzle.disturbance_ka), and the breakup length C u0 / omega_Weber that the
   measured C gives with it.
@@ -313,9 +314,10 @@ def analyse(run, t0=None, wave=None, t1=None):
         c_fit = -ln_d
         print(f"growth fit over s = {s0:.2f}-{s1:.2f} d0: k_s = {k:.4g} per d0 (one e-fold per {1 / k:.3g} d0), "
               f"omega = k_s u0 = {omega:.4g} 1/s = {omega * t_cap:.3f} / t_cap")
-        print(f"intercept at the orifice: delta0/a = {math.exp(ln_d):.3e}, C = ln(a/delta0) = {c_fit:.2f}")
+        print(f"intercept at the orifice: delta0/a = {math.exp(ln_d):.3e}, C = ln(a/delta0) = {c_fit:.2f}; "
+              f"the fitted line reaches a at s = C / k_s = {c_fit / k:.4g} d0")
         summary.update({"k_s_per_d0": k, "omega": omega, "omega_over_weber": omega * t_cap / w_max,
-                        "delta0_over_a": math.exp(ln_d), "C": c_fit})
+                        "delta0_over_a": math.exp(ln_d), "C": c_fit, "L_fit_over_d0": c_fit / k})
     else:
         print("growth fit: no growing stretch found (envelope too short or flat)")
     if c["round"] and sig > 0:

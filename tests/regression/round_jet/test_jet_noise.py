@@ -10,7 +10,8 @@ delta0 exp(k_s s) itself (sqrt(2) x the rms over whole periods of a sine), so th
 k_s and C = ln(a/delta0) = 9.21 to the sampling's error: the samples cover whole periods but the
 median about which the rms is taken is the sampled median, and the fit's ends sit on slices of
 0.1 d0. Tolerances: k_s within 1%, C within 0.05 (0.5%), well below what would change a
-reading of the diagnostic (a C of 3 against 18). The exit columns are constant (p = 130 +- 20
+reading of the diagnostic (a C of 3 against 18); where the fitted line reaches a, C / k_s = 11.5
+d0, within 1.5% (the two errors added). The exit columns are constant (p = 130 +- 20
 Pa, u_r 0.01 m/s): the medians must be those values in units of sigma/a and the capillary
 velocity, to the 6 digits of the SUMMARY line (1e-5 relative). The spectrum's peak must sit at the wave's ka = k d0 / 2 = 0.7 within one bin of its
 grid. Ten snapshots (snap_*.h5) hold jet particles whose pressure alternates about sigma/a by
@@ -190,6 +191,8 @@ def main():
             failures.append(f"k_s {val.get('k_s_per_d0')} per d0, built with {KS} (1%)")
         if not abs(val.get("C", 0) - c_true) < 0.05:
             failures.append(f"C {val.get('C')}, built with ln(1/{DELTA0}) = {c_true:.3f} (0.05)")
+        if not abs(val.get("L_fit_over_d0", 0) / (c_true / KS) - 1) < 0.015:
+            failures.append(f"L_fit {val.get('L_fit_over_d0')} d0, built C / k_s = {c_true / KS:.3f} (1.5%)")
         p_unit = SIGMA / A
         v_cap = math.sqrt(SIGMA / (RHO * A))
         if not abs(val["p_exit_mean_over_sigma_a"] - 130 / p_unit) < 1e-5 * 130 / p_unit:
