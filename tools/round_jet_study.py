@@ -72,9 +72,10 @@ L / d0 = C x + b with its R^2 to each. The paper's eq 37 is the same form with r
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
 `report --brief` prints each run in a few lines instead of the table: its length beside the
-measured one, eq 37 and Weber's law with the measurements' C, and beside Weber's length with the
+measured one, eq 37 and Weber's law with the measurements' C, beside Weber's length with the
 run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_noise.py over
-the window); its main drops beside Rayleigh's.
+the window), and beside where that fitted envelope reaches a (its own delta0 and growth); its
+main drops beside Rayleigh's.
 """
 import contextlib
 import csv
@@ -476,6 +477,8 @@ def brief(sdir, args, name, info, r, c_all):
         lines.append(f"  theory: Weber's L = u0 ln(a/delta0) / omega_max = {noise['L_weber_over_d0']:.1f}, with "
                      f"this run's disturbance at the orifice, delta0 = {noise['delta0_over_a']:.2g} a "
                      f"(tools/jet_noise.py; its growth is {noise['omega_over_weber']:.2f} of Weber's)")
+        lines.append(f"  with its own growth too: L = ln(a/delta0) / k_s = {noise['L_fit_over_d0']:.1f} (where the "
+                     f"fitted envelope reaches a)")
     else:
         lines.append(f"  theory: no fit of the disturbance's growth ({noise.get('error', 'no growing stretch')})")
     lines.append(f"  the paper's eq 37: {g['eq37']:.1f}; Weber's law L/d0 = C sqrt(We_d)(1 + 3 Oh_d) with the "

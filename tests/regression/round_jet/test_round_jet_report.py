@@ -259,6 +259,8 @@ def main():
         text = rjs.brief(os.path.dirname(syn), rjs.parse(["report"]), "mc_u0.7814", info, r, c_meas)
         check("theory: Weber's L = u0 ln(a/delta0) / omega_max = 30.5, with this run's disturbance at the "
               "orifice, delta0 = 0.0001 a" in text, f"the theory line: {text}")
+        check("with its own growth too: L = ln(a/delta0) / k_s = 11.5 (where" in text,
+              f"the own-growth line (9.21 / 0.8 per d0 built): {text}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
