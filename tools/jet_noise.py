@@ -30,6 +30,8 @@ over the same times while one of them goes on.
   case.toml, the axis order of each slice as well: its particles within 0.6 dx of the axis (the
   nozzle builds the innermost rings at dx/2) over the count of the nozzle's lattice stretched
   with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order.
+- at (--at S ...): the envelope at those distances (the nearest slice), so that the same
+  places can be compared over successive stretches of time (--from, --to).
 - start-up front (the samples before T): at each one the first slice past 1 d0 where r_s departs
   from a by more than 1e-3 a, the edge of the start-up's disturbance; the straight line through
   its positions over time gives the speed at which the front leaves the orifice (lab frame) and
@@ -255,11 +257,12 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
     return [(2.0 * b, median(v), median(order[b]) if b in order else None) for b, v in sorted(per.items())]
 
 
-def analyse(run, t0=None, wave=None, t1=None):
+def analyse(run, t0=None, wave=None, t1=None, at=()):
     """Prints the measures of the run directory `run` over its samples at t0 <= t <= t1 (t0 None:
     twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
-    read. NoiseError for a run without the files or samples it needs."""
+    read. at: distances s/d0 at which to print the envelope (the nearest slice). NoiseError for
+    a run without the files or samples it needs."""
     try:
         c = read_case(run)
     except (OSError, KeyError, tomllib.TOMLDecodeError) as e:
@@ -308,6 +311,14 @@ def analyse(run, t0=None, wave=None, t1=None):
                "p_exit_std_over_sigma_a": ps / p_unit, "ur_exit_rms_over_vcap": ur / v_cap}
     if env:
         print("envelope A/a at s/d0: " + ", ".join(f"{s:.2f}:{A:.2e}" for s, A, _ in env[:: max(1, len(env) // 16)]))
+    for s_at in at:
+        near = min(env, key=lambda e: abs(e[0] - s_at)) if env else None
+        width = env[1][0] - env[0][0] if len(env) > 1 else 1.0
+        if near is None or abs(near[0] - s_at) > 0.5 * width * (1 + 1e-6):   # a slice's half width
+            print(f"envelope at s = {s_at:g} d0: not reached by the intact jet in half of the samples")
+            continue
+        print(f"envelope at s = {s_at:g} d0 (slice {near[0]:.4g}): A/a = {near[1]:.3e}")
+        summary[f"A_at_{s_at:g}"] = near[1]
     if fit:
         k, ln_d, s0, s1 = fit
         omega = k / d0 * u0
@@ -421,6 +432,9 @@ def main(argv=None):
     ap.add_argument("--to", dest="t1", type=float, default=None,
                     help="last sample time [s] (default: the run's last sample)")
     ap.add_argument("--plot", default=None, help="write the envelope and the spectrum to this PNG")
+    ap.add_argument("--at", nargs="+", type=float, default=[], metavar="S",
+                    help="print the envelope A/a at these distances from the orifice [d0] (SUMMARY A_at_S): "
+                         "read over successive stretches of time, whether the disturbance at a place is steady")
     ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
     args = ap.parse_args(argv)
@@ -429,7 +443,7 @@ def main(argv=None):
     if args.wave is not None and not 0.0 <= args.wave[0] < args.wave[1]:
         ap.error(f"--wave S0 S1 needs 0 <= S0 < S1 (d0), got {args.wave[0]:g} {args.wave[1]:g}")
     try:
-        got = analyse(args.run, args.t0, args.wave, args.t1)
+        got = analyse(args.run, args.t0, args.wave, args.t1, args.at)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

@@ -11,7 +11,8 @@ k_s and C = ln(a/delta0) = 9.21 to the sampling's error: the samples cover whole
 median about which the rms is taken is the sampled median, and the fit's ends sit on slices of
 0.1 d0. Tolerances: k_s within 1%, C within 0.05 (0.5%), well below what would change a
 reading of the diagnostic (a C of 3 against 18); where the fitted line reaches a, C / k_s = 11.5
-d0, within 1.5% (the two errors added). The exit columns are constant (p = 130 +- 20
+d0, within 1.5% (the two errors added); with `--at 5.02 30` the envelope at the slice 5.05 d0
+within 1% of delta0 exp(k_s 5.05), and 30 d0 said to be out of reach. The exit columns are constant (p = 130 +- 20
 Pa, u_r 0.01 m/s): the medians must be those values in units of sigma/a and the capillary
 velocity, to the 6 digits of the SUMMARY line (1e-5 relative). The spectrum's peak must sit at the wave's ka = k d0 / 2 = 0.7 within one bin of its
 grid. Ten snapshots (snap_*.h5) hold jet particles whose pressure alternates about sigma/a by
@@ -177,7 +178,8 @@ def main():
     with tempfile.TemporaryDirectory() as d:
         write_run(d)
         write_snapshots(d)
-        out = subprocess.run([PY, TOOL, d, "--from", "0", "--wave", "0.5", "8"], capture_output=True, text=True)
+        out = subprocess.run([PY, TOOL, d, "--from", "0", "--wave", "0.5", "8", "--at", "5.02", "30"],
+                             capture_output=True, text=True)
         print(out.stdout + out.stderr)
         if out.returncode != 0:
             print(f"FAIL: jet_noise.py exited {out.returncode}")
@@ -191,6 +193,11 @@ def main():
             failures.append(f"k_s {val.get('k_s_per_d0')} per d0, built with {KS} (1%)")
         if not abs(val.get("C", 0) - c_true) < 0.05:
             failures.append(f"C {val.get('C')}, built with ln(1/{DELTA0}) = {c_true:.3f} (0.05)")
+        # --at: the slice nearest 5.02 d0 is 5.05; 30 d0 is beyond the profiles (12 d0)
+        a_built = DELTA0 * math.exp(KS * 5.05)
+        if not abs(val.get("A_at_5.02", 0) / a_built - 1) < 0.01 or "A_at_30" in val \
+                or "envelope at s = 30 d0: not reached" not in out.stdout:
+            failures.append(f"--at: A {val.get('A_at_5.02')} at 5.05 d0, built {a_built:.4g} (1%); 30 d0 not reached")
         if not abs(val.get("L_fit_over_d0", 0) / (c_true / KS) - 1) < 0.015:
             failures.append(f"L_fit {val.get('L_fit_over_d0')} d0, built C / k_s = {c_true / KS:.3f} (1.5%)")
         p_unit = SIGMA / A
