@@ -311,10 +311,10 @@ def analyse(run, t0=None, wave=None, t1=None, at=()):
                "p_exit_std_over_sigma_a": ps / p_unit, "ur_exit_rms_over_vcap": ur / v_cap}
     if env:
         print("envelope A/a at s/d0: " + ", ".join(f"{s:.2f}:{A:.2e}" for s, A, _ in env[:: max(1, len(env) // 16)]))
+    half = 0.5 * (env[1][0] - env[0][0] if len(env) > 1 else 1.0) * (1 + 1e-6)   # a slice's half width
     for s_at in at:
         near = min(env, key=lambda e: abs(e[0] - s_at)) if env else None
-        width = env[1][0] - env[0][0] if len(env) > 1 else 1.0
-        if near is None or abs(near[0] - s_at) > 0.5 * width * (1 + 1e-6):   # a slice's half width
+        if near is None or abs(near[0] - s_at) > half:
             print(f"envelope at s = {s_at:g} d0: not reached by the intact jet in half of the samples")
             continue
         print(f"envelope at s = {s_at:g} d0 (slice {near[0]:.4g}): A/a = {near[1]:.3e}")
