@@ -374,51 +374,25 @@ contains
     call row_phases(s)
   end subroutine build
 
-  !> s%row_order: the even rows by decreasing listed pairs, then the odd rows likewise (ties
-  !> by row), and the sweeps' counters (row_done, all 0). Which thread runs a row and when
-  !> changes no sum: rows of one parity write disjoint particles, an odd row waits for its
-  !> even neighbours, and each row's pairs are visited in its own order (traversal.f90).
+  !> The sweeps' row counters (row_done, all 0) and the listed pairs before each row
+  !> (row_cum), by which a team's sweep splits the rows among its threads (traversal.f90).
   subroutine row_phases(s)
     type(sorted_t), intent(inout) :: s
-    integer :: ncz, i, j, r, k
+    integer :: ncz, r
     ncz = s%grid%ncz
-    if (allocated(s%row_order)) then
-      if (size(s%row_order) < ncz) deallocate(s%row_order)
-    end if
-    if (.not. allocated(s%row_order)) allocate(s%row_order(ncz))
-    k = 0
-    do r = 0, ncz - 1, 2
-      k = k + 1
-      s%row_order(k) = r
-    end do
-    do r = 1, ncz - 1, 2
-      k = k + 1
-      s%row_order(k) = r
-    end do
-    call by_pairs(1, (ncz + 1) / 2)
-    call by_pairs((ncz + 1) / 2 + 1, ncz)
     if (allocated(s%row_done)) then
       if (size(s%row_done) < ncz) deallocate(s%row_done)
     end if
     if (.not. allocated(s%row_done)) allocate(s%row_done(0:ncz - 1))
     s%row_done = 0
-    s%next_task = 0
-    s%threads_out = 0
-  contains
-    !> Insertion sort of row_order(i0:i1) by decreasing listed pairs (stable).
-    subroutine by_pairs(i0, i1)
-      integer, intent(in) :: i0, i1
-      do i = i0 + 1, i1
-        r = s%row_order(i)
-        j = i - 1
-        do while (j >= i0)
-          if (s%rows(s%row_order(j))%n >= s%rows(r)%n) exit
-          s%row_order(j + 1) = s%row_order(j)
-          j = j - 1
-        end do
-        s%row_order(j + 1) = r
-      end do
-    end subroutine by_pairs
+    if (allocated(s%row_cum)) then
+      if (size(s%row_cum) < ncz + 1) deallocate(s%row_cum)
+    end if
+    if (.not. allocated(s%row_cum)) allocate(s%row_cum(0:ncz))
+    s%row_cum(0) = 0
+    do r = 0, ncz - 1
+      s%row_cum(r + 1) = s%row_cum(r) + s%rows(r)%n
+    end do
   end subroutine row_phases
 
 end module list_rebuild

@@ -52,16 +52,12 @@ module sorted_state
     ! the neighbour list: pairs of each row task (rows(0:grid%ncz-1)), build positions
     ! (particle order), and what the build saw
     type(row_list_t), allocatable :: rows(:)
-    !> The row tasks in the order a sweep hands them out: the even rows, then the odd ones
-    !> (an odd row waits for the even rows next to it), each by decreasing number of listed
-    !> pairs, so that the sweep ends on small tasks and the threads finish it together
-    !> (row_phases)
-    integer, allocatable :: row_order(:)
     !> Sweeps by a team (traversal.f90, sweep_thread): the row tasks each row has finished
-    !> since the last build (rows(0:ncz-1), all equal between sweeps), the number of tasks
-    !> handed out and of threads done handing out in the sweep under way
+    !> since the last build (rows(0:ncz-1), all equal between sweeps)
     integer, allocatable :: row_done(:)
-    integer :: next_task = 0, threads_out = 0
+    !> Listed pairs of the rows before each row (row_cum(0:ncz); row_cum(ncz) all of them):
+    !> where a team's sweep splits the rows among its threads (traversal.f90, row_chunk)
+    integer, allocatable :: row_cum(:)
     real(rp), allocatable :: xb(:), zb(:)
     logical :: built = .false.
     logical :: imaged = .false.            !< the list was built with image particles
