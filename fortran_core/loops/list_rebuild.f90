@@ -385,6 +385,7 @@ contains
     end if
     if (.not. allocated(s%row_done)) allocate(s%row_done(0:ncz - 1))
     s%row_done = 0
+    s%sweeps = 0
     if (allocated(s%row_cum)) then
       if (size(s%row_cum) < ncz + 1) deallocate(s%row_cum)
     end if

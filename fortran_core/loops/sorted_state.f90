@@ -53,8 +53,12 @@ module sorted_state
     ! (particle order), and what the build saw
     type(row_list_t), allocatable :: rows(:)
     !> Sweeps by a team (traversal.f90, sweep_thread): the row tasks each row has finished
-    !> since the last build (rows(0:ncz-1), all equal between sweeps)
+    !> since the last build (rows(0:ncz-1), all equal to sweeps between sweeps); the rows of
+    !> each parity each thread's block has handed out from its bottom and its top in the
+    !> sweep under way (claims(0:1, thread): bottom + 2**32 top); the threads done with it
     integer, allocatable :: row_done(:)
+    integer :: sweeps = 0, threads_out = 0
+    integer(8), allocatable :: claims(:, :)
     !> Listed pairs of the rows before each row (row_cum(0:ncz); row_cum(ncz) all of them):
     !> where a team's sweep splits the rows among its threads (traversal.f90, row_chunk)
     integer, allocatable :: row_cum(:)
@@ -241,6 +245,10 @@ contains
       if (size(s%lists) < nt) deallocate(s%lists)
     end if
     if (.not. allocated(s%lists)) allocate(s%lists(nt))
+    if (allocated(s%claims)) then
+      if (size(s%claims, 2) < nt) deallocate(s%claims)
+    end if
+    if (.not. allocated(s%claims)) allocate(s%claims(0:1, nt), source=0_8)
     if (allocated(s%part_na)) then
       if (size(s%part_na) < nt) deallocate(s%part_na, s%part_d2, s%part_same)
     end if

@@ -116,7 +116,7 @@ contains
     class(pair_body_t), intent(inout) :: body
     real(rp), intent(inout) :: red
     type(pair_list_t), pointer :: pl
-    integer :: row, me, nt, ncz, done, lo, hi, last_even
+    integer :: row, me, nt, ncz, done, parity, v, victim, out
     real(rp) :: mine
     me = 1
     nt = 1
@@ -135,39 +135,79 @@ contains
       red = max(red, mine)
       return
     end if
-    ! this thread's rows: a contiguous block holding about 1/nt of the listed pairs, so that
-    ! each thread keeps touching the same particles from sweep to sweep (row_chunk)
-    call row_chunk(s, me, nt, lo, hi)
-    if (hi >= lo) then
-      ! the count every row reaches in this sweep (all equal before it; only this thread
-      ! writes its rows' counts)
-      done = s%row_done(lo) + 1
-      ! its even rows, the last one first (the next block's odd row waits for it), then its
-      ! odd rows upwards (the first waits for the previous block's last even row)
-      last_even = hi - modulo(hi, 2)
-      if (last_even >= lo) call run_row(last_even)
-      do row = lo + modulo(lo, 2), last_even - 2, 2
-        call run_row(row)
+    ! the count every row reaches in this sweep: the sweeps so far plus one (sweeps is moved
+    ! on by the last thread out, after every thread has read it here)
+    !$omp atomic read
+    done = s%sweeps
+    !$omp end atomic
+    done = done + 1
+    ! the even rows, then the odd ones: first those of this thread's block, upwards, then
+    ! any left in the other blocks, taken from their top ends
+    do parity = 0, 1
+      do v = 0, nt - 1
+        victim = modulo(me - 1 + v, nt) + 1
+        do
+          call claim(victim, parity, v == 0, row)
+          if (row < 0) exit
+          if (parity == 1) then
+            call wait_row(row - 1)
+            if (row + 1 < ncz) call wait_row(row + 1)
+          end if
+          call visit_row(row)
+          !$omp flush
+          !$omp atomic write
+          s%row_done(row) = done
+        end do
       end do
-      do row = lo + 1 - modulo(lo, 2), hi, 2
-        call wait_row(row - 1)
-        if (row + 1 < ncz) call wait_row(row + 1)
-        call run_row(row)
-      end do
+    end do
+    ! the last thread out readies the claims for the next sweep
+    !$omp atomic capture
+    s%threads_out = s%threads_out + 1
+    out = s%threads_out
+    !$omp end atomic
+    if (out == nt) then
+      s%claims(:, 1:nt) = 0
+      s%threads_out = 0
+      !$omp atomic write
+      s%sweeps = done
     end if
     !$omp critical (sweep_max)
     red = max(red, mine)
     !$omp end critical (sweep_max)
     !$omp barrier
   contains
-    !> Row r's task in a team: visit it and count it done.
-    subroutine run_row(r)
-      integer, intent(in) :: r
-      call visit_row(r)
-      !$omp flush
-      !$omp atomic write
-      s%row_done(r) = done
-    end subroutine run_row
+    !> The next row of parity par in block b (row_chunk) not yet taken this sweep, from the
+    !> block's bottom (its own thread) or its top (another thread); -1 if none is left. Both
+    !> ends are counted in one word, bottom in the low half, top in the high half, and a
+    !> taker adds one to its half in a single atomic step: the values it sees before its add
+    !> say whether a row was left and which one is its.
+    subroutine claim(b, par, own, r)
+      integer, intent(in) :: b, par
+      logical, intent(in) :: own
+      integer, intent(out) :: r
+      integer(8), parameter :: TOP = 2_8**32
+      integer(8) :: was, add
+      integer :: b_lo, b_hi, first, n, n_bottom, n_top
+      call row_chunk(s, b, nt, b_lo, b_hi)
+      first = b_lo + modulo(par - b_lo, 2)
+      n = 0
+      if (first <= b_hi) n = (b_hi - first) / 2 + 1
+      r = -1
+      if (n == 0) return
+      add = merge(1_8, TOP, own)
+      !$omp atomic capture
+      was = s%claims(par, b)
+      s%claims(par, b) = s%claims(par, b) + add
+      !$omp end atomic
+      n_bottom = int(iand(was, TOP - 1))
+      n_top = int(ishft(was, -32))
+      if (n_bottom + n_top >= n) return
+      if (own) then
+        r = first + 2 * n_bottom
+      else
+        r = first + 2 * (n - 1 - n_top)
+      end if
+    end subroutine claim
     subroutine visit_row(r)
       integer, intent(in) :: r
       if (how /= SWEEP_FRESH) pl => s%cache(r)
