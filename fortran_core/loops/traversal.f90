@@ -9,10 +9,11 @@
 !> for the whole list with the kernel chosen outside the loop, W and F); the loop body
 !> (pair_body_t%visit) then does branch-free arithmetic over that list. A task on row r
 !> writes only rows r and r+1, so tasks on rows of one parity never touch the same particle
-!> and run in parallel without atomics on the sums. Each thread of a team takes a contiguous
-!> block of rows holding about its share of the listed pairs (row_chunk), runs its even rows,
-!> then its odd ones, and a task on odd row r starts once the tasks on even rows r - 1 and
-!> r + 1 have finished (sweep_thread; no barrier between the two halves).
+!> and run in parallel without atomics on the sums. Each thread of a team owns a contiguous
+!> block of rows holding about its share of the listed pairs (row_chunk) and runs its even
+!> rows, then its odd ones, taking what is left of the other blocks' rows of that parity
+!> from their tops once its own are done; a task on odd row r starts once the tasks on even
+!> rows r - 1 and r + 1 have finished (sweep_thread; no barrier between the two halves).
 !> Every particle therefore receives its contributions in a fixed order, whatever the
 !> thread count: results are bitwise independent of the number of threads.
 !>
@@ -104,11 +105,12 @@ contains
 
   !> One thread's share of a sweep, with the thread's own pair list (or the kept ones); red
   !> is shared by the team. Alone, a thread runs the even rows, then the odd ones. In a team,
-  !> each thread runs its block of rows (row_chunk): its even rows, then its odd ones. A task
-  !> on odd row r writes rows r and r + 1, which the tasks on the even rows r - 1 and r + 1
-  !> also write: it starts when those two have finished (not when every even row has, as a
-  !> barrier between two phases would have it). Each particle thus receives its contributions
-  !> in the same order, whatever the thread count and whichever thread runs a row.
+  !> each thread runs its block's even rows (row_chunk), then those left in the other blocks,
+  !> then the odd rows likewise (claim). A task on odd row r writes rows r and r + 1, which
+  !> the tasks on the even rows r - 1 and r + 1 also write: it starts when those two have
+  !> finished (not when every even row has, as a barrier between two phases would have it).
+  !> Each particle thus receives its contributions in the same order, whatever the thread
+  !> count and whichever thread runs a row.
   subroutine sweep_thread(s, kern, mode, how, body, red)
     type(sorted_t), intent(inout), target :: s
     type(kernel_t), intent(in) :: kern
