@@ -128,7 +128,7 @@ def cmd_run(args):
     todo = select_runs(plan(args.d0_over_dx, damping_sets(args)), [SET_NAME], args.only, args.sphjet, args.dry_run)
     title = f"forced jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g})"
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, os.path.join(REPO, BASE_CASE),
-                   args.sphjet, args.threads, args.tmax, args.dry_run, "forced_jet_study.py run", title, REPO)
+                   args.sphjet, args.threads, args.tmax, args.dry_run, "forced_jet_study.py run", title, REPO, args.parallel)
 
 
 # ---------------------------------------------------------------- analysis

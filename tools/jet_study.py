@@ -123,7 +123,7 @@ def cmd_run(args):
     title = (f"jet study: {len(todo)} run(s) in {sdir} (D0/dx = {D0 / args.dx:g}, "
              f"sets {', '.join(names)})")
     return run_all([(name, sets) for _set, name, sets in todo], sdir, case, args.sphjet,
-                   args.threads, args.tmax, args.dry_run, "jet_study.py run", title, REPO)
+                   args.threads, args.tmax, args.dry_run, "jet_study.py run", title, REPO, args.parallel)
 
 
 # ---------------------------------------------------------------- report: reading a run

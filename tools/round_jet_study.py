@@ -7,7 +7,7 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--cfl K]
       [--set-name mc paper]
-      [--only RUN ...] [--threads 2]
+      [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
@@ -283,7 +283,7 @@ def cmd_run(args):
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
-                   args.threads, args.tmax, args.dry_run, "round_jet_study.py run", title, REPO)
+                   args.threads, args.tmax, args.dry_run, "round_jet_study.py run", title, REPO, args.parallel)
 
 
 # ---------------------------------------------------------------- report

@@ -1,13 +1,13 @@
 """What the studies (tools/jet_study.py, tools/round_jet_study.py) share: running their runs
 with sphjet, and reading what a run wrote (run.log, jet.csv, drops.csv) into its summary.
 
-Running: one run at a time, resumable. A run is finished when the last part of its run.log
+Running: one run at a time (or N, --parallel N), resumable. A run is finished when the last part of its run.log
 (the lines from the last `sphjet ... starting|resuming`) has a `done:` line and no `stopped by
 signal` line (sphjet writes `done:` also when interrupted), or when it stopped on a state check
 (a blow-up is a result of the study, reported, not retried). An unfinished run resumes from
 DIR/checkpoint.h5 when there is one, else starts afresh (--force: a directory without a
 checkpoint holds nothing to keep). The first failure stops the study with the run's exit code
-and the end of its log. SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and
+and the end of its log (runs still going are stopped with a checkpoint). SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and
 exits; the study then exits with 128 + signal, and the next `run` resumes. One `run` per study
 directory at a time (a lock file, STUDY_DIR/.lock).
 
@@ -27,6 +27,7 @@ import shlex
 import signal
 import subprocess
 import sys
+import time
 
 
 class StudyError(Exception):
@@ -103,15 +104,29 @@ def study_parser(doc):
     return ap, ap.add_subparsers(dest="cmd", required=True)
 
 
+def at_least_one(text):
+    """argparse type: an integer >= 1."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, found {text!r}")
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, found {n}")
+    return n
+
+
 def add_run_arguments(p, set_names, repo):
     """The options of a study's `run` command, on the subparser p: --set-name (of set_names),
-    --only, --threads/-j, --sphjet (default: the build under repo), --dry-run, and a hidden
+    --only, --threads/-j, --parallel/-P, --sphjet (default: the build under repo), --dry-run, and a hidden
     --tmax that shortens every run (plumbing checks)."""
     p.add_argument("--set-name", action="extend", nargs="+", choices=set_names,
                    help="which sets to run (default: all)")
     p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
                    help="only these runs of the chosen sets (names as `run --dry-run` lists them)")
     p.add_argument("--threads", "-j", type=int, default=2, help="OpenMP threads per run (default 2)")
+    p.add_argument("--parallel", "-P", type=at_least_one, default=1, metavar="N",
+                   help="runs at a time (default 1). On 2 cores, `--parallel 2 --threads 1` makes two "
+                        "runs in 0.77 of the time that one after the other on two threads take")
     p.add_argument("--sphjet", default=os.path.join(repo, "build", "cpp_driver", "sphjet"),
                    help="sphjet binary (default: REPO/build/cpp_driver/sphjet)")
     p.add_argument("--dry-run", action="store_true", help="print the commands, run nothing")
@@ -219,10 +234,11 @@ def select_runs(full, names, only, sphjet, dry_run):
     return todo
 
 
-def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd):
+def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel=1):
     """Runs `todo` (a list of (name, [key=value overrides])) of the base case `case` in
-    sdir/NAME, one at a time, as the module says. tool: the command named in messages
-    ("jet_study.py run"); title: the first line printed; cwd: where sphjet runs.
+    sdir/NAME, `parallel` at a time, as the module says. tool: the command named in messages
+    ("jet_study.py run"); title: the first line printed; cwd: where sphjet runs. A failure
+    starts no more runs and stops the others with SIGTERM (each keeps a checkpoint).
     -> exit code."""
     lock = None
     if not dry_run:
@@ -236,16 +252,19 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd):
                              f"(lock {lock.name}); one at a time")
 
     got_signal = []
-    child = [None]
+    running = {}   # Popen -> (head, run_dir)
+
+    def send_all(sig):
+        for p in running:
+            if p.poll() is None:
+                try:
+                    p.send_signal(sig)
+                except ProcessLookupError:
+                    pass
 
     def forward(sig, _frame):
         got_signal.append(sig)
-        p = child[0]
-        if p is not None and p.poll() is None:
-            try:
-                p.send_signal(sig)
-            except ProcessLookupError:
-                pass
+        send_all(sig)
 
     if not dry_run:
         signal.signal(signal.SIGINT, forward)
@@ -254,52 +273,73 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd):
     m = len(todo)
     print(title, flush=True)
     n_done = n_run = 0
-    for k, (name, sets) in enumerate(todo, 1):
-        if got_signal:
-            break
-        run_dir = os.path.join(sdir, name)
-        state, argv = run_command(sphjet, case, run_dir, sets, threads, tmax)
-        head = f"[{k}/{m}] {name}"
-        if state == "done":
-            print(f"{head}: finished, skipped", flush=True)
-            n_done += 1
+    failed = None   # the exit code to return once the runs still going have stopped
+    queue = list(enumerate(todo, 1))
+    while queue or running:
+        while queue and len(running) < parallel and not got_signal and failed is None:
+            k, (name, sets) = queue.pop(0)
+            run_dir = os.path.join(sdir, name)
+            state, argv = run_command(sphjet, case, run_dir, sets, threads, tmax)
+            head = f"[{k}/{m}] {name}"
+            if state == "done":
+                print(f"{head}: finished, skipped", flush=True)
+                n_done += 1
+                continue
+            what = "resuming from its checkpoint" if state == "resume" else "starting"
+            print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
+            if dry_run:
+                continue
+            os.makedirs(os.path.dirname(run_dir), exist_ok=True)
+            try:
+                running[subprocess.Popen(argv, cwd=cwd)] = (head, run_dir)
+            except OSError as e:   # e.g. the binary replaced by a build while the study ran
+                send_all(signal.SIGTERM)
+                for p in running:
+                    p.wait()
+                raise StudyError(f"{head}: cannot start {argv[0]}: {e.strerror}; the runs made "
+                                 f"so far are kept, run `{tool}` again to go on (a study can use "
+                                 f"a copy of the binary: --sphjet PATH)")
+        if not running:
+            if got_signal or failed is not None or not queue:
+                break
             continue
-        what = "resuming from its checkpoint" if state == "resume" else "starting"
-        print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
-        if dry_run:
+        ended = [p for p in running if p.poll() is not None]
+        if not ended:
+            time.sleep(0.2)
             continue
-        os.makedirs(os.path.dirname(run_dir), exist_ok=True)
-        try:
-            child[0] = subprocess.Popen(argv, cwd=cwd)
-        except OSError as e:   # e.g. the binary replaced by a build while the study ran
-            raise StudyError(f"{head}: cannot start {argv[0]}: {e.strerror}; the runs made "
-                             f"so far are kept, run `{tool}` again to go on (a study can use "
-                             f"a copy of the binary: --sphjet PATH)")
-        rc = child[0].wait()
-        child[0] = None
-        log = os.path.join(run_dir, "run.log")
-        if got_signal:
-            sig = got_signal[0]
-            print(f"{head}: stopped by signal {sig} (sphjet exit {rc}); "
-                  f"run `{tool}` again to resume", file=sys.stderr, flush=True)
-            return 128 + sig
-        if rc != 0 and blew_up(run_dir):
-            # A blow-up is a result (reported by `report`); the study goes on.
-            print(f"{head}: blew up ({blew_up(run_dir)[:160]}); going on", flush=True)
+        for p in ended:
+            head, run_dir = running.pop(p)
+            rc = p.returncode
+            log = os.path.join(run_dir, "run.log")
+            if got_signal:
+                print(f"{head}: stopped by signal {got_signal[0]} (sphjet exit {rc}); "
+                      f"run `{tool}` again to resume", file=sys.stderr, flush=True)
+                continue
+            if rc != 0 and blew_up(run_dir):
+                # A blow-up is a result (reported by `report`); the study goes on.
+                print(f"{head}: blew up ({blew_up(run_dir)[:160]}); going on", flush=True)
+                n_run += 1
+                continue
+            if rc != 0 or not finished(run_dir):
+                if failed is None and running:
+                    send_all(signal.SIGTERM)   # they stop with a checkpoint
+                if rc != 0:
+                    print(f"{head}: FAILED with exit code {rc}; the end of {log}:\n{tail(log)}",
+                          file=sys.stderr, flush=True)
+                    if failed is None:
+                        failed = rc if 0 < rc < 256 else 1
+                else:
+                    print(f"{head}: sphjet exited 0 but {log} has no `done:` line; the end of it:\n"
+                          f"{tail(log)}", file=sys.stderr, flush=True)
+                    if failed is None:
+                        failed = 1
+                continue
             n_run += 1
-            continue
-        if rc != 0:
-            print(f"{head}: FAILED with exit code {rc}; the end of {log}:\n{tail(log)}",
-                  file=sys.stderr, flush=True)
-            return rc if 0 < rc < 256 else 1
-        if not finished(run_dir):
-            print(f"{head}: sphjet exited 0 but {log} has no `done:` line; the end of it:\n"
-                  f"{tail(log)}", file=sys.stderr, flush=True)
-            return 1
-        n_run += 1
-        print(f"{head}: done", flush=True)
+            print(f"{head}: done", flush=True)
     if got_signal:
         return 128 + got_signal[0]
+    if failed is not None:
+        return failed
     if dry_run:
         print(f"dry run: {m - n_done} of {m} run(s) to do")
     else:

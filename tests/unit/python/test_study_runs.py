@@ -157,6 +157,12 @@ class CommandLineTests(unittest.TestCase):
         self.assertEqual((ap.description, ap.epilog), ("First paragraph.", "The rest."))
         with redirect_stderr(io.StringIO()), self.assertRaises(SystemExit):
             ap.parse_args(["run", "--set-name", "c"])   # not a set of the study
+        self.assertEqual((args.parallel, ap.parse_args(["run", "--parallel", "2"]).parallel), (1, 2))
+        for bad in ("0", "two"):
+            err = io.StringIO()
+            with redirect_stderr(err), self.assertRaises(SystemExit):
+                ap.parse_args(["run", "--parallel", bad])
+            self.assertIn("expected an integer >= 1", err.getvalue())
 
 
 class RunAllTests(unittest.TestCase):
@@ -174,12 +180,32 @@ class RunAllTests(unittest.TestCase):
         os.environ.pop("FAKE_RC", None)
         self.tmp.cleanup()
 
-    def run_all(self, todo, dry_run=False):
+    def run_all(self, todo, dry_run=False, parallel=1):
         out, err = io.StringIO(), io.StringIO()
         with redirect_stdout(out), redirect_stderr(err):
             rc = sr.run_all(todo, self.sdir, "c.toml", self.sphjet, 1, None, dry_run,
-                            "study.py run", "a study", self.tmp.name)
+                            "study.py run", "a study", self.tmp.name, parallel)
         return rc, out.getvalue(), err.getvalue()
+
+    def test_two_at_a_time(self):
+        todo = [("r1", []), ("r2", []), ("r3", [])]
+        rc, out, _ = self.run_all(todo, parallel=2)
+        self.assertEqual(rc, 0)
+        for k in (1, 2, 3):
+            self.assertIn(f"[{k}/3] r{k}: done", out)
+            self.assertTrue(sr.finished(os.path.join(self.sdir, f"r{k}")))
+        self.assertIn("3 run(s) made, 0 already finished, 3 in all", out)
+        # the first two start before either is waited for
+        self.assertLess(out.index("[2/3] r2: starting"), out.index("[1/3] r1: done"))
+
+    def test_failure_with_two_at_a_time_starts_no_more(self):
+        os.environ["FAKE_RC"] = "3"
+        rc, out, err = self.run_all([("r1", []), ("r2", []), ("r3", [])], parallel=2)
+        self.assertEqual(rc, 3)
+        # both first runs fail; whichever ends first is reported with its code
+        self.assertIn(": FAILED with exit code 3", err)
+        self.assertNotIn("[3/3]", out)
+        self.assertFalse(os.path.exists(os.path.join(self.sdir, "r3")))
 
     def test_runs_then_skips(self):
         todo = [("r1", ["a=1"]), ("r2", [])]
