@@ -1,15 +1,16 @@
 """What the studies (tools/jet_study.py, tools/round_jet_study.py) share: running their runs
 with sphjet, and reading what a run wrote (run.log, jet.csv, drops.csv) into its summary.
 
-Running: one run at a time (or N, --parallel N), resumable. A run is finished when the last part of its run.log
-(the lines from the last `sphjet ... starting|resuming`) has a `done:` line and no `stopped by
-signal` line (sphjet writes `done:` also when interrupted), or when it stopped on a state check
-(a blow-up is a result of the study, reported, not retried). An unfinished run resumes from
-DIR/checkpoint.h5 when there is one, else starts afresh (--force: a directory without a
-checkpoint holds nothing to keep). The first failure stops the study with the run's exit code
-and the end of its log (runs still going are stopped with a checkpoint). SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and
-exits; the study then exits with 128 + signal, and the next `run` resumes. One `run` per study
-directory at a time (a lock file, STUDY_DIR/.lock).
+Running: one run at a time (N with --parallel N), resumable. A run is finished when the last
+part of its run.log (the lines from the last `sphjet ... starting|resuming`) has a `done:` line
+and no `stopped by signal` line (sphjet writes `done:` also when interrupted), or when it
+stopped on a state check (a blow-up is a result of the study, reported, not retried). An
+unfinished run resumes from DIR/checkpoint.h5 when there is one, else starts afresh (--force:
+a directory without a checkpoint holds nothing to keep). The first failure stops the study
+with the run's exit code and the end of its log; runs still going are stopped with a
+checkpoint. SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and exits; the
+study then exits with 128 + signal, and the next `run` resumes. One `run` per study directory
+at a time (a lock file, STUDY_DIR/.lock).
 
 Reading: run_summary starts a run's summary from its run.log and hands the rows of its jet.csv
 (one row a breakup check: time, step, broken, L_over_d0, ...) to the study's own reduction;
@@ -117,8 +118,8 @@ def at_least_one(text):
 
 def add_run_arguments(p, set_names, repo):
     """The options of a study's `run` command, on the subparser p: --set-name (of set_names),
-    --only, --threads/-j, --parallel/-P, --sphjet (default: the build under repo), --dry-run, and a hidden
-    --tmax that shortens every run (plumbing checks)."""
+    --only, --threads/-j, --parallel/-P, --sphjet (default: the build under repo), --dry-run,
+    and a hidden --tmax that shortens every run (plumbing checks)."""
     p.add_argument("--set-name", action="extend", nargs="+", choices=set_names,
                    help="which sets to run (default: all)")
     p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
