@@ -83,7 +83,7 @@ contains
                                  s%real_slot(1:s%n), s%cut2, &
                                  s%all_pairs, s%lists, s%rows, team=.true.)
           !$omp single
-          call row_phases(s)
+          call row_counters(s)
           s%rows_pending = .false.
           !$omp end single
         end if
@@ -371,12 +371,12 @@ contains
     end if
     call build_verlet_rows(s%grid, s%x(1:n), s%z(1:n), s%fluid(1:n), s%real_slot(1:n), &
                            s%cut2, s%all_pairs, s%lists, s%rows)
-    call row_phases(s)
+    call row_counters(s)
   end subroutine build
 
   !> The sweeps' row counters (row_done, all 0) and the listed pairs before each row
   !> (row_cum), by which a team's sweep splits the rows among its threads (traversal.f90).
-  subroutine row_phases(s)
+  subroutine row_counters(s)
     type(sorted_t), intent(inout) :: s
     integer :: ncz, r
     ncz = s%grid%ncz
@@ -394,6 +394,6 @@ contains
     do r = 0, ncz - 1
       s%row_cum(r + 1) = s%row_cum(r) + s%rows(r)%n
     end do
-  end subroutine row_phases
+  end subroutine row_counters
 
 end module list_rebuild

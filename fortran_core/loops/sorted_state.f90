@@ -60,7 +60,7 @@ module sorted_state
     integer :: sweeps = 0, threads_out = 0
     integer(8), allocatable :: claims(:, :)
     !> Listed pairs of the rows before each row (row_cum(0:ncz); row_cum(ncz) all of them):
-    !> where a team's sweep splits the rows among its threads (traversal.f90, row_chunk)
+    !> where a team's sweep splits the rows among its threads (traversal.f90, block_start)
     integer, allocatable :: row_cum(:)
     real(rp), allocatable :: xb(:), zb(:)
     logical :: built = .false.

@@ -10,7 +10,7 @@
 !> (pair_body_t%visit) then does branch-free arithmetic over that list. A task on row r
 !> writes only rows r and r+1, so tasks on rows of one parity never touch the same particle
 !> and run in parallel without atomics on the sums. Each thread of a team owns a contiguous
-!> block of rows holding about its share of the listed pairs (row_chunk) and runs its even
+!> block of rows holding about its share of the listed pairs (block_start) and runs its even
 !> rows, then its odd ones, taking what is left of the other blocks' rows of that parity
 !> from their tops once its own are done; a task on odd row r starts once the tasks on even
 !> rows r - 1 and r + 1 have finished (sweep_thread; no barrier between the two halves).
@@ -105,7 +105,7 @@ contains
 
   !> One thread's share of a sweep, with the thread's own pair list (or the kept ones); red
   !> is shared by the team. Alone, a thread runs the even rows, then the odd ones. In a team,
-  !> each thread runs its block's even rows (row_chunk), then those left in the other blocks,
+  !> each thread runs its block's even rows (block_start), then those left in the other blocks,
   !> then the odd rows likewise (claim). A task on odd row r writes rows r and r + 1, which
   !> the tasks on the even rows r - 1 and r + 1 also write: it starts when those two have
   !> finished (not when every even row has, as a barrier between two phases would have it).
@@ -118,7 +118,8 @@ contains
     class(pair_body_t), intent(inout) :: body
     real(rp), intent(inout) :: red
     type(pair_list_t), pointer :: pl
-    integer :: row, me, nt, ncz, done, parity, v, victim, out
+    integer :: row, me, nt, ncz, done, parity, v, victim, out, k
+    integer, allocatable :: starts(:)
     real(rp) :: mine
     me = 1
     nt = 1
@@ -143,6 +144,11 @@ contains
     done = s%sweeps
     !$omp end atomic
     done = done + 1
+    ! the threads' blocks: block b is rows starts(b - 1) .. starts(b) - 1
+    allocate(starts(0:nt))
+    do k = 0, nt
+      starts(k) = block_start(s, k, nt)
+    end do
     ! the even rows, then the odd ones: first those of this thread's block, upwards, then
     ! any left in the other blocks, taken from their top ends
     do parity = 0, 1
@@ -178,7 +184,7 @@ contains
     !$omp end critical (sweep_max)
     !$omp barrier
   contains
-    !> The next row of parity par in block b (row_chunk) not yet taken this sweep, from the
+    !> The next row of parity par in block b (starts) not yet taken this sweep, from the
     !> block's bottom (its own thread) or its top (another thread); -1 if none is left. Both
     !> ends are counted in one word, bottom in the low half, top in the high half, and a
     !> taker adds one to its half in a single atomic step: the values it sees before its add
@@ -189,11 +195,10 @@ contains
       integer, intent(out) :: r
       integer(8), parameter :: TOP = 2_8**32
       integer(8) :: was, add
-      integer :: b_lo, b_hi, first, n, n_bottom, n_top
-      call row_chunk(s, b, nt, b_lo, b_hi)
-      first = b_lo + modulo(par - b_lo, 2)
+      integer :: first, n, n_bottom, n_top
+      first = starts(b - 1) + modulo(par - starts(b - 1), 2)
       n = 0
-      if (first <= b_hi) n = (b_hi - first) / 2 + 1
+      if (first < starts(b)) n = (starts(b) - 1 - first) / 2 + 1
       r = -1
       if (n == 0) return
       add = merge(1_8, TOP, own)
@@ -232,41 +237,39 @@ contains
     end subroutine wait_row
   end subroutine sweep_thread
 
-  !> Thread me's rows (of nt) in a team's sweep: rows lo..hi, a contiguous block holding the
-  !> rows whose listed pairs start in the me-th nt-th of all of them (s%row_cum); the blocks
-  !> cover every row once. Contiguous blocks keep each thread on its own particles from sweep
-  !> to sweep, in its own core's cache: with rows handed out one at a time, a row's particles
-  !> went to either thread in turn, and two threads spent 1.7 times one thread's cpu time.
-  subroutine row_chunk(s, me, nt, lo, hi)
+  !> The first row of block k of nt in a team's sweep (0 for k = 0, ncz for k = nt): the
+  !> first row whose listed pairs start at or beyond k/nt of all of them (s%row_cum), so that
+  !> each block holds about 1/nt of the pairs. Contiguous blocks keep each thread on its own
+  !> particles from sweep to sweep, in its own core's cache: with rows handed out one at a
+  !> time, a row's particles went to either thread in turn, and two threads spent 1.7 times
+  !> one thread's cpu time.
+  pure integer function block_start(s, k, nt) result(r)
     type(sorted_t), intent(in) :: s
-    integer, intent(in) :: me, nt
-    integer, intent(out) :: lo, hi
-    integer :: ncz
+    integer, intent(in) :: k, nt
+    integer(8) :: b
+    integer :: l, u, m, ncz
     ncz = s%grid%ncz
-    lo = 0
-    if (me > 1) lo = first_row_from(me - 1)
-    hi = ncz - 1
-    if (me < nt) hi = first_row_from(me) - 1
-  contains
-    !> The first row whose pairs start at or beyond k/nt of all listed pairs (ncz if none).
-    integer function first_row_from(k) result(r)
-      integer, intent(in) :: k
-      integer(8) :: b
-      integer :: l, u, m
-      b = (int(s%row_cum(ncz), 8) * k + nt - 1) / nt
-      l = 0
-      u = ncz
-      do while (l < u)   ! row_cum is non-decreasing: bisect for the first row_cum >= b
-        m = (l + u) / 2
-        if (int(s%row_cum(m), 8) >= b) then
-          u = m
-        else
-          l = m + 1
-        end if
-      end do
-      r = l
-    end function first_row_from
-  end subroutine row_chunk
+    if (k <= 0) then
+      r = 0
+      return
+    end if
+    if (k >= nt) then
+      r = ncz
+      return
+    end if
+    b = (int(s%row_cum(ncz), 8) * k + nt - 1) / nt
+    l = 0
+    u = ncz
+    do while (l < u)   ! row_cum is non-decreasing: bisect for the first row_cum >= b
+      m = (l + u) / 2
+      if (int(s%row_cum(m), 8) >= b) then
+        u = m
+      else
+        l = m + 1
+      end if
+    end do
+    r = l
+  end function block_start
 
   !> The pairs of row task `row` (0-based) closer than sqrt(support2) now into pl: the
   !> row's neighbour list (list_rebuild.f90) filtered, in its order (cell west to east, a,
