@@ -300,10 +300,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                 raise StudyError(f"{head}: cannot start {argv[0]}: {e.strerror}; the runs made "
                                  f"so far are kept, run `{tool}` again to go on (a study can use "
                                  f"a copy of the binary: --sphjet PATH)")
-        if not running:
-            if got_signal or failed is not None or not queue:
-                break
-            continue
+        if not running:   # none left to start (all done, a failure or a signal)
+            break
         ended = [p for p in running if p.poll() is not None]
         if not ended:
             time.sleep(0.2)
