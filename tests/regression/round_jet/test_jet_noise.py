@@ -13,9 +13,9 @@ median about which the rms is taken is the sampled median, and the fit's ends si
 reading of the diagnostic (a C of 3 against 18); where the fitted line reaches a, C / k_s = 11.5
 d0, within 1.5% (the two errors added); with `--at 5.02 30` the envelope at the slice 5.05 d0
 within 1% of delta0 exp(k_s 5.05), and 30 d0 said to be out of reach. The exit columns are
-constant (p = 130 +- 20 Pa, u_r 0.01 m/s): the medians must be those values in units of sigma/a and the capillary
-velocity, to the 6 digits of the SUMMARY line (1e-5 relative). The spectrum's peak must sit at the wave's ka = k d0 / 2 = 0.7 within one bin of its
-grid. Ten snapshots (snap_*.h5) hold jet particles whose pressure alternates about sigma/a by
+constant (p = 130 +- 20 Pa, u_r 0.01 m/s): the medians must be those values in units of
+sigma/a and the capillary velocity, to the 6 digits of the SUMMARY line (1e-5 relative). The
+spectrum's peak must sit at the wave's ka = k d0 / 2 = 0.7 within one bin of its grid. Ten snapshots (snap_*.h5) hold jet particles whose pressure alternates about sigma/a by
 +-0.05 sigma/a up to s = 8 d0 and by +-2 sigma/a beyond, out to 14 d0 (and plug particles above
 the orifice): only the six 2 d0 slices below the orifice and above L = 12 d0 may count. The
 profile must be quiet to s = 8 d0 exactly, the noise must reach 4 d0 above the breakup, and
