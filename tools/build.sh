@@ -1,6 +1,13 @@
 #!/usr/bin/env bash
 # Configures and builds sphjet (Release, -O3 with link-time optimisation) into build/.
+# A build/ already configured for Release is not configured again (cmake --build does that by
+# itself when a CMakeLists.txt changes). Arguments: the targets to build, all by default (the
+# tests too); `bash tools/build.sh sphjet` builds the driver alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j "$(nproc)"
+if ! grep -qx "CMAKE_BUILD_TYPE:STRING=Release" build/CMakeCache.txt 2>/dev/null; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+fi
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+cmake --build build -j "$(nproc)" "${targets[@]}"

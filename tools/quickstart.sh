@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh
-bash tools/build.sh
+bash tools/build.sh sphjet   # the driver alone (tools/test.sh builds the tests)
 study=(--root runs/quickstart --eps 0 --axis-pair rings_fit --quiet-exit --artificial-alpha 0.02
        --reconstruct --sink 15 --d0-over-dx 6 --window 0.4)
 /usr/bin/python3 tools/round_jet_study.py run "${study[@]}" --only mc_u1.2545

@@ -1,16 +1,16 @@
 """What the studies (tools/jet_study.py, tools/round_jet_study.py) share: running their runs
 with sphjet, and reading what a run wrote (run.log, jet.csv, drops.csv) into its summary.
 
-Running: one run at a time (N with --parallel N), resumable. A run is finished when the last
-part of its run.log (the lines from the last `sphjet ... starting|resuming`) has a `done:` line
-and no `stopped by signal` line (sphjet writes `done:` also when interrupted), or when it
-stopped on a state check (a blow-up is a result of the study, reported, not retried). An
-unfinished run resumes from DIR/checkpoint.h5 when there is one, else starts afresh (--force:
-a directory without a checkpoint holds nothing to keep). The first failure stops the study
-with the run's exit code and the end of its log; runs still going are stopped with a
-checkpoint. SIGINT/SIGTERM are forwarded to sphjet, which writes a checkpoint and exits; the
-study then exits with 128 + signal, and the next `run` resumes. One `run` per study directory
-at a time (a lock file, STUDY_DIR/.lock).
+Running: one run at a time (N with --parallel N, each run's output lines then printed after its
+name), resumable. A run is finished when the last part of its run.log (the lines from the last
+`sphjet ... starting|resuming`) has a `done:` line and no `stopped by signal` line (sphjet
+writes `done:` also when interrupted), or when it stopped on a state check (a blow-up is a
+result of the study, reported, not retried). An unfinished run resumes from DIR/checkpoint.h5
+when there is one, else starts afresh (--force: a directory without a checkpoint holds nothing
+to keep). The first failure stops the study with the run's exit code and the end of its log;
+runs still going are stopped with a checkpoint. SIGINT/SIGTERM are forwarded to sphjet, which
+writes a checkpoint and exits; the study then exits with 128 + signal, and the next `run`
+resumes. One `run` per study directory at a time (a lock file, STUDY_DIR/.lock).
 
 Reading: run_summary starts a run's summary from its run.log and hands the rows of its jet.csv
 (one row a breakup check: time, step, broken, L_over_d0, ...) to the study's own reduction;
@@ -28,6 +28,7 @@ import shlex
 import signal
 import subprocess
 import sys
+import threading
 import time
 
 
@@ -235,11 +236,30 @@ def select_runs(full, names, only, sphjet, dry_run):
     return todo
 
 
+def prefixed_copy(stream, prefix, lock):
+    """Copies the lines of `stream` (a run's merged stdout and stderr) to this process's stdout
+    as they come, each after `prefix` (the run's name), in a thread of its own: the lines of runs
+    made side by side stay whole and say whose they are. -> the thread (ends at the stream's end)."""
+    out = sys.stdout
+
+    def copy():
+        for line in stream:
+            with lock:
+                out.write(prefix + line if line.endswith("\n") else prefix + line + "\n")
+                out.flush()
+        stream.close()
+
+    t = threading.Thread(target=copy, daemon=True)
+    t.start()
+    return t
+
+
 def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel=1):
     """Runs `todo` (a list of (name, [key=value overrides])) of the base case `case` in
     sdir/NAME, `parallel` at a time, as the module says. tool: the command named in messages
     ("jet_study.py run"); title: the first line printed; cwd: where sphjet runs. A failure
-    starts no more runs and stops the others with SIGTERM (each keeps a checkpoint).
+    starts no more runs and stops the others with SIGTERM (each keeps a checkpoint). With more
+    than one at a time, each run's output lines are printed after its name (prefixed_copy).
     -> exit code."""
     lock = None
     if not dry_run:
@@ -254,6 +274,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
 
     got_signal = []
     running = {}   # Popen -> (head, run_dir)
+    readers = {}   # Popen -> the thread that copies its output (parallel > 1)
+    out_lock = threading.Lock()
 
     def send_all(sig):
         for p in running:
@@ -292,7 +314,13 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                 continue
             os.makedirs(os.path.dirname(run_dir), exist_ok=True)
             try:
-                running[subprocess.Popen(argv, cwd=cwd)] = (head, run_dir)
+                if parallel == 1:   # sphjet's own output, its progress line on a terminal
+                    running[subprocess.Popen(argv, cwd=cwd)] = (head, run_dir)
+                else:
+                    p = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE,
+                                         stderr=subprocess.STDOUT, text=True, errors="replace")
+                    running[p] = (head, run_dir)
+                    readers[p] = prefixed_copy(p.stdout, f"{name}| ", out_lock)
             except OSError as e:   # e.g. the binary replaced by a build while the study ran
                 send_all(signal.SIGTERM)
                 for p in running:
@@ -308,6 +336,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             continue
         for p in ended:
             head, run_dir = running.pop(p)
+            if p in readers:
+                readers.pop(p).join()   # its last lines before what follows on its end
             rc = p.returncode
             log = os.path.join(run_dir, "run.log")
             if got_signal:

@@ -128,12 +128,15 @@ class RunCommandTests(unittest.TestCase):
 
 FAKE_SPHJET = """\
 #!/usr/bin/env python3
-# Stands in for sphjet run: writes a run.log of one part; exit code from FAKE_RC.
+# Stands in for sphjet run: a line on stdout and one on stderr, a run.log of one part; exit
+# code from FAKE_RC.
 import os, sys
 a = sys.argv[1:]
 out = a[a.index("--resume") + 1] if "--resume" in a else a[a.index("--out") + 1]
 os.makedirs(out, exist_ok=True)
 rc = int(os.environ.get("FAKE_RC", "0"))
+print("progress of " + os.path.basename(out), flush=True)
+print("a warning of " + os.path.basename(out), file=sys.stderr, flush=True)
 with open(os.path.join(out, "run.log"), "a") as f:
     f.write("sphjet 1 " + ("resuming" if "--resume" in a else "starting") + "\\n")
     if rc == 0:
@@ -197,6 +200,12 @@ class RunAllTests(unittest.TestCase):
         self.assertIn("3 run(s) made, 0 already finished, 3 in all", out)
         # the first two start before either is waited for
         self.assertLess(out.index("[2/3] r2: starting"), out.index("[1/3] r1: done"))
+        # each run's output (stdout and stderr) comes whole, after the run's name, before its end
+        for k in (1, 2, 3):
+            for line in (f"r{k}| progress of r{k}\n", f"r{k}| a warning of r{k}\n"):
+                self.assertEqual(out.count(line), 1)
+                self.assertLess(out.index(line), out.index(f"[{k}/3] r{k}: done"))
+        self.assertEqual(out.count("progress of"), 3)
 
     def test_failure_with_two_at_a_time_starts_no_more(self):
         os.environ["FAKE_RC"] = "3"
