@@ -101,6 +101,12 @@ PAPER_U0S = (0.07, 0.17, 0.20, 0.25)
 RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the fastest-growing wave
 LENGTH_TOL = 0.20     # the breakup lengths' target: within 20% of the measured ones
 WINDOW_T_FACTOR, WINDOW_LENGTH = 1.5, 1.0    # the window's start and (default) length, in L_ref / U
+# --own-window: the window starts at the first sample t with t >= OWN_START L / U, L the run's own
+# mean length from t on (at least OWN_MIN_D0 d0): the study's jets reach their steady lengths at
+# 1.5-1.8 of their own L / U (cases/round_jet/README.md); a run is sized for OWN_MIN_D0 d0 and
+# made longer (resumed with a later end, at least OWN_GROWTH times the last) until its window is
+# W L / U long. Breakup checks every L_ref / (OWN_CHECKS U), whatever the run's end.
+OWN_START, OWN_MIN_D0, OWN_GROWTH, OWN_CHECKS = 1.75, 10.0, 1.25, 200
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -188,13 +194,21 @@ def box_below(l_ref, d0):
     return BOX_L_FACTOR * l_ref + 10.0 * d0
 
 
-def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH):
+def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False):
     """The overrides that size one run: nozzle length, box, orifice height, end time, sampling.
     refill: a nozzle of REFILL_NOZZLE d0 that refills (nozzle.refill) instead of one that holds
     the fluid of the whole run; window: the window's length in L_ref / U (the run ends at
-    WINDOW_T_FACTOR + window of them)."""
+    WINDOW_T_FACTOR + window of them); own: --own-window's first end and checks (own_window)."""
     dx = d0 / n
     t_end = (WINDOW_T_FACTOR + window) * l_ref / u
+    if own:
+        t_end = (OWN_START + window) * OWN_MIN_D0 * d0 / u
+        return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
+                f"nozzle.length_over_d0={REFILL_NOZZLE:g}", f"nozzle.z0={box_below(l_ref, d0):.9g}",
+                f"domain.lz={box_below(l_ref, d0) + REFILL_NOZZLE * d0 + 2.0 * dx:.9g}",
+                f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
+                f"breakup.check_every={own_check_every(l_ref, u):.4g}",
+                f"time.out={20 * own_check_every(l_ref, u):.4g}", "nozzle.refill=true"]
     nozzle = REFILL_NOZZLE if refill else u * t_end / d0 + 2.0
     below = box_below(l_ref, d0)
     z0 = below
@@ -204,6 +218,44 @@ def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH):
             f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
             f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"] + \
         (["nozzle.refill=true"] if refill else [])
+
+
+def own_check_every(l_ref, u):
+    """--own-window's interval between breakup checks [s]."""
+    return l_ref / (OWN_CHECKS * u)
+
+
+def own_window(rows, u, d0, window):
+    """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
+    W). The window starts at the first broken sample t_j with t_j >= OWN_START L_j / U, L_j the
+    mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
+    needs the run to reach t_j + W L_j / U. -> dict start (t_j, None when no sample qualifies
+    yet), L (L_j in d0), need (the end [s] the window needs; without a start, the end that a
+    window of the longest recent length would need, at least OWN_GROWTH times the last
+    sample's time)."""
+    broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
+    tail_sum = 0.0
+    sums = []
+    for _t, l in reversed(broken):
+        tail_sum += l
+        sums.append(tail_sum)
+    sums.reverse()
+    for j, (t, _l) in enumerate(broken):
+        mean = sums[j] / (len(broken) - j)
+        tau = max(mean, OWN_MIN_D0) * d0 / u
+        if t >= OWN_START * tau:
+            return {"start": t, "L": mean, "need": t + window * tau}
+    recent = [l for _t, l in broken[-10:]]
+    longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
+    t_last = float(rows[-1]["time"]) if rows else 0.0
+    return {"start": None, "L": None,
+            "need": max((OWN_START + window) * longest * d0 / u, OWN_GROWTH * t_last)}
+
+
+def own_cap(info, window):
+    """--own-window: the latest end [s] a run is made longer to (a window of a jet as long as
+    the box)."""
+    return (OWN_START + window) * info["box"] / info["U"]
 
 
 def plan(opts):
@@ -217,17 +269,19 @@ def plan(opts):
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct: the damping
     (study_runs.damping_sets)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
-    eps, n, window = opts.eps, opts.d0_over_dx, opts.window
+    eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
-        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet, window),
-                     {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, D0_MC)}))
+        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet, window, own),
+                     {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, D0_MC),
+                      "own": own, "W": window}))
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
-        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window) + ["fluid.c0=4"],
-                     {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER)}))
+        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window, own) + ["fluid.c0=4"],
+                     {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER),
+                      "own": own, "W": window}))
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
         extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
@@ -260,6 +314,7 @@ def study_flags(opts):
             + (" --quiet-exit" if opts.quiet_exit else "") + damping_flags(opts)
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
+            + (" --own-window" if opts.own_window else "")
             + ("" if opts.cfl is None else f" --cfl {opts.cfl:g}"))
 
 
@@ -271,6 +326,7 @@ def study_dir(opts):
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
             + damping_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
+            + ("_own" if opts.own_window else "")
             + ("" if opts.cfl is None else f"_cfl{opts.cfl:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
@@ -282,8 +338,32 @@ def cmd_run(args):
     todo = select_runs(plan(args), names, args.only, args.sphjet, args.dry_run)
     title = (f"round jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g}, "
              f"disturbance {args.eps:g}, sets {', '.join(names)})")
+    infos = {name: info for _s, name, _sets, info in todo}
+
+    def more_time(name, run_dir):
+        """--own-window: (the end a finished run's window needs, why), or None when it has it
+        (or cannot have it: a blow-up, no rows, past own_cap)."""
+        info = infos[name]
+        try:
+            rows = read_csv(os.path.join(run_dir, "jet.csv"))
+        except (OSError, ValueError):
+            return None
+        if not rows or blew_up(run_dir):
+            return None
+        ow = own_window(rows, info["U"], info["d0"], args.window)
+        every = own_check_every(info["L_ref"], info["U"])
+        if float(rows[-1]["time"]) >= ow["need"] - every:
+            return None
+        end = ow["need"] + every
+        if end > own_cap(info, args.window):
+            return None
+        why = ("no window yet" if ow["start"] is None else
+               f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far")
+        return end, why
+
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
-                   args.threads, args.tmax, args.dry_run, "round_jet_study.py run", title, REPO, args.parallel)
+                   args.threads, args.tmax, args.dry_run, "round_jet_study.py run", title, REPO, args.parallel,
+                   more_time if args.own_window and args.tmax is None else None)
 
 
 # ---------------------------------------------------------------- report
@@ -304,14 +384,27 @@ def read_run(run_dir, info):
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
     t0 = window_start(info)
+    r["t0"] = t0
+    own_short = []   # --own-window: the end the window still needs [s], when the run is short of it
 
     def first_and_window(rows):
+        nonlocal t0
+        if info.get("own"):
+            ow = own_window(rows, info["U"], info["d0"], info["W"])
+            every = own_check_every(info["L_ref"], info["U"])
+            if ow["start"] is None or float(rows[-1]["time"]) < ow["need"] - every:
+                own_short.append(ow["need"])
+                return first_breakup(rows), []
+            t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
 
     got = run_summary(run_dir, r, first_and_window)
     if got is None:
         return r
     first, window = got
+    if own_short:
+        r["notes"].append(f"its own window needs the run to reach t = {own_short[0]:.4g} s "
+                          f"(`round_jet_study.py run ... --own-window` makes it longer)")
     if first is not None:
         r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
     r["n_window"] = len(window)
@@ -357,6 +450,8 @@ def read_run(run_dir, info):
     if boom:
         r["status"] = "blew up"
         r["notes"].append(boom)
+    elif r["finished"] and own_short:
+        r["status"] = "unfinished (its own window not reached)"
     elif r["finished"]:
         r["status"] = "finished" if r["L"] is not None else "finished, no steady breakup"
     else:
@@ -458,7 +553,7 @@ def brief(sdir, args, name, info, r, c_all):
     length beside the measurement and the theory (c_all: measured_c()), its drops beside
     Rayleigh's."""
     g = groups(info["U"], info["d0"])
-    t0 = window_start(info)
+    t0 = r.get("t0", window_start(info))
     lines = [f"{name}: U = {info['U']:g} m/s (We_d = {g['We_d']:.3g}, Oh_d = {g['Oh_d']:.2g}), "
              f"d0/dx = {args.d0_over_dx:g}, {r['status']}"]
     if r["L"] is None:
@@ -544,6 +639,11 @@ def parse(argv=None):
         p.add_argument("--window", type=float, default=WINDOW_LENGTH, metavar="W",
                        help=f"the window's length in L_ref / U: every run ends at {WINDOW_T_FACTOR:g} + W of "
                             f"them (default {WINDOW_LENGTH:g}; suffix _wW)")
+        p.add_argument("--own-window", action="store_true",
+                       help=f"each run's window from its own length: from the first sample at t >= "
+                            f"{OWN_START:g} L / U (L its mean from there on), W L / U long; runs are "
+                            f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it (needs "
+                            f"--quiet-exit's refilling nozzle; suffix _own)")
         p.add_argument("--cfl", type=float, default=None, metavar="K",
                        help="time.cfl = K in every run: the Courant number of the variable step "
                             "(default: the case's, 0.2; suffix _cflK)")
@@ -573,6 +673,9 @@ def parse(argv=None):
         ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
+    if args.own_window and not args.quiet_exit:
+        ap.error("--own-window makes runs longer than they were started for: it needs --quiet-exit's "
+                 "refilling nozzle")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
     check_damping(ap, args)

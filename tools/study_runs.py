@@ -254,13 +254,14 @@ def prefixed_copy(stream, prefix, lock):
     return t
 
 
-def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel=1):
+def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel=1, more_time=None):
     """Runs `todo` (a list of (name, [key=value overrides])) of the base case `case` in
     sdir/NAME, `parallel` at a time, as the module says. tool: the command named in messages
     ("jet_study.py run"); title: the first line printed; cwd: where sphjet runs. A failure
     starts no more runs and stops the others with SIGTERM (each keeps a checkpoint). With more
     than one at a time, each run's output lines are printed after its name (prefixed_copy).
-    -> exit code."""
+    more_time(name, run_dir): for a finished run, None, or (t, why) when it is to go on to the
+    end t [s] (it resumes with --tmax t; asked again when that part ends). -> exit code."""
     lock = None
     if not dry_run:
         os.makedirs(sdir, exist_ok=True)
@@ -273,7 +274,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                              f"(lock {lock.name}); one at a time")
 
     got_signal = []
-    running = {}   # Popen -> (head, run_dir)
+    running = {}   # Popen -> (head, run_dir, its queue entry)
+    asked = {}     # name -> more_time's answer for a run that has just ended
     readers = {}   # Popen -> the thread that copies its output (parallel > 1)
     out_lock = threading.Lock()
 
@@ -304,22 +306,29 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             run_dir = os.path.join(sdir, name)
             state, argv = run_command(sphjet, case, run_dir, sets, threads, tmax)
             head = f"[{k}/{m}] {name}"
+            longer = asked.pop(name, None)
+            if longer is None and state == "done" and more_time:
+                longer = more_time(name, run_dir)
+            if longer:
+                state, argv = "longer", [sphjet, "run", "--resume", run_dir, "-j", str(threads),
+                                         "--tmax", f"{longer[0]:.6g}"]
             if state == "done":
                 print(f"{head}: finished, skipped", flush=True)
                 n_done += 1
                 continue
-            what = "resuming from its checkpoint" if state == "resume" else "starting"
+            what = {"resume": "resuming from its checkpoint", "new": "starting",
+                    "longer": f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer else ""}[state]
             print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
             if dry_run:
                 continue
             os.makedirs(os.path.dirname(run_dir), exist_ok=True)
             try:
                 if parallel == 1:   # sphjet's own output, its progress line on a terminal
-                    running[subprocess.Popen(argv, cwd=cwd)] = (head, run_dir)
+                    running[subprocess.Popen(argv, cwd=cwd)] = (head, run_dir, (k, (name, sets)))
                 else:
                     p = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE,
                                          stderr=subprocess.STDOUT, text=True, errors="replace")
-                    running[p] = (head, run_dir)
+                    running[p] = (head, run_dir, (k, (name, sets)))
                     readers[p] = prefixed_copy(p.stdout, f"{name}| ", out_lock)
             except OSError as e:   # e.g. the binary replaced by a build while the study ran
                 send_all(signal.SIGTERM)
@@ -335,7 +344,7 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             time.sleep(0.2)
             continue
         for p in ended:
-            head, run_dir = running.pop(p)
+            head, run_dir, entry = running.pop(p)
             if p in readers:
                 readers.pop(p).join()   # its last lines before what follows on its end
             rc = p.returncode
@@ -362,6 +371,11 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                           f"{tail(log)}", file=sys.stderr, flush=True)
                     if failed is None:
                         failed = 1
+                continue
+            longer = more_time(entry[1][0], run_dir) if more_time else None
+            if longer:
+                asked[entry[1][0]] = longer
+                queue.insert(0, entry)   # made longer next, before the runs not yet started
                 continue
             n_run += 1
             print(f"{head}: done", flush=True)

@@ -4,7 +4,8 @@ the breakup length is the mean of L over the window t >= 1.5 L_ref / U and needs
 there broken; the fits of L/d0 = C x (x = sqrt(We_d)(1 + 3 Oh_d)) are least squares through the
 origin; the groups are the diameter ones; missing runs are listed; `run --dry-run` sizes a run
 as its docstring says; `report --only --brief` prints the chosen run in lines (its theory line
-checked on test_jet_noise.py's synthetic run, whose answer is known).
+checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
+window from a run's own length (own_window, on a synthetic jet that grows and then holds).
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -261,6 +262,55 @@ def main():
               "orifice, delta0 = 0.0001 a" in text, f"the theory line: {text}")
         check("with its own growth too: L = ln(a/delta0) / k_s = 11.5 (where" in text,
               f"the own-growth line (9.21 / 0.8 per d0 built): {text}")
+        # --own-window: the window from the run's own length (own_window's docstring). A jet at
+        # 0.7814 m/s grows at 0.7 U to 55 d0 (t = 0.12 s), then holds it: tau = 55 d0 / U =
+        # 0.084043 s; the window's first sample is the first at t >= 1.75 tau = 0.14707 s,
+        # 0.148 s (checks every 1 ms), and it needs the run to reach 0.148 + 0.5 tau = 0.19002 s.
+        d0, u = 0.001194, 0.7814
+        tau = 55 * d0 / u
+        grow = [{"time": f"{k / 1000:.3f}", "broken": "1",
+                 "L_over_d0": f"{min(55.0, 0.7 * u * (k / 1000) / d0):.6f}"} for k in range(5, 251)]
+        ow = rjs.own_window(grow, u, d0, 0.5)
+        check(ow["start"] == 0.148 and abs(ow["L"] - 55) < 1e-9 and abs(ow["need"] - (0.148 + 0.5 * tau)) < 1e-12,
+              f"own window of the growing jet: {ow}")
+        # cut at 0.13 s: no sample qualifies; the window a 55 d0 jet needs, 2.25 tau = 0.18910 s
+        # (more than 1.25 times 0.13 s, the least a run is made longer by)
+        ow = rjs.own_window(grow[:126], u, d0, 0.5)
+        check(ow["start"] is None and abs(ow["need"] - 2.25 * tau) < 1e-12, f"own window not yet: {ow}")
+        # a jet of 4 d0 at 0.3441 m/s is taken as 10 d0 long: from 1.75 x 0.034698 s, 0.061 s
+        slow = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "4"} for k in range(10, 120)]
+        ow = rjs.own_window(slow, 0.3441, d0, 0.5)
+        check(ow["start"] == 0.061 and abs(ow["need"] - (0.061 + 5 * d0 / 0.3441)) < 1e-12,
+              f"own window of a short jet: {ow}")
+        # the runs: sized for 10 d0 (2.25 x 10 d0 / U), checks every L_ref / (200 U), a
+        # refilling nozzle, in a directory of its own; without --quiet-exit refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--axis-pair",
+                            "rings_fit", "--quiet-exit", "--window", "0.5", "--own-window", "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check(f"time.tmax={2.25 * 10 * d0 / u:.6g}" in p.stdout
+              and f"breakup.check_every={67.52 * d0 / (200 * u):.4g}" in p.stdout
+              and "nozzle.refill=true" in p.stdout and "_quiet_w0.5_own" in p.stdout, f"--own-window: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--own-window"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--quiet-exit" in p.stderr, f"--own-window alone: {p.stderr}")
+        # report: the grown jet to 0.25 s has its window (from 0.148 s: 103 samples of 55 d0); the
+        # same lengths at 1.0179 m/s (tau = 0.064517 s) to 0.14 s fall short of the window's
+        # 1.75 tau + 0.5 tau = 0.1452 s: unfinished
+        osdir = os.path.join(root, "eps0.01_n10_rings_fit_quiet_w0.5_own")
+        for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136])):
+            fake_run(os.path.join(osdir, name), [(float(x["time"]), k, 1, float(x["L_over_d0"]))
+                                                 for k, x in enumerate(rows)])
+        p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", os.path.join(tmp, "own"), "--no-figures",
+                            "--axis-pair", "rings_fit", "--quiet-exit", "--window", "0.5", "--own-window"],
+                           capture_output=True, text=True)
+        check(p.returncode == 0, f"report --own-window: {p.stderr}")
+        with open(os.path.join(tmp, "own", "round_jets.csv")) as f:
+            rows = {r["run"]: r for r in csv.DictReader(f)}
+        r = rows.get("mc_u0.7814", {})
+        check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "103",
+              f"own window's length: {r}")
+        r = rows.get("mc_u1.0179", {})
+        check(r.get("status") == "unfinished (its own window not reached)" and r.get("L/d0 SPH (std)") == "- (-)",
+              f"short of its own window: {r}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)

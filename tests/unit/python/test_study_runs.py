@@ -207,6 +207,41 @@ class RunAllTests(unittest.TestCase):
                 self.assertLess(out.index(line), out.index(f"[{k}/3] r{k}: done"))
         self.assertEqual(out.count("progress of"), 3)
 
+    def test_made_longer_until_more_time_says_no(self):
+        # r1 wants two more parts (to t = 0.2, then 0.3), asked after each; r2 none; with the
+        # runs done, a second `run` asks again and makes r1 longer once more
+        asked, ends = [], {"r1": [0.2, 0.3]}
+
+        def more_time(name, run_dir):
+            asked.append(name)
+            left = ends.get(name)
+            return (left.pop(0), "its window") if left else None
+
+        out, err = io.StringIO(), io.StringIO()
+        with redirect_stdout(out), redirect_stderr(err):
+            rc = sr.run_all([("r1", []), ("r2", [])], self.sdir, "c.toml", self.sphjet, 1, None, False,
+                            "study.py run", "a study", self.tmp.name, 1, more_time)
+        out = out.getvalue()
+        self.assertEqual(rc, 0)
+        self.assertIn("[1/2] r1: going on to t = 0.2 s (its window)", out)
+        self.assertIn("[1/2] r1: going on to t = 0.3 s (its window)", out)
+        self.assertIn("--tmax 0.3", out)
+        # r1 ends before r2 starts; each is counted once
+        self.assertLess(out.index("[1/2] r1: done"), out.index("[2/2] r2: starting"))
+        self.assertIn("2 run(s) made, 0 already finished, 2 in all", out)
+        self.assertEqual(asked, ["r1", "r1", "r1", "r2"])
+        log = os.path.join(self.sdir, "r1", "run.log")
+        with open(log) as f:
+            self.assertEqual(f.read().count("resuming"), 2)
+        ends["r1"] = [0.4]
+        out = io.StringIO()
+        with redirect_stdout(out), redirect_stderr(io.StringIO()):
+            rc = sr.run_all([("r1", []), ("r2", [])], self.sdir, "c.toml", self.sphjet, 1, None, False,
+                            "study.py run", "a study", self.tmp.name, 1, more_time)
+        self.assertEqual(rc, 0)
+        self.assertIn("[1/2] r1: going on to t = 0.4 s", out.getvalue())
+        self.assertIn("[2/2] r2: finished, skipped", out.getvalue())
+
     def test_failure_with_two_at_a_time_starts_no_more(self):
         os.environ["FAKE_RC"] = "3"
         rc, out, err = self.run_all([("r1", []), ("r2", []), ("r3", [])], parallel=2)
