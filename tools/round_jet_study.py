@@ -5,14 +5,14 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--cfl K]
-      [--set-name mc paper]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--own-window]
+      [--cfl K] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--cfl K]
-      [--out cases/round_jet]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--own-window]
+      [--cfl K] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -59,7 +59,13 @@ rings, at one check) are skipped and counted when they are at most 5% of the win
 and the run has no steady length. Its standard deviation over the
 window is given beside it, the means over the first and the second half of the window's
 samples (a length still drifting shows as two means apart), and the number of samples in the
-window (fewer where a run stopped within it). Drops (equivalent sphere diameters, satellites
+window (fewer where a run stopped within it). With --own-window (needs --quiet-exit; suffix
+_own) a run's window comes from its own length instead (own_window): from the first sample at
+t >= 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
+W L / U later; a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
+end (`sphjet run --resume RUN --tmax T`) until its window is whole, so that the short jets of the
+slow speeds cost their own lengths and the long ones get a window past their own start-up.
+Drops (equivalent sphere diameters, satellites
 are drops smaller than d0): the mean of the main drops of the last sample of the window, and
 the median of the main drops of every sample of the window, with the number of drop-samples it
 is taken over (a drop counts once for each sample it is seen in).
