@@ -472,7 +472,7 @@ def report(args):
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
-              "window samples",
+              "window samples", "window from t [s] (its own L/U)",
               "err vs measured", "C = L/(d0 x) measured / SPH", "instability without gravity",
               "first breakup t [s], L/d0", "main drop d/d0",
               "main drops d/d0 window median (drop-samples)", "drops (satellites)", "status",
@@ -498,6 +498,8 @@ def report(args):
                      f"{fmt(r['L'])} ({fmt(r['L_std'])})",
                      "-" if r["L_halves"] is None else f"{fmt(r['L_halves'][0])} / {fmt(r['L_halves'][1])}",
                      f"{r['n_window']}" + (f" ({r['n_intact']} intact)" if r["n_intact"] else ""),
+                     "-" if r["L"] is None else
+                     f"{r['t0']:.4g} ({r['t0'] * info['U'] / (r['L'] * info['d0']):.2f})",
                      fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(None if info['L_meas'] is None else info['L_meas'] / g['x'], '.1f')} / "
                      f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",

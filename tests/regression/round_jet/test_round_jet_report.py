@@ -98,6 +98,8 @@ def main():
         check(r.get("L/d0 window halves") == "65.00 / 69.00", f"halves: {r.get('L/d0 window halves')}")
         check(r.get("err vs measured") == "-1%", f"error vs 67.52: {r.get('err vs measured')}")
         check(r.get("window samples") == "4", f"samples at t >= 0.155 s: {r.get('window samples')}")
+        check(r.get("window from t [s] (its own L/U)") == "0.1548 (1.51)",
+              f"the window's start, 1.5 L_ref / U = 1.51 of its own 67 d0 / U: {r}")
         check(r.get("main drop d/d0") == "1.90", f"main drops (1.8 + 2.0) / 2: {r.get('main drop d/d0')}")
         check(r.get("drops (satellites)") == "3 (1)", f"drops: {r.get('drops (satellites)')}")
         med = r.get("main drops d/d0 window median (drop-samples)")
@@ -306,8 +308,8 @@ def main():
         with open(os.path.join(tmp, "own", "round_jets.csv")) as f:
             rows = {r["run"]: r for r in csv.DictReader(f)}
         r = rows.get("mc_u0.7814", {})
-        check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "103",
-              f"own window's length: {r}")
+        check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "103"
+              and r.get("window from t [s] (its own L/U)") == "0.148 (1.76)", f"own window's length: {r}")
         r = rows.get("mc_u1.0179", {})
         check(r.get("status") == "unfinished (its own window not reached)" and r.get("L/d0 SPH (std)") == "- (-)",
               f"short of its own window: {r}")
