@@ -316,8 +316,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                 print(f"{head}: finished, skipped", flush=True)
                 n_done += 1
                 continue
-            what = {"resume": "resuming from its checkpoint", "new": "starting",
-                    "longer": f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer else ""}[state]
+            what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if state == "longer"
+                    else "resuming from its checkpoint" if state == "resume" else "starting")
             print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
             if dry_run:
                 continue
