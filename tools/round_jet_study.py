@@ -113,6 +113,12 @@ WINDOW_T_FACTOR, WINDOW_LENGTH = 1.5, 1.0    # the window's start and (default) 
 # made longer (resumed with a later end, at least OWN_GROWTH times the last) until its window is
 # W L / U long. Breakup checks every L_ref / (OWN_CHECKS U), whatever the run's end.
 OWN_START, OWN_MIN_D0, OWN_GROWTH, OWN_CHECKS = 1.75, 10.0, 1.25, 200
+# A window whose least-squares line rises (or falls) by more than OWN_DRIFT of its mean over the
+# window, and by more than twice that change's standard error, holds a jet still growing: the
+# run goes on by OWN_MORE L / U. A jet that grows slower than 0.57 U passes the start's test;
+# over a window of 0.5 L / U one growing at 0.2 U or more changes by 10% or more, while the
+# steady windows of finished runs (d0/dx 6 and 10, 0.34-1.25 m/s) changed by -5% to +8.5%.
+OWN_DRIFT, OWN_MORE = 0.10, 0.25
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -235,10 +241,12 @@ def own_window(rows, u, d0, window):
     """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
     W). The window starts at the first broken sample t_j with t_j >= OWN_START L_j / U, L_j the
     mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
-    needs the run to reach t_j + W L_j / U. -> dict start (t_j, None when no sample qualifies
-    yet), L (L_j in d0), need (the end [s] the window needs; without a start, the end that a
-    window of the longest recent length would need, at least OWN_GROWTH times the last
-    sample's time)."""
+    needs the run to reach t_j + W L_j / U; once the rows reach it, their trend from t_j on must
+    be flat (drift). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
+    drift (the window's change along its least-squares line over its mean, or None), need (the
+    end [s] the window needs: OWN_MORE L_j / U past the last sample's time while it drifts;
+    without a start, the end that a window of the recent length would need, at least
+    OWN_GROWTH times the last sample's time)."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
     tail_sum = 0.0
     sums = []
@@ -250,12 +258,33 @@ def own_window(rows, u, d0, window):
         mean = sums[j] / (len(broken) - j)
         tau = max(mean, OWN_MIN_D0) * d0 / u
         if t >= OWN_START * tau:
-            return {"start": t, "L": mean, "need": t + window * tau}
+            out = {"start": t, "L": mean, "drift": None, "need": t + window * tau}
+            if float(rows[-1]["time"]) >= out["need"] and len(broken) - j >= 3:
+                change, error = trend(broken[j:])
+                out["drift"] = change / mean
+                if abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error:
+                    out["need"] = float(rows[-1]["time"]) + OWN_MORE * tau
+            return out
     recent = [l for _t, l in broken[-10:]]
     longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
     t_last = float(rows[-1]["time"]) if rows else 0.0
-    return {"start": None, "L": None,
+    return {"start": None, "L": None, "drift": None,
             "need": max((OWN_START + window) * longest * d0 / u, OWN_GROWTH * t_last)}
+
+
+def trend(samples):
+    """(t, L) samples -> (the change of L along their least-squares line from the first time to
+    the last, its standard error from the residuals)."""
+    n = len(samples)
+    mt = sum(t for t, _l in samples) / n
+    ml = sum(l for _t, l in samples) / n
+    stt = sum((t - mt) ** 2 for t, _l in samples)
+    if stt == 0:
+        return 0.0, 0.0
+    slope = sum((t - mt) * (l - ml) for t, l in samples) / stt
+    res = sum((l - ml - slope * (t - mt)) ** 2 for t, l in samples)
+    span = samples[-1][0] - samples[0][0]
+    return slope * span, math.sqrt(res / max(n - 2, 1) / stt) * span
 
 
 def own_cap(info, window):
@@ -364,7 +393,8 @@ def cmd_run(args):
         if end > own_cap(info, args.window):
             return None
         why = ("no window yet" if ow["start"] is None else
-               f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far")
+               f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
+               + ("" if ow["drift"] is None else f", changing by {100 * ow['drift']:+.0f}% along it"))
         return end, why
 
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,

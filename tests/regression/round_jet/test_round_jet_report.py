@@ -5,7 +5,8 @@ there broken; the fits of L/d0 = C x (x = sqrt(We_d)(1 + 3 Oh_d)) are least squa
 origin; the groups are the diameter ones; missing runs are listed; `run --dry-run` sizes a run
 as its docstring says; `report --only --brief` prints the chosen run in lines (its theory line
 checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
-window from a run's own length (own_window, on a synthetic jet that grows and then holds).
+window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
+one that keeps growing).
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -279,6 +280,17 @@ def main():
         # (more than 1.25 times 0.13 s, the least a run is made longer by)
         ow = rjs.own_window(grow[:126], u, d0, 0.5)
         check(ow["start"] is None and abs(ow["need"] - 2.25 * tau) < 1e-12, f"own window not yet: {ow}")
+        # a jet that grows at 0.45 U throughout passes the start's test (from the first sample at
+        # t >= 0.65 T, T = 0.2 s its end: 0.13 s) and reaches its need (0.13 + 0.5 tau, tau =
+        # 0.45 (0.13 + 0.2) / 2 s = 0.07425 s); but its window's line rises by 0.07 / 0.165 = 42% of
+        # its mean: it goes on by a quarter of tau past its last sample
+        creep = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": f"{0.45 * u * (k / 1000) / d0:.9f}"}
+                 for k in range(5, 201)]
+        ow = rjs.own_window(creep, u, d0, 0.5)
+        tau_c = 0.45 * (0.13 + 0.2) / 2
+        check(ow["start"] == 0.13 and abs(ow["drift"] - 0.07 / 0.165) < 1e-6
+              and abs(ow["need"] - (0.2 + 0.25 * tau_c)) < 1e-9, f"a jet still growing: {ow}")
+        check(abs(rjs.own_window(grow, u, d0, 0.5)["drift"]) < 1e-9, "the held jet's window is flat")
         # a jet of 4 d0 at 0.3441 m/s is taken as 10 d0 long: from 1.75 x 0.034698 s, 0.061 s
         slow = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "4"} for k in range(10, 120)]
         ow = rjs.own_window(slow, 0.3441, d0, 0.5)
