@@ -237,12 +237,12 @@ def own_check_every(l_ref, u):
     return l_ref / (OWN_CHECKS * u)
 
 
-def own_window(rows, u, d0, window):
+def own_window(rows, u, d0, window, slack=0.0):
     """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
     W). The window starts at the first broken sample t_j with t_j >= OWN_START L_j / U, L_j the
     mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
-    needs the run to reach t_j + W L_j / U; once the rows reach it, their trend from t_j on must
-    be flat (drift). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
+    needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their trend
+    from t_j on must be flat (drift). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
     drift (the window's change along its least-squares line over its mean, or None), need (the
     end [s] the window needs: OWN_MORE L_j / U past the last sample's time while it drifts;
     without a start, the end that a window of the recent length would need, at least
@@ -259,7 +259,7 @@ def own_window(rows, u, d0, window):
         tau = max(mean, OWN_MIN_D0) * d0 / u
         if t >= OWN_START * tau:
             out = {"start": t, "L": mean, "drift": None, "need": t + window * tau}
-            if float(rows[-1]["time"]) >= out["need"] and len(broken) - j >= 3:
+            if float(rows[-1]["time"]) >= out["need"] - slack and len(broken) - j >= 3:
                 change, error = trend(broken[j:])
                 out["drift"] = change / mean
                 if abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error:
@@ -285,6 +285,22 @@ def trend(samples):
     res = sum((l - ml - slope * (t - mt)) ** 2 for t, l in samples)
     span = samples[-1][0] - samples[0][0]
     return slope * span, math.sqrt(res / max(n - 2, 1) / stt) * span
+
+
+def own_verdict(rows, info, window):
+    """--own-window: what a run's jet.csv rows (at least one) say of its window, for `run` and
+    `report` alike -> (own_window's dict, verdict, end): verdict "whole" (the rows reach the
+    window's need within one check), "capped" (they do not, but reach own_cap within one check:
+    the run is made no longer) or "more", with the end [s] to resume it to (the need and one
+    check more, at most own_cap)."""
+    every = own_check_every(info["L_ref"], info["U"])
+    ow = own_window(rows, info["U"], info["d0"], window, every)
+    last, cap = float(rows[-1]["time"]), own_cap(info, window)
+    if last >= ow["need"] - every:
+        return ow, "whole", None
+    if last >= cap - every:
+        return ow, "capped", None
+    return ow, "more", min(ow["need"] + every, cap)
 
 
 def own_cap(info, window):
@@ -376,8 +392,8 @@ def cmd_run(args):
     infos = {name: info for _s, name, _sets, info in todo}
 
     def more_time(name, run_dir):
-        """--own-window: (the end a finished run's window needs, why), or None when it has it
-        (or cannot have it: a blow-up, no rows, past own_cap)."""
+        """--own-window: (the end a finished run is to go on to, why), or None when its window is
+        whole or it cannot have it (a blow-up, no rows, own_cap reached)."""
         info = infos[name]
         try:
             rows = read_csv(os.path.join(run_dir, "jet.csv"))
@@ -385,12 +401,8 @@ def cmd_run(args):
             return None
         if not rows or blew_up(run_dir):
             return None
-        ow = own_window(rows, info["U"], info["d0"], args.window)
-        every = own_check_every(info["L_ref"], info["U"])
-        if float(rows[-1]["time"]) >= ow["need"] - every:
-            return None
-        end = ow["need"] + every
-        if end > own_cap(info, args.window):
+        ow, verdict, end = own_verdict(rows, info, args.window)
+        if verdict != "more":
             return None
         why = ("no window yet" if ow["start"] is None else
                f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
@@ -425,13 +437,18 @@ def read_run(run_dir, info):
 
     def first_and_window(rows):
         nonlocal t0
-        if info.get("own"):
-            ow = own_window(rows, info["U"], info["d0"], info["W"])
-            every = own_check_every(info["L_ref"], info["U"])
-            if ow["start"] is None or float(rows[-1]["time"]) < ow["need"] - every:
+        if info.get("own") and rows:
+            ow, verdict, _end = own_verdict(rows, info, info["W"])
+            if verdict == "more":
                 own_short.append(ow["need"])
                 return first_breakup(rows), []
-            t0 = r["t0"] = ow["start"]
+            if verdict == "capped":
+                r["notes"].append(f"made as long as --own-window goes (t = {own_cap(info, info['W']):.4g} s, "
+                                  f"a jet as long as the box) without a whole window"
+                                  + ("" if ow["drift"] is None else
+                                     f"; its length changes by {100 * ow['drift']:+.0f}% along it"))
+            if ow["start"] is not None:
+                t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
 
     got = run_summary(run_dir, r, first_and_window)

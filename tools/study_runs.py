@@ -243,11 +243,16 @@ def prefixed_copy(stream, prefix, lock):
     out = sys.stdout
 
     def copy():
-        for line in stream:
-            with lock:
-                out.write(prefix + line if line.endswith("\n") else prefix + line + "\n")
-                out.flush()
-        stream.close()
+        try:
+            for line in stream:
+                with lock:
+                    try:
+                        out.write(prefix + line if line.endswith("\n") else prefix + line + "\n")
+                        out.flush()
+                    except (OSError, ValueError):   # our stdout gone (a closed pipe): keep reading,
+                        pass                        # so that the run never blocks on its output
+        finally:
+            stream.close()
 
     t = threading.Thread(target=copy, daemon=True)
     t.start()
@@ -287,6 +292,13 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                 except ProcessLookupError:
                     pass
 
+    def ask(name, run_dir):
+        try:
+            return more_time(name, run_dir)
+        except (OSError, ValueError, KeyError, IndexError, csv.Error) as e:
+            print(f"{name}: cannot tell whether it is to go on ({e}); left as it is", file=sys.stderr, flush=True)
+            return None
+
     def forward(sig, _frame):
         got_signal.append(sig)
         send_all(sig)
@@ -308,7 +320,7 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             head = f"[{k}/{m}] {name}"
             longer = asked.pop(name, None)
             if longer is None and state == "done" and more_time:
-                longer = more_time(name, run_dir)
+                longer = ask(name, run_dir)
             if longer:
                 state, argv = "longer", [sphjet, "run", "--resume", run_dir, "-j", str(threads),
                                          "--tmax", f"{longer[0]:.6g}"]
@@ -372,7 +384,7 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                     if failed is None:
                         failed = 1
                 continue
-            longer = more_time(entry[1][0], run_dir) if more_time else None
+            longer = ask(entry[1][0], run_dir) if more_time else None
             if longer:
                 asked[entry[1][0]] = longer
                 queue.insert(0, entry)   # made longer next, before the runs not yet started

@@ -291,6 +291,25 @@ def main():
         check(ow["start"] == 0.13 and abs(ow["drift"] - 0.07 / 0.165) < 1e-6
               and abs(ow["need"] - (0.2 + 0.25 * tau_c)) < 1e-9, f"a jet still growing: {ow}")
         check(abs(rjs.own_window(grow, u, d0, 0.5)["drift"]) < 1e-9, "the held jet's window is flat")
+        # the drift test within one check of the need: a 10 d0-floored jet at 0.4014 m/s (tau =
+        # 0.029747 s; window from 0.0525 s, need 0.06738 s) growing from 3 to 9.5 d0, its last
+        # check 0.2 ms short of the need: tested with a check's slack (0.5 ms), not without
+        u4 = 0.4014
+        short = [{"time": f"{k * 0.0005:.4f}", "broken": "1", "L_over_d0": f"{3 + 6.5 * k / 134:.6f}"}
+                 for k in range(10, 135)]
+        ow = rjs.own_window(short, u4, d0, 0.5, 0.0005)
+        check(ow["drift"] is not None and ow["drift"] > 0.1 and ow["need"] > 0.067, f"short jet, slack: {ow}")
+        check(rjs.own_window(short, u4, d0, 0.5)["drift"] is None, "short jet, no slack: not tested")
+        # own_verdict (run and report alike), the 0.78 m/s run's checks every 67.52 d0 / (200 U):
+        # whole; more (to the need and a check); capped (a 150 d0 jet in a 118 d0 box at 0.41 s)
+        info = {"U": u, "d0": d0, "L_ref": 67.52 * d0, "box": rjs.box_below(67.52 * d0, d0), "own": True, "W": 0.5}
+        every = 67.52 * d0 / (200 * u)
+        check(rjs.own_verdict(grow, info, 0.5)[1] == "whole", "the grown jet's window is whole")
+        ow, verdict, end = rjs.own_verdict(grow[:126], info, 0.5)
+        check(verdict == "more" and abs(end - (2.25 * tau + every)) < 1e-12, f"more: {verdict}, {end}")
+        long_jet = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "150"} for k in range(5, 411)]
+        check(rjs.own_verdict(long_jet, info, 0.5)[1] == "capped" and abs(rjs.own_cap(info, 0.5) - 0.40574) < 1e-4,
+              f"capped at {rjs.own_cap(info, 0.5)}")
         # a jet of 4 d0 at 0.3441 m/s is taken as 10 d0 long: from 1.75 x 0.034698 s, 0.061 s
         slow = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "4"} for k in range(10, 120)]
         ow = rjs.own_window(slow, 0.3441, d0, 0.5)
@@ -307,8 +326,8 @@ def main():
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--own-window"], capture_output=True, text=True)
         check(p.returncode == 2 and "--quiet-exit" in p.stderr, f"--own-window alone: {p.stderr}")
         # report: the grown jet to 0.25 s has its window (from 0.148 s: 103 samples of 55 d0); the
-        # same lengths at 1.0179 m/s (tau = 0.064517 s) to 0.14 s fall short of the window's
-        # 1.75 tau + 0.5 tau = 0.1452 s: unfinished
+        # same lengths at 1.0179 m/s to 0.14 s fall short of their window (from 0.112 s, to 0.1439
+        # s): unfinished
         osdir = os.path.join(root, "eps0.01_n10_rings_fit_quiet_w0.5_own")
         for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136])):
             fake_run(os.path.join(osdir, name), [(float(x["time"]), k, 1, float(x["L_over_d0"]))

@@ -13,6 +13,7 @@ import stat
 import sys
 import tempfile
 import textwrap
+import threading
 import unittest
 from contextlib import redirect_stderr, redirect_stdout
 
@@ -241,6 +242,31 @@ class RunAllTests(unittest.TestCase):
         self.assertEqual(rc, 0)
         self.assertIn("[1/2] r1: going on to t = 0.4 s", out.getvalue())
         self.assertIn("[2/2] r2: finished, skipped", out.getvalue())
+
+    def test_a_failing_more_time_leaves_the_run_as_it_is(self):
+        def more_time(name, run_dir):
+            raise KeyError("L_over_d0")
+
+        out, err = io.StringIO(), io.StringIO()
+        with redirect_stdout(out), redirect_stderr(err):
+            rc = sr.run_all([("r1", [])], self.sdir, "c.toml", self.sphjet, 1, None, False,
+                            "study.py run", "a study", self.tmp.name, 1, more_time)
+        self.assertEqual(rc, 0)
+        self.assertIn("[1/1] r1: done", out.getvalue())
+        self.assertIn("r1: cannot tell whether it is to go on ('L_over_d0'); left as it is", err.getvalue())
+
+    def test_copy_outlives_a_closed_stdout(self):
+        # a stdout that fails (the pipe it went to closed): the copy reads on to the end, so a run
+        # never blocks on a full pipe, and closes the stream
+        class Gone(io.StringIO):
+            def write(self, _s):
+                raise BrokenPipeError(32, "Broken pipe")
+        stream = io.StringIO("a line\n" * 100000)
+        with redirect_stdout(Gone()):
+            t = sr.prefixed_copy(stream, "r1| ", threading.Lock())
+        t.join(10)
+        self.assertFalse(t.is_alive())
+        self.assertTrue(stream.closed)
 
     def test_failure_with_two_at_a_time_starts_no_more(self):
         os.environ["FAKE_RC"] = "3"
