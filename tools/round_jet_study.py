@@ -415,6 +415,20 @@ def cmd_run(args):
 
 
 # ---------------------------------------------------------------- report
+def drop_mode(diameters, width=0.1):
+    """The most frequent of `diameters` (d/d0) in bins of `width` (the bin's centre; the smaller
+    one of a tie), or None without any. The main drops of a window spread from 1 to 3.3 d0 (merged
+    pairs at 2.4, triples at 2.7): their median moves between realizations of one jet (1.91 and
+    2.39 at 0.78 m/s) where their most frequent size stays (1.9)."""
+    if not diameters:
+        return None
+    bins = {}
+    for d in diameters:
+        k = round(d / width)
+        bins[k] = bins.get(k, 0) + 1
+    return round(min(bins, key=lambda k: (-bins[k], k)) * width, 9)
+
+
 def split_window(window, box_d0):
     """The window's jet.csv rows -> (broken, intact, at_end): the samples with the jet broken, those
     with it intact, and of those the ones whose jet reaches within BOX_END_D0 of the box's end
@@ -428,7 +442,7 @@ def split_window(window, box_d0):
 def read_run(run_dir, info):
     r = {"status": "missing", "L": None, "L_std": None, "L_halves": None, "n_window": 0, "n_intact": 0,
          "t_first": None,
-         "L_first": None, "drops_main": None, "drops_median": None, "n_main_window": 0,
+         "L_first": None, "drops_main": None, "drops_median": None, "drops_mode": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
     t0 = window_start(info)
@@ -491,6 +505,7 @@ def read_run(run_dir, info):
                     if x["step"] in steps and x["satellite"] == "0"]
             r["n_main_window"] = len(seen)
             r["drops_median"] = statistics.median(seen) if seen else None
+            r["drops_mode"] = drop_mode(seen)
         except (OSError, KeyError, ValueError) as e:
             r["notes"].append(f"drops.csv: {e}")
     elif at_end:
@@ -522,7 +537,8 @@ def report(args):
               "window samples", "window from t [s] (its own L/U)",
               "err vs measured", "C = L/(d0 x) measured / SPH", "instability without gravity",
               "first breakup t [s], L/d0", "main drop d/d0",
-              "main drops d/d0 window median (drop-samples)", "drops (satellites)", "status",
+              "main drops d/d0 window median (drop-samples)", "main drops d/d0 window mode",
+              "drops (satellites)", "status",
               "particles", "wall [s]"]
     rows, missing, notes = [], [], []
     xs_m, ys_m, xs_s, ys_s = [], [], [], []
@@ -552,7 +568,7 @@ def report(args):
                      f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",
                      "absolute" if absolutely_unstable(g["We_d"]) else "convective",
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
-                     f"{fmt(r['drops_median'])} ({r['n_main_window']})",
+                     f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
                      fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
     with open(os.path.join(args.out, "round_jets.csv"), "w", newline="") as f:
@@ -634,7 +650,7 @@ def brief(sdir, args, name, info, r, c_all):
     lines.append(f"  the paper's eq 37: {g['eq37']:.1f}; Weber's law L/d0 = C sqrt(We_d)(1 + 3 Oh_d) with the "
                  f"measurements' C = {c_all:.1f}: {c_all * g['x']:.1f}")
     lines.append(f"  main drops: {fmt(r['drops_median'])} d0 (median over the window, {r['n_main_window']} "
-                 f"drop-samples); Rayleigh's: {RAYLEIGH_DROP} d0")
+                 f"drop-samples), most frequent {fmt(r.get('drops_mode'), '.1f')} d0; Rayleigh's: {RAYLEIGH_DROP} d0")
     return "\n".join(lines)
 
 

@@ -105,6 +105,10 @@ def main():
         check(r.get("drops (satellites)") == "3 (1)", f"drops: {r.get('drops (satellites)')}")
         med = r.get("main drops d/d0 window median (drop-samples)")
         check(med == "2.00 (3)", f"window median of 1.8, 2.0 (step 60), 5.0 (step 50), not 9.0 (step 20): {med}")
+        check(r.get("main drops d/d0 window mode") == "1.8",
+              f"window mode of 1.8, 2.0, 5.0 in 0.1 d0 bins, a three-way tie: the smallest: {r}")
+        check(rjs.drop_mode([1.88, 1.91, 2.38, 2.41, 2.39, 1.02]) == 2.4 and rjs.drop_mode([]) is None,
+              "mode: the 2.4 bin holds three")
         check(r.get("first breakup t [s], L/d0") == "0.0500, 60.00", r.get("first breakup t [s], L/d0"))
         we_d = 1000 * 0.7814 ** 2 * 0.001194 / 0.072
         check(r.get("We_d") == f"{we_d:.3g}", f"We_d {r.get('We_d')} vs {we_d:.3g}")
@@ -246,7 +250,7 @@ def main():
         for want in ("mc_u0.7814: U = 0.7814 m/s", "breakup length L/d0 = 67.0 (std 2.2) over 4 samples",
                      "measured (Mansour & Chigier 1994): 67.5, this run -1%", "theory: no fit",
                      f"the measurements' C = {c_meas:.1f}: {c_meas * x1:.1f}",
-                     "main drops: 2.00 d0 (median over the window, 3 drop-samples); Rayleigh's: 1.89 d0"):
+                     "main drops: 2.00 d0 (median over the window, 3 drop-samples), most frequent 1.8 d0; Rayleigh's: 1.89 d0"):
             check(want in p.stdout, f"--brief lacks {want!r}: {p.stdout} {p.stderr}")
         check("mc_u1.0179" not in p.stdout and abs(c_meas - 18.4) < 0.05,
               f"--only: one run; the measurements' C 18.4: {c_meas}")
