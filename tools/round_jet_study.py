@@ -63,12 +63,13 @@ window (fewer where a run stopped within it). With --own-window (needs --quiet-e
 _own) a run's window comes from its own length instead (own_window): from the first sample at
 t >= 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
 W L / U later; a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
-end (`sphjet run --resume RUN --tmax T`) until its window is whole, so that the short jets of the
-slow speeds cost their own lengths and the long ones get a window past their own start-up.
-Drops (equivalent sphere diameters, satellites
-are drops smaller than d0): the mean of the main drops of the last sample of the window, and
-the median of the main drops of every sample of the window, with the number of drop-samples it
-is taken over (a drop counts once for each sample it is seen in).
+end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
+10% of its mean), so that the short jets of the slow speeds cost their own lengths and the long
+ones get a window past their own start-up. Drops (equivalent sphere diameters, satellites are
+drops smaller than d0): the mean of the main drops of the last sample of the window, and the
+median and the most frequent size (0.1 d0 bins) of the main drops of every sample of the window,
+with the number of drop-samples it is taken over (a drop counts once for each sample it is seen
+in).
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
@@ -212,15 +213,11 @@ def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False):
     the fluid of the whole run; window: the window's length in L_ref / U (the run ends at
     WINDOW_T_FACTOR + window of them); own: --own-window's first end and checks (own_window)."""
     dx = d0 / n
-    t_end = (WINDOW_T_FACTOR + window) * l_ref / u
     if own:
-        t_end = (OWN_START + window) * OWN_MIN_D0 * d0 / u
-        return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
-                f"nozzle.length_over_d0={REFILL_NOZZLE:g}", f"nozzle.z0={box_below(l_ref, d0):.9g}",
-                f"domain.lz={box_below(l_ref, d0) + REFILL_NOZZLE * d0 + 2.0 * dx:.9g}",
-                f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
-                f"breakup.check_every={own_check_every(l_ref, u):.4g}",
-                f"time.out={20 * own_check_every(l_ref, u):.4g}", "nozzle.refill=true"]
+        t_end, every, refill = (OWN_START + window) * OWN_MIN_D0 * d0 / u, own_check_every(l_ref, u), True
+    else:
+        t_end = (WINDOW_T_FACTOR + window) * l_ref / u
+        every = t_end / 400
     nozzle = REFILL_NOZZLE if refill else u * t_end / d0 + 2.0
     below = box_below(l_ref, d0)
     z0 = below
@@ -228,7 +225,7 @@ def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False):
     return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
             f"nozzle.length_over_d0={nozzle:.6g}", f"nozzle.z0={z0:.9g}", f"domain.lz={lz:.9g}",
             f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
-            f"breakup.check_every={t_end / 400:.4g}", f"time.out={t_end / 20:.4g}"] + \
+            f"breakup.check_every={every:.4g}", f"time.out={(20 * every if own else t_end / 20):.4g}"] + \
         (["nozzle.refill=true"] if refill else [])
 
 
@@ -241,12 +238,12 @@ def own_window(rows, u, d0, window, slack=0.0):
     """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
     W). The window starts at the first broken sample t_j with t_j >= OWN_START L_j / U, L_j the
     mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
-    needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their trend
-    from t_j on must be flat (drift). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
-    drift (the window's change along its least-squares line over its mean, or None), need (the
-    end [s] the window needs: OWN_MORE L_j / U past the last sample's time while it drifts;
-    without a start, the end that a window of the recent length would need, at least
-    OWN_GROWTH times the last sample's time)."""
+    needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their
+    trend from t_j on must be flat (OWN_DRIFT). -> dict start (t_j, None when no sample
+    qualifies yet), L (L_j in d0), drift (the window's change along its least-squares line over
+    its mean, or None), need (the end [s] the window needs: OWN_MORE L_j / U past the last
+    sample's time while it drifts; without a start, the end that a window of the recent length
+    would need, at least OWN_GROWTH times the last sample's time)."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
     tail_sum = 0.0
     sums = []
