@@ -21,15 +21,15 @@ module axisymmetric_loops
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_FRESH, &
                        SWEEP_REUSE
   use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
-                          AXIS_TABLE_N, ring_kernel_tables, ring_kernel_cells, ring_kernel_derivs, &
+                          AXIS_TABLE_N, ring_kernel_tables, ring_kernel_sides, ring_kernel_derivs, &
                           RING_NU, RING_NV
   implicit none
   private
   public :: axisymmetric_rates, axis_weights_of
 
-  !> The ring kernel's derivative tables per kernel kind by cell (ring_kernel_tables,
-  !> ring_kernel_cells), built on first use.
-  real(rp), save, allocatable :: ring_cells(:, :, :, :)
+  !> The ring kernel's derivative tables per kernel kind, side by side (ring_kernel_tables,
+  !> ring_kernel_sides), built on first use.
+  real(rp), save, allocatable :: ring_tab(:, :, :, :)
   logical, save :: ring_ready(KERNEL_WENDLAND) = .false.
 
   !> The sums of either pair's sweep: continuity, pressure and, with laminar viscosity, the
@@ -128,11 +128,11 @@ contains
     real(rp), allocatable :: gs(:, :), gp(:, :)
     n = s%n
     !$omp critical (ring_tables_cache)
-    if (.not. allocated(ring_cells)) allocate(ring_cells(8, RING_NU - 1, RING_NV - 1, KERNEL_WENDLAND))
+    if (.not. allocated(ring_tab)) allocate(ring_tab(2, RING_NU, RING_NV, KERNEL_WENDLAND))
     if (.not. ring_ready(kern%kind)) then
       allocate(gs(RING_NU, RING_NV), gp(RING_NU, RING_NV))
       call ring_kernel_tables(kern%kind, gs, gp)
-      call ring_kernel_cells(gs, gp, ring_cells(:, :, :, kern%kind))
+      call ring_kernel_sides(gs, gp, ring_tab(:, :, :, kern%kind))
       ring_ready(kern%kind) = .true.
     end if
     !$omp end critical (ring_tables_cache)
@@ -156,7 +156,7 @@ contains
       s%axi_dz(k) = 0.0_rp
       if (s%grid%order(k) > n_state) cycle
       ! the ring's own far side: dWr(0, r^2)/dr = 2 r Fp
-      call ring_kernel_derivs(0.0_rp, s%x(k)**2, prm%numerics%h, ring_cells(:, :, :, kern%kind), &
+      call ring_kernel_derivs(0.0_rp, s%x(k)**2, prm%numerics%h, ring_tab(:, :, :, kern%kind), &
                               fs, fp)
       self = 2.0_rp * s%x(k) * fp
       s%rate(R_AR, k) = body%cont(k) + body%m(k) * s%u(k) * self
@@ -202,7 +202,7 @@ contains
     type(pair_list_t), intent(inout) :: pl
     real(rp), intent(inout) :: red
     call ring_pairs(self%laminar, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, self%s%x, self%s%u, &
-                    self%s%w, self%s%fluid, self%real_, self%h, ring_cells(:, :, :, self%kind), &
+                    self%s%w, self%s%fluid, self%real_, self%h, ring_tab(:, :, :, self%kind), &
                     self%m, self%v, self%vr, self%pg, self%cont, &
                     self%pax, self%paz, self%dudr, self%dwdr, self%ddx, self%ddz)
     red = max(red, 0.0_rp)
@@ -212,19 +212,19 @@ contains
   !> add to the continuity, the pressure and the truncation vector with the ring kernel's
   !> derivatives (dWr/dr_a = 2 (r_a - r_b) Fs + r_b Fp, dWr/dz_a = 2 (z_a - z_b) Fs); fluid
   !> pairs, images included, to the radial velocity derivatives as axi_pairs.
-  pure subroutine ring_pairs(laminar, np, pa, pb, dx, dz, f, x, u, w, fl, rl, h, cells, m, v, &
+  pure subroutine ring_pairs(laminar, np, pa, pb, dx, dz, f, x, u, w, fl, rl, h, tab, m, v, &
                              vr, pg, cont, pax, paz, dudr, dwdr, ddx, ddz)
     logical, intent(in) :: laminar
     integer, intent(in) :: np, pa(*), pb(*)
     real(rp), intent(in) :: dx(*), dz(*), f(*), x(*), u(*), w(*), m(*), v(*), vr(*), pg(*), h
-    real(rp), intent(in) :: cells(8, RING_NU - 1, RING_NV - 1)
+    real(rp), intent(in) :: tab(2, RING_NU, RING_NV)
     logical, intent(in) :: fl(*), rl(*)
     real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*), ddx(*), ddz(*)
     integer :: k, a, b
     real(rp) :: q, t, fs, fp, dra, drb, dzz
     real(rp), allocatable :: fsk(:), fpk(:)   ! on the heap: a row's pair list may be long
-    ! The kernel's derivatives first, in a loop of their own: each reads a cell of the 4 MB
-    ! tables at a place no earlier pair predicts, and a short loop keeps many of those reads in
+    ! The kernel's derivatives first, in a loop of their own: each reads a cell of the 1 MB
+    ! table at a place no earlier pair predicts, and a short loop keeps many of those reads in
     ! flight at once, where the sums' long body would wait for each (the same operations, so
     ! the same numbers).
     allocate(fsk(np), fpk(np))
@@ -232,7 +232,7 @@ contains
       a = pa(k)
       b = pb(k)
       if (rl(a) .and. rl(b)) &
-        call ring_kernel_derivs(dx(k)**2 + dz(k)**2, x(a) * x(b), h, cells, fsk(k), fpk(k))
+        call ring_kernel_derivs(dx(k)**2 + dz(k)**2, x(a) * x(b), h, tab, fsk(k), fpk(k))
     end do
     do k = 1, np
       a = pa(k)

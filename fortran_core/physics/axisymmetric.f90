@@ -41,7 +41,7 @@ module axisymmetric
   private
   public :: axis_radius, planar_mass, mass_per_radian, viscous_hoop, azimuthal_curvature, &
             R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N, axis_detection_factor, &
-            ring_kernel_tables, ring_kernel_cells, ring_kernel_derivs, RING_NU, RING_NV, &
+            ring_kernel_tables, ring_kernel_sides, ring_kernel_derivs, RING_NU, RING_NV, &
             ring_too_heavy
 
   !> Smallest radius used in 1/r, in units of h.
@@ -245,25 +245,19 @@ contains
     end do
   end subroutine ring_kernel_tables
 
-  !> The tables of ring_kernel_tables by cell of their grid: cells(:, i, j) holds the corners
-  !> gs(i, j), gs(i+1, j), gs(i, j+1), gs(i+1, j+1), then gp's, so that the interpolation in a
-  !> cell reads one 64-byte block instead of four rows of two tables.
-  pure subroutine ring_kernel_cells(gs, gp, cells)
+  !> The tables of ring_kernel_tables side by side: tab(1, i, j) = gs(i, j), tab(2, i, j) =
+  !> gp(i, j), so that a cell's corners of both are read from two 32-byte pieces of a 1 MB table.
+  pure subroutine ring_kernel_sides(gs, gp, tab)
     real(rp), intent(in) :: gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
-    real(rp), intent(out) :: cells(8, RING_NU - 1, RING_NV - 1)
-    integer :: i, j
-    do j = 1, RING_NV - 1
-      do i = 1, RING_NU - 1
-        cells(:, i, j) = [gs(i, j), gs(i + 1, j), gs(i, j + 1), gs(i + 1, j + 1), &
-                          gp(i, j), gp(i + 1, j), gp(i, j + 1), gp(i + 1, j + 1)]
-      end do
-    end do
-  end subroutine ring_kernel_cells
+    real(rp), intent(out) :: tab(2, RING_NU, RING_NV)
+    tab(1, :, :) = gs
+    tab(2, :, :) = gp
+  end subroutine ring_kernel_sides
 
   !> Fs = dWr/ds^2 and Fp = dWr/dp of the ring kernel (ring_kernel_tables, bilinear in the
-  !> cells of ring_kernel_cells) at s2 = s^2, p = r_a r_b [1/m^5], h the smoothing length.
-  pure subroutine ring_kernel_derivs(s2, p, h, cells, fs, fp)
-    real(rp), intent(in) :: s2, p, h, cells(8, RING_NU - 1, RING_NV - 1)
+  !> cells of their grid) at s2 = s^2, p = r_a r_b [1/m^5], h the smoothing length.
+  pure subroutine ring_kernel_derivs(s2, p, h, tab, fs, fp)
+    real(rp), intent(in) :: s2, p, h, tab(2, RING_NU, RING_NV)
     real(rp), intent(out) :: fs, fp
     real(rp) :: u, v, pn, tu, tv, h5, a, b, sq
     integer :: i, j
@@ -275,15 +269,13 @@ contains
     j = min(int(v) + 1, RING_NV - 1)
     tu = u - (i - 1)
     tv = v - (j - 1)
-    associate (c => cells(:, i, j))
-      a = (1.0_rp - tu) * c(1) + tu * c(2)
-      b = (1.0_rp - tu) * c(3) + tu * c(4)
-      sq = sqrt(pn + 1.0_rp)
-      fs = ((1.0_rp - tv) * a + tv * b) / (sq * h5)
-      a = (1.0_rp - tu) * c(5) + tu * c(6)
-      b = (1.0_rp - tu) * c(7) + tu * c(8)
-      fp = ((1.0_rp - tv) * a + tv * b) / ((pn + 1.0_rp) * sq * h5)
-    end associate
+    a = (1.0_rp - tu) * tab(1, i, j) + tu * tab(1, i + 1, j)
+    b = (1.0_rp - tu) * tab(1, i, j + 1) + tu * tab(1, i + 1, j + 1)
+    sq = sqrt(pn + 1.0_rp)
+    fs = ((1.0_rp - tv) * a + tv * b) / (sq * h5)
+    a = (1.0_rp - tu) * tab(2, i, j) + tu * tab(2, i + 1, j)
+    b = (1.0_rp - tu) * tab(2, i, j + 1) + tu * tab(2, i + 1, j + 1)
+    fp = ((1.0_rp - tv) * a + tv * b) / ((pn + 1.0_rp) * sq * h5)
   end subroutine ring_kernel_derivs
 
 end module axisymmetric
