@@ -118,7 +118,8 @@ OWN_START, OWN_MIN_D0, OWN_GROWTH, OWN_CHECKS = 1.75, 10.0, 1.25, 200
 # window, and by more than twice that change's standard error, holds a jet still growing: the
 # run goes on by OWN_MORE L / U. A jet that grows slower than 0.57 U passes the start's test;
 # over a window of 0.5 L / U one growing at 0.2 U or more changes by 10% or more, while the
-# steady windows of finished runs (d0/dx 6 and 10, 0.34-1.25 m/s) changed by -5% to +8.5%.
+# windows of finished runs (0.78 and 1.25 m/s at d0/dx 6, 1.25 m/s at d0/dx 10) changed by -5%
+# to +7% (cases/round_jet/README.md, "Each run's window from its own length").
 OWN_DRIFT, OWN_MORE = 0.10, 0.25
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
