@@ -196,11 +196,12 @@ def open_report(sdir, out, how):
 
 
 # ---------------------------------------------------------------- run
-def run_command(sphjet, case, run_dir, sets, threads, tmax):
-    """-> (state, argv): state is 'done', 'resume' or 'new'."""
-    if finished(run_dir):
+def run_command(sphjet, case, run_dir, sets, threads, tmax, go_on=False):
+    """-> (state, argv): state is 'done', 'resume' or 'new'. go_on: a finished run resumes from
+    its checkpoint too (to tmax), never starts afresh."""
+    if finished(run_dir) and not go_on:
         return "done", None
-    if os.path.isfile(os.path.join(run_dir, "checkpoint.h5")):
+    if go_on or os.path.isfile(os.path.join(run_dir, "checkpoint.h5")):
         argv = [sphjet, "run", "--resume", run_dir, "-j", str(threads)]
     else:
         argv = [sphjet, "run", case, "--out", run_dir, "-j", str(threads)]
@@ -279,7 +280,7 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                              f"(lock {lock.name}); one at a time")
 
     got_signal = []
-    running = {}   # Popen -> (head, run_dir, its queue entry)
+    running = {}   # Popen -> its queue entry (k, (name, sets))
     asked = {}     # name -> more_time's answer for a run that has just ended
     readers = {}   # Popen -> the thread that copies its output (parallel > 1)
     out_lock = threading.Lock()
@@ -314,21 +315,20 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
     queue = list(enumerate(todo, 1))
     while queue or running:
         while queue and len(running) < parallel and not got_signal and failed is None:
-            k, (name, sets) = queue.pop(0)
+            entry = queue.pop(0)
+            k, (name, sets) = entry
             run_dir = os.path.join(sdir, name)
-            state, argv = run_command(sphjet, case, run_dir, sets, threads, tmax)
             head = f"[{k}/{m}] {name}"
             longer = asked.pop(name, None)
-            if longer is None and state == "done" and more_time:
+            if longer is None and more_time and finished(run_dir):
                 longer = ask(name, run_dir)
-            if longer:
-                state, argv = "longer", [sphjet, "run", "--resume", run_dir, "-j", str(threads),
-                                         "--tmax", f"{longer[0]:.6g}"]
+            state, argv = run_command(sphjet, case, run_dir, sets, threads, longer[0] if longer else tmax,
+                                      go_on=bool(longer))
             if state == "done":
                 print(f"{head}: finished, skipped", flush=True)
                 n_done += 1
                 continue
-            what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if state == "longer"
+            what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer
                     else "resuming from its checkpoint" if state == "resume" else "starting")
             print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
             if dry_run:
@@ -336,11 +336,11 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             os.makedirs(os.path.dirname(run_dir), exist_ok=True)
             try:
                 if parallel == 1:   # sphjet's own output, its progress line on a terminal
-                    running[subprocess.Popen(argv, cwd=cwd)] = (head, run_dir, (k, (name, sets)))
+                    running[subprocess.Popen(argv, cwd=cwd)] = entry
                 else:
                     p = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE,
                                          stderr=subprocess.STDOUT, text=True, errors="replace")
-                    running[p] = (head, run_dir, (k, (name, sets)))
+                    running[p] = entry
                     readers[p] = prefixed_copy(p.stdout, f"{name}| ", out_lock)
             except OSError as e:   # e.g. the binary replaced by a build while the study ran
                 send_all(signal.SIGTERM)
@@ -356,7 +356,9 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             time.sleep(0.2)
             continue
         for p in ended:
-            head, run_dir, entry = running.pop(p)
+            entry = running.pop(p)
+            k, (name, _sets) = entry
+            run_dir, head = os.path.join(sdir, name), f"[{k}/{m}] {name}"
             if p in readers:
                 readers.pop(p).join()   # its last lines before what follows on its end
             rc = p.returncode
@@ -384,9 +386,9 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                     if failed is None:
                         failed = 1
                 continue
-            longer = ask(entry[1][0], run_dir) if more_time else None
+            longer = ask(name, run_dir) if more_time else None
             if longer:
-                asked[entry[1][0]] = longer
+                asked[name] = longer
                 queue.insert(0, entry)   # made longer next, before the runs not yet started
                 continue
             n_run += 1
