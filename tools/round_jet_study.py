@@ -271,18 +271,14 @@ def own_window(rows, u, d0, window, slack=0.0):
 
 
 def trend(samples):
-    """(t, L) samples -> (the change of L along their least-squares line from the first time to
-    the last, its standard error from the residuals)."""
-    n = len(samples)
-    mt = sum(t for t, _l in samples) / n
-    ml = sum(l for _t, l in samples) / n
-    stt = sum((t - mt) ** 2 for t, _l in samples)
-    if stt == 0:
+    """(t, L) samples (at least 3) -> (the change of L along their least-squares line (fit_line)
+    from the first time to the last, its standard error from the residuals)."""
+    fit = fit_line([t for t, _l in samples], [l for _t, l in samples])
+    if fit is None or fit[0] == 0.0:
         return 0.0, 0.0
-    slope = sum((t - mt) * (l - ml) for t, l in samples) / stt
-    res = sum((l - ml - slope * (t - mt)) ** 2 for t, l in samples)
+    slope, _b, r2 = fit   # the slope's variance: slope^2 (1/R^2 - 1) / (n - 2)
     span = samples[-1][0] - samples[0][0]
-    return slope * span, math.sqrt(res / max(n - 2, 1) / stt) * span
+    return slope * span, abs(slope) * math.sqrt(max(1.0 / r2 - 1.0, 0.0) / (len(samples) - 2)) * span
 
 
 def own_verdict(rows, info, window):
