@@ -21,14 +21,14 @@ module axisymmetric_loops
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_FRESH, &
                        SWEEP_REUSE
   use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
-                          AXIS_TABLE_N, ring_kernel_tables, ring_kernel_sides, ring_kernel_derivs, &
+                          AXIS_TABLE_N, ring_kernel_tables, ring_kernel_derivs, &
                           RING_NU, RING_NV
   implicit none
   private
   public :: axisymmetric_rates, axis_weights_of
 
-  !> The ring kernel's derivative tables per kernel kind, side by side (ring_kernel_tables,
-  !> ring_kernel_sides), built on first use.
+  !> The ring kernel's derivative tables per kernel kind, side by side (ring_kernel_tables),
+  !> built on first use.
   real(rp), save, allocatable :: ring_tab(:, :, :, :)
   logical, save :: ring_ready(KERNEL_WENDLAND) = .false.
 
@@ -125,14 +125,11 @@ contains
     type(ring_body_t) :: body
     integer :: k, n
     real(rp) :: fs, fp, self
-    real(rp), allocatable :: gs(:, :), gp(:, :)
     n = s%n
     !$omp critical (ring_tables_cache)
     if (.not. allocated(ring_tab)) allocate(ring_tab(2, RING_NU, RING_NV, KERNEL_WENDLAND))
     if (.not. ring_ready(kern%kind)) then
-      allocate(gs(RING_NU, RING_NV), gp(RING_NU, RING_NV))
-      call ring_kernel_tables(kern%kind, gs, gp)
-      call ring_kernel_sides(gs, gp, ring_tab(:, :, :, kern%kind))
+      call ring_kernel_tables(kern%kind, ring_tab(:, :, :, kern%kind))
       ring_ready(kern%kind) = .true.
     end if
     !$omp end critical (ring_tables_cache)

@@ -41,7 +41,7 @@ module axisymmetric
   private
   public :: axis_radius, planar_mass, mass_per_radian, viscous_hoop, azimuthal_curvature, &
             R_MIN_H, axis_weight_tables, axis_weights, AXIS_TABLE_N, axis_detection_factor, &
-            ring_kernel_tables, ring_kernel_sides, ring_kernel_derivs, RING_NU, RING_NV, &
+            ring_kernel_tables, ring_kernel_derivs, RING_NU, RING_NV, &
             ring_too_heavy
 
   !> Smallest radius used in 1/r, in units of h.
@@ -196,12 +196,14 @@ contains
   !>   Fs = dWr/ds^2 = (1/2pi) int K dphi,  Fp = dWr/dp = (1/pi) int K 2 sin^2(phi/2) dphi.
   !> For h = 1 on u = s^2/4 in [0, 1], v = p/(p + 1) in [0, 1]: gs = sqrt(p + 1) Fs,
   !> gp = (p + 1)^(3/2) Fp (finite as p -> infinity; v = 1 taken at p = 1e12). W3 is the 2D
-  !> kernel's shape normalised in 3D (the integral of 4 pi q^2 f).
-  pure subroutine ring_kernel_tables(kind, gs, gp)
+  !> kernel's shape normalised in 3D (the integral of 4 pi q^2 f). Stored side by side,
+  !> tab(1, i, j) = gs and tab(2, i, j) = gp at grid point (i, j), so that a lookup reads a
+  !> cell's corners of both from two 32-byte pieces of a 1 MB table (ring_kernel_derivs).
+  pure subroutine ring_kernel_tables(kind, tab)
     use sphjet_kinds, only: ip
     use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval
     integer(ip), intent(in) :: kind
-    real(rp), intent(out) :: gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
+    real(rp), intent(out) :: tab(2, RING_NU, RING_NV)
     integer, parameter :: NQ = 800, NR = 20000
     type(kernel_t) :: kern
     real(rp) :: norm3, q, w, f, s2, p, phimax, phi, dphi, d, sn, as, ap
@@ -239,20 +241,11 @@ contains
           as = as + f * dphi
           ap = ap + f * 2.0_rp * sn * sn * dphi
         end do
-        gs(i, j) = sqrt(p + 1.0_rp) * as / (2.0_rp * pi * norm3)
-        gp(i, j) = (p + 1.0_rp)**1.5_rp * ap / (pi * norm3)
+        tab(1, i, j) = sqrt(p + 1.0_rp) * as / (2.0_rp * pi * norm3)
+        tab(2, i, j) = (p + 1.0_rp)**1.5_rp * ap / (pi * norm3)
       end do
     end do
   end subroutine ring_kernel_tables
-
-  !> The tables of ring_kernel_tables side by side: tab(1, i, j) = gs(i, j), tab(2, i, j) =
-  !> gp(i, j), so that a cell's corners of both are read from two 32-byte pieces of a 1 MB table.
-  pure subroutine ring_kernel_sides(gs, gp, tab)
-    real(rp), intent(in) :: gs(RING_NU, RING_NV), gp(RING_NU, RING_NV)
-    real(rp), intent(out) :: tab(2, RING_NU, RING_NV)
-    tab(1, :, :) = gs
-    tab(2, :, :) = gp
-  end subroutine ring_kernel_sides
 
   !> Fs = dWr/ds^2 and Fp = dWr/dp of the ring kernel (ring_kernel_tables, bilinear in the
   !> cells of their grid) at s2 = s^2, p = r_a r_b [1/m^5], h the smoothing length.
