@@ -4,10 +4,10 @@ growth along the jet, the breakup length and the drops. Run them, then tabulate 
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/forced_jet_study.py run [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0 [--reconstruct]] [--only RUN ...] [--threads 2]
+      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/forced_jet_study.py report [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0 [--reconstruct]] [--out cases/round_jet/forced]
+      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--out cases/round_jet/forced]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/nN/NAME, one run for each
 speed of U_SPEEDS (Mansour & Chigier's 0.78 and 1.57 m/s, We_d = 10 and 41) and each target
@@ -16,7 +16,8 @@ run has the quiet exit of the round-jet study (`round_jet_study.py --axis-pair r
 --quiet-exit`: the rings pair, the surface fit, the tensile correction, the bulk viscosity
 0.5, a refilling nozzle of 3 d0 and the split of rings too heavy for their radius);
 --artificial-alpha A adds numerics.artificial_alpha = A to every run (study ROOT/nN_alphaA), and
---reconstruct numerics.artificial_reconstruction (ROOT/nN_alphaA_rec).
+--reconstruct numerics.artificial_reconstruction (ROOT/nN_alphaA_rec); --c0 C the sound speed
+fluid.c0 = C (16 m/s in the case; suffix _c0C).
 
 The forcing (nozzle.disturbance = eps: the plug moves at u0 (1 + eps sin(omega_f t)), omega_f =
 u0 k) is set from the target with linear theory, not fitted: a plug whose speed varies by
@@ -55,8 +56,8 @@ from axisymmetric import spatial_growth, weber_omega  # noqa: E402
 from jet_noise import envelope  # noqa: E402
 from round_jet_study import (BASE_CASE, D0_MC, MU, QUIET_BULK_VISCOSITY, REFILL_NOZZLE, RHO,  # noqa: E402
                              SIGMA, groups)
-from study_runs import (add_damping_arguments, add_run_arguments, blew_up, check_damping,  # noqa: E402
-                        damping_flags, damping_sets, damping_tag, dispatch, fmt, is_broken, md_table,
+from study_runs import (add_numerics_arguments, add_run_arguments, blew_up, check_numerics,  # noqa: E402
+                        numerics_flags, numerics_sets, numerics_tag, dispatch, fmt, is_broken, md_table,
                         open_report, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -91,9 +92,9 @@ def run_name(u, delta):
     return f"u{u:g}_d{delta:g}"
 
 
-def plan(n, damping=()):
-    """-> list of (set, name, overrides, info); damping: more overrides of every run
-    (study_runs.damping_sets)."""
+def plan(n, numerics=()):
+    """-> list of (set, name, overrides, info); numerics: more overrides of every run
+    (study_runs.numerics_sets)."""
     runs = []
     d0 = D0_MC
     dx = d0 / n
@@ -112,20 +113,20 @@ def plan(n, damping=()):
                     f"nozzle.disturbance={th['eps']:.6g}", f"nozzle.disturbance_ka={KA:g}",
                     "domain.axis_pair=rings", "surface_tension.curvature=surface_fit",
                     "numerics.tensile_correction=on", f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}",
-                    "domain.split_axis_rings=true"] + list(damping)
+                    "domain.split_axis_rings=true"] + list(numerics)
             info = dict(th, U=u, d0=d0, delta=delta, z0=below, t_head=t_head, t_end=t_end)
             runs.append((SET_NAME, run_name(u, delta), sets, info))
     return runs
 
 
 def study_dir(args):
-    """args.root/nN (N = args.d0_over_dx) with args' damping tag (study_runs.damping_tag)."""
-    return os.path.join(args.root, f"n{args.d0_over_dx:g}" + damping_tag(args))
+    """args.root/nN (N = args.d0_over_dx) with args' numerics tag (study_runs.numerics_tag)."""
+    return os.path.join(args.root, f"n{args.d0_over_dx:g}" + numerics_tag(args))
 
 
 def cmd_run(args):
     sdir = study_dir(args)
-    todo = select_runs(plan(args.d0_over_dx, damping_sets(args)), [SET_NAME], args.only, args.sphjet, args.dry_run)
+    todo = select_runs(plan(args.d0_over_dx, numerics_sets(args)), [SET_NAME], args.only, args.sphjet, args.dry_run)
     title = f"forced jet study: {len(todo)} run(s) in {sdir} (d0/dx = {args.d0_over_dx:g})"
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, os.path.join(REPO, BASE_CASE),
                    args.sphjet, args.threads, args.tmax, args.dry_run, "forced_jet_study.py run", title, REPO, args.parallel)
@@ -256,7 +257,7 @@ def pressure_noise(snap, info, l_pinch):
 
 def report(args):
     sdir = study_dir(args)
-    open_report(sdir, args.out, f"forced_jet_study.py run --d0-over-dx {args.d0_over_dx:g}" + damping_flags(args))
+    open_report(sdir, args.out, f"forced_jet_study.py run --d0-over-dx {args.d0_over_dx:g}" + numerics_flags(args))
     header = ["run", "U [m/s]", "We_d", "eps", "delta0/a target", "delta0/a measured",
               "growth / Weber's (temporal), / spatial", "L/d0 pinch-off (pinches)",
               "L/d0 theory from the target delta0: temporal, spatial",
@@ -265,7 +266,7 @@ def report(args):
               "L/d0 mean (std)", "main drop d/d0 median (10-90%)", "main drops, satellites per sample",
               "satellite volume share", "p std / (sigma/a): jet, drops (last snapshot)", "status", "wall [s]"]
     rows, missing, done = [], [], []
-    for _s, name, _sets, info in plan(args.d0_over_dx, damping_sets(args)):
+    for _s, name, _sets, info in plan(args.d0_over_dx, numerics_sets(args)):
         r = read_run(os.path.join(sdir, name), info)
         if r["status"] == "missing":
             missing.append(name)
@@ -304,7 +305,7 @@ def report(args):
             f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else os.path.join('ROOT', os.path.basename(sdir))}"
             f" (ROOT: `run --root`): d0/dx = "
             f"{args.d0_over_dx:g}, k a = {KA}, the quiet exit"
-            + "".join(f", {s.replace('=', ' = ')}" for s in damping_sets(args))
+            + "".join(f", {s.replace('=', ' = ')}" for s in numerics_sets(args))
             + f"; one wavelength's drop "
             f"{DROP_D0:.3f} d0.\n\n" + md_table(header, rows) +
             f"\nMissing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n")
@@ -390,7 +391,7 @@ def main(argv=None):
         p.add_argument("--root", default=os.path.join(REPO, "runs", "forced_jet"),
                        help="study root (default: REPO/runs/forced_jet)")
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
-        add_damping_arguments(p)
+        add_numerics_arguments(p)
         if name == "run":
             add_run_arguments(p, (SET_NAME,), REPO)
         else:
@@ -399,7 +400,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
-    check_damping(ap, args)
+    check_numerics(ap, args)
     return dispatch(args, cmd_run, report, "forced_jet_study")
 
 

@@ -5,13 +5,13 @@
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--own-window]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
       [--cfl K] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
-      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--sink M] [--window 1] [--own-window]
+      [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
       [--cfl K] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
@@ -35,11 +35,12 @@ numerics.bulk_viscosity = 0.5 (which damps the jet's sound waves, cases/round_je
 numerics.artificial_alpha = A (Monaghan's artificial viscosity on top of the laminar one, which
 damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alphaA), and
 --reconstruct numerics.artificial_reconstruction, which keeps that damping to the particle-scale
-motion (suffix _alphaA_rec). --sink M removes, at every check once the jet is broken, the drops
-wholly farther than M d0 past its end (breakup.remove_drops_beyond_d0, a sink that follows the
-jet), so that a run costs its jet's length and not its box's (suffix _sinkM). --cfl K sets
-time.cfl = K (the Courant number of the variable step, 0.2 in the case) in every run (suffix
-_cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk viscosity's bound.
+motion (suffix _alphaA_rec); --c0 C sets the measured jets' sound speed fluid.c0 = C (16 m/s in
+the case; the step is about 0.2 h / c0, so a run's cost goes as c0; suffix _c0C). --sink M
+removes, at every check once the jet is broken, the drops wholly farther than M d0 past its end
+(breakup.remove_drops_beyond_d0, a sink that follows the jet), so that a run costs its jet's
+length and not its box's (suffix _sinkM). --cfl K sets time.cfl = K (the Courant number of the
+variable step, 0.2 in the case) in every run (suffix _cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk viscosity's bound.
 K = 0.3 takes about 1.4 times fewer steps but is not converged at the pinch-offs (the drops and
 the shed particles change; cases/round_jet/README.md, "The quick start jet"): the study uses 0.2.
 
@@ -93,8 +94,8 @@ import statistics
 import sys
 
 import jet_noise
-from study_runs import (StudyError, add_damping_arguments, add_run_arguments, blew_up, check_damping,
-                        damping_flags, damping_sets, damping_tag, dispatch, drops_at, first_breakup, fmt,
+from study_runs import (StudyError, add_numerics_arguments, add_run_arguments, blew_up, check_numerics,
+                        numerics_flags, numerics_sets, numerics_tag, dispatch, drops_at, first_breakup, fmt,
                         is_broken, md_table, open_report, read_csv, run_all, run_summary, select_runs,
                         study_parser)
 
@@ -311,8 +312,8 @@ def plan(opts):
     length; axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius
     pair), or "rings_own": the rings pair with surface_tension.rings_curvature = "own", or
     "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
-    bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct: the damping
-    (study_runs.damping_sets)."""
+    bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0: the damping and
+    the measured jets' sound speed (study_runs.numerics_sets)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -339,12 +340,14 @@ def plan(opts):
         extra.append(f"domain.axis_pair={axis_pair}")
     if quiet:
         extra += [f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}", "domain.split_axis_rings=true"]
-    extra += damping_sets(opts)
+    extra += numerics_sets(opts)
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     if opts.cfl is not None:
         extra.append(f"time.cfl={opts.cfl:g}")
-    return [(s, name, sets + extra, info) for s, name, sets, info in runs]
+    # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
+    return [(s, name, sets + [e for e in extra if s == "mc" or not e.startswith("fluid.c0=")], info)
+            for s, name, sets, info in runs]
 
 
 SET_NAMES = ("mc", "paper")
@@ -356,7 +359,7 @@ def study_flags(opts):
             + ("" if opts.size_c is None else f" --size-c {opts.size_c:g}")
             + ("" if opts.remove_h is None else f" --remove-drops-below-h {opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f" --axis-pair {opts.axis_pair}")
-            + (" --quiet-exit" if opts.quiet_exit else "") + damping_flags(opts)
+            + (" --quiet-exit" if opts.quiet_exit else "") + numerics_flags(opts)
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
             + (" --own-window" if opts.own_window else "")
@@ -369,7 +372,7 @@ def study_dir(opts):
     tail = (("" if opts.size_c is None else f"_c{opts.size_c:g}")
             + ("" if opts.remove_h is None else f"_rm{opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
-            + damping_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
+            + numerics_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
             + ("_own" if opts.own_window else "")
             + ("" if opts.cfl is None else f"_cfl{opts.cfl:g}"))
@@ -697,7 +700,7 @@ def parse(argv=None):
                        help=f"numerics.bulk_viscosity = {QUIET_BULK_VISCOSITY:g}, a {REFILL_NOZZLE:g} d0 nozzle "
                             "that refills (nozzle.refill) and domain.split_axis_rings in every run (needs a "
                             "rings --axis-pair)")
-        add_damping_arguments(p)
+        add_numerics_arguments(p)
         p.add_argument("--sink", type=float, default=None, metavar="M",
                        help="remove the drops wholly farther than M d0 past the jet's end at the checks "
                             "(breakup.remove_drops_beyond_d0; default: none, the box's end is the only sink)")
@@ -743,7 +746,7 @@ def parse(argv=None):
                  "refilling nozzle")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
-    check_damping(ap, args)
+    check_numerics(ap, args)
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")
     return args

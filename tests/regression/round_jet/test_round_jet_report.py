@@ -242,6 +242,14 @@ def main():
             check(p.returncode == 2 and "--cfl" in p.stderr, f"--cfl {bad}: exit {p.returncode}")
         check(rjs.study_flags(rjs.parse(["report", "--window", "0.4", "--cfl", "0.3"]))
               == " --eps 0.01 --d0-over-dx 10 --window 0.4 --cfl 0.3", "the report's run command with --cfl")
+        # --c0 12: the measured jets' sound speed, in a directory of its own; the paper's jets keep 4 m/s
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--c0", "12",
+                            "--only", "mc_u0.7814", "paper_u0.2"], capture_output=True, text=True)
+        lines = [ln for ln in p.stdout.splitlines() if " run " in ln and "--out" in ln]
+        check(len(lines) == 2 and "fluid.c0=12" in lines[0] and "eps0.01_n10_c012" in lines[0]
+              and "fluid.c0=4" in lines[1] and "fluid.c0=12" not in lines[1], f"--c0: {p.stdout}")
+        check(rjs.study_flags(rjs.parse(["report", "--c0", "12"])) == " --eps 0.01 --d0-over-dx 10 --c0 12",
+              "the report's run command with --c0")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",

@@ -168,6 +168,24 @@ class CommandLineTests(unittest.TestCase):
                 ap.parse_args(["run", "--parallel", bad])
             self.assertIn("expected an integer >= 1", err.getvalue())
 
+    def test_numerics_arguments(self):
+        ap, sub = sr.study_parser("Doc.\n\nMore.")
+        sr.add_numerics_arguments(sub.add_parser("run"))
+        args = ap.parse_args(["run"])
+        self.assertEqual((sr.numerics_sets(args), sr.numerics_tag(args), sr.numerics_flags(args)), ([], "", ""))
+        args = ap.parse_args(["run", "--artificial-alpha", "0.02", "--reconstruct", "--c0", "12"])
+        sr.check_numerics(ap, args)
+        self.assertEqual(sr.numerics_sets(args), ["numerics.artificial_alpha=0.02",
+                                                  "numerics.artificial_reconstruction=true", "fluid.c0=12"])
+        self.assertEqual(sr.numerics_tag(args), "_alpha0.02_rec_c012")
+        self.assertEqual(sr.numerics_flags(args), " --artificial-alpha 0.02 --reconstruct --c0 12")
+        for bad, says in ((["--c0", "0"], "expected a positive sound speed"),
+                          (["--reconstruct"], "give --artificial-alpha A > 0")):
+            err = io.StringIO()
+            with redirect_stderr(err), self.assertRaises(SystemExit):
+                sr.check_numerics(ap, ap.parse_args(["run"] + bad))
+            self.assertIn(says, err.getvalue())
+
 
 class RunAllTests(unittest.TestCase):
     """The study loop with a stand-in sphjet: runs what is missing, skips what is finished,
