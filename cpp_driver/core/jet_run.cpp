@@ -170,7 +170,7 @@ std::vector<std::size_t> JetRun::after_step(const ParticleSet& ps, double time, 
 ParticleSet JetRun::refill(const ParticleSet& ps) const {
     if (!spec_.nozzle->refill) return {};
     const SimParams& p = spec_.params;
-    return nozzle_refill_rows(*spec_.nozzle, p.dx, p.dz, p.drive_half_width, ps);
+    return nozzle_refill_rows(*spec_.nozzle, p.dx, p.dz, p.drive_half_width, plug_state(p, *spec_.nozzle), ps);
 }
 
 std::string JetRun::stop_due(double time) const {

@@ -261,10 +261,9 @@ private:
     // noise next to the orifice, +-500-1200 Pa at d0/dx = 10, is the same either way.)
     void nozzle_fluid(const NozzleSpec& nz, const NozzleLayout& lay) {
         const double m = p_.rho0 * lay.spacing_across * lay.spacing_along;
-        const double rho = axi_ ? laplace_density(2 * p_.sigma / nz.d0) : p_.rho0;
-        const double pr = tait_pressure(rho);
+        const PlugState plug = plug_state(p_, nz);
         for (const NozzlePoint& q : lay.fluid)
-            ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, rho, pr, m, ParticleKind::Fluid);
+            ps_.push(q.x, q.z, nz.u0 * nz.ex, nz.u0 * nz.ez, plug.rho, plug.p, m, ParticleKind::Fluid);
     }
 
     void obstacle(const ObstacleSpec& o) {

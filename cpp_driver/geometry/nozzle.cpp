@@ -60,7 +60,15 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     return out;
 }
 
-ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width, const ParticleSet& ps) {
+PlugState plug_state(const SimParams& prm, const NozzleSpec& nz) {
+    if (prm.geometry != Geometry::Axisymmetric || !(prm.B > 0) || prm.sigma == 0) return {prm.rho0, 0.0};
+    const double p = 2 * prm.sigma / nz.d0;
+    const double rho = prm.rho0 * std::pow(1.0 + p / prm.B, 1.0 / prm.gamma);
+    return {rho, prm.B * (std::pow(rho / prm.rho0, prm.gamma) - 1.0)};
+}
+
+ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width, const PlugState& built,
+                               const ParticleSet& ps) {
     const double ds = nz.ex == 0.0 ? dz : dx;
     const double s_back = -(static_cast<double>(std::max(1L, std::lround(nz.length() / ds))) - 0.5) * ds;
     const auto axial = [&](std::size_t i) { return (ps.x[i] - nz.x0) * nz.ex + (ps.z[i] - nz.z0) * nz.ez; };
@@ -82,8 +90,8 @@ ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, doubl
         if (axial(i) < s_min + 0.25 * ds) back.push_back(i);
     for (int k = 1; s_min - k * ds >= s_back - 1e-6 * ds; ++k)
         for (const std::size_t i : back) {
-            (void)rows.push(ps.x[i] - k * ds * nz.ex, ps.z[i] - k * ds * nz.ez, ps.u[i], ps.w[i],
-                                            ps.rho[i], ps.p[i], ps.m[i], ParticleKind::Fluid);
+            (void)rows.push(ps.x[i] - k * ds * nz.ex, ps.z[i] - k * ds * nz.ez, ps.u[i], ps.w[i], built.rho,
+                            built.p, ps.m[i], ParticleKind::Fluid);
         }
     return rows;
 }

@@ -52,14 +52,25 @@ struct NozzleLayout {
 // dx, dz: the case's lattice spacings; dynamic: two staggered layers per wall.
 // recess: how far upstream of the orifice line the walls end [m] (the generator: 2h).
 // axisymmetric: the round pipe's half r = x >= 0 (the axis must be up or down, x0 = 0).
+// The density and pressure of the plug as built (and of every row a refill adds): a round
+// jet's plug at the jet's Laplace pressure 2 sigma / d0 (the density at which the Tait EoS gives
+// it; rho0 when B = 0), a sheet's at rho0 and p = 0.
+struct PlugState {
+    double rho = 0, p = 0;
+};
+[[nodiscard]] PlugState plug_state(const SimParams& prm, const NozzleSpec& nz);
+
 // nozzle.refill: the rows to add after a step so that the plug reaches back to where its
 // back row was built, s = -(M - 1/2) ds. The plug is the active fluid with s < 0 within
 // half_width of the axis (the core's driven strip, fortran_core/integrate/nozzle_drive.f90);
-// its back row moves rigidly, so each new row is a copy of it (across positions, velocity,
-// density, pressure, mass) one spacing ds further back, as many as fit. Empty when none is
-// due. ps must be the particles of the case nz built.
+// its back row moves rigidly, so each new row is a copy of its positions, velocity and mass
+// one spacing ds further back, as many as fit, at the density and pressure of `built` (the
+// plug as built: a rigid plug's density does not change by itself, but fluid passing beside
+// it, such as a ring of start-up debris flying upstream, changes the rows it passes, and a
+// copy of the back row's density would carry such a change into every later row). Empty when
+// none is due. ps must be the particles of the case nz built.
 [[nodiscard]] ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width,
-                                             const ParticleSet& ps);
+                                             const PlugState& built, const ParticleSet& ps);
 
 [[nodiscard]] NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess,
                                          bool axisymmetric = false);

@@ -201,6 +201,48 @@ TEST(NozzleLayout, RoundPipeHasRingsOnOneSide) {
     EXPECT_THROW((void)nozzle_layout(nz, 0.001, 0.001, false, 0.0026, true), std::invalid_argument);
 }
 
+// nozzle.refill: once the plug has moved one spacing, one row enters at its back: the back
+// row's positions one spacing upstream, its velocities and masses, at the plug's built density
+// and pressure (plug_state: the round jet's Laplace pressure 2 sigma / d0), not the back row's,
+// which fluid passing beside the plug can have changed.
+TEST(NozzleRefill, NewRowsCopyTheBackRowAtTheBuiltDensity) {
+    NozzleSpec nz = down_nozzle(0.002);
+    nz.x0 = 0.0;
+    nz.length_over_d0 = 2;  // 20 rows of 5 rings at ds = dl = 0.2 mm
+    SimParams prm;
+    prm.geometry = Geometry::Axisymmetric;
+    prm.rho0 = 1000, prm.gamma = 7, prm.B = 1000 * 16.0 * 16.0 / 7, prm.sigma = 0.072;
+    const PlugState built = plug_state(prm, nz);
+    const double p_lap = 2 * 0.072 / 0.002;
+    EXPECT_NEAR(built.p, p_lap, 1e-9 * p_lap);
+    EXPECT_NEAR(prm.B * (std::pow(built.rho / prm.rho0, prm.gamma) - 1), p_lap, 1e-9 * p_lap);
+    SimParams sheet = prm;
+    sheet.geometry = Geometry::Planar;
+    EXPECT_EQ(plug_state(sheet, nz).rho, 1000.0);
+    EXPECT_EQ(plug_state(sheet, nz).p, 0.0);
+
+    const double ds = 0.0002, u0 = nz.u0;
+    const NozzleLayout lay = nozzle_layout(nz, ds, ds, false, 0.0, true);
+    ParticleSet ps;
+    for (const NozzlePoint& q : lay.fluid)
+        ps.push(q.x, q.z, 0, -u0, built.rho, built.p, 1e-6 * q.x, ParticleKind::Fluid);
+    EXPECT_EQ(nozzle_refill_rows(nz, ds, ds, 0.0011, built, ps).size(), 0u);  // nothing due yet
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        ps.z[i] -= ds;                                     // the plug has moved one spacing
+        if (ps.z[i] > nz.z0 + 18 * ds) ps.rho[i] = 990, ps.p[i] = -2000;  // the back row, disturbed
+    }
+    const ParticleSet rows = nozzle_refill_rows(nz, ds, ds, 0.0011, built, ps);
+    ASSERT_EQ(rows.size(), 5u);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        EXPECT_NEAR(rows.z[i], nz.z0 + 19.5 * ds, 1e-12);  // where the back row was built
+        EXPECT_NEAR(rows.x[i], (static_cast<double>(i) + 0.5) * ds, 1e-12);
+        EXPECT_EQ(rows.w[i], -u0);
+        EXPECT_NEAR(rows.m[i], 1e-6 * rows.x[i], 1e-18);
+        EXPECT_EQ(rows.rho[i], built.rho);
+        EXPECT_EQ(rows.p[i], built.p);
+    }
+}
+
 // A round jet: a rigid plug of rings gives u_flux = u0 (flux over pi d0^2 / 4); a sphere-sized
 // cluster of rings gives the diameter of the sphere of its volume; the neck is the thinnest
 // slice of the jet, not its rounded tip.
