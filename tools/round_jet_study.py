@@ -122,6 +122,12 @@ OWN_START, OWN_MIN_D0, OWN_GROWTH, OWN_CHECKS = 1.75, 10.0, 1.25, 200
 # windows of finished runs (0.78 and 1.25 m/s at d0/dx 6, 1.25 m/s at d0/dx 10) changed by -5%
 # to +7% (cases/round_jet/README.md, "Each run's window from its own length").
 OWN_DRIFT, OWN_MORE = 0.10, 0.25
+# A straight line does not see a jet that fell and grew back within the window (a fall and a
+# regrowth cancel in it: a run whose jet a ring of start-up debris broke at 9 d0 and that grew back
+# to 31 d0 had a window of std 32% of its mean with a change of +0.6%). So each third of the
+# window (by time) must also hold its mean within OWN_DRIFT of the window's, or within twice that
+# third's standard error, else the run goes on by OWN_MORE L / U.
+OWN_PARTS = 3
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -241,9 +247,10 @@ def own_window(rows, u, d0, window, slack=0.0):
     W). The window starts at the first broken sample t_j with t_j >= OWN_START L_j / U, L_j the
     mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
     needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their
-    trend from t_j on must be flat (OWN_DRIFT). -> dict start (t_j, None when no sample
-    qualifies yet), L (L_j in d0), drift (the window's change along its least-squares line over
-    its mean, or None), need (the end [s] the window needs: OWN_MORE L_j / U past the last
+    trend from t_j on must be flat (OWN_DRIFT) and each of its parts hold the window's mean
+    (OWN_PARTS, parts_off). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
+    drift (the window's change along its least-squares line over its mean, or None), parts
+    (parts_off's departure, when the window is judged), need (the end [s] the window needs: OWN_MORE L_j / U past the last
     sample's time while it drifts; without a start, the end that a window of the recent length
     would need, at least OWN_GROWTH times the last sample's time)."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
@@ -261,7 +268,8 @@ def own_window(rows, u, d0, window, slack=0.0):
             if float(rows[-1]["time"]) >= out["need"] - slack and len(broken) - j >= 3:
                 change, error = trend(broken[j:])
                 out["drift"] = change / mean
-                if abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error:
+                out["parts"] = parts_off(broken[j:], mean)
+                if (abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error) or out["parts"]:
                     out["need"] = float(rows[-1]["time"]) + OWN_MORE * tau
             return out
     recent = [l for _t, l in broken[-10:]]
@@ -269,6 +277,26 @@ def own_window(rows, u, d0, window, slack=0.0):
     t_last = float(rows[-1]["time"]) if rows else 0.0
     return {"start": None, "L": None, "drift": None,
             "need": max((OWN_START + window) * longest * d0 / u, OWN_GROWTH * t_last)}
+
+
+def parts_off(samples, mean):
+    """(t, L) samples of a window and their mean -> the largest departure of the mean of one of
+    its OWN_PARTS parts by time from the window's mean, over the window's mean, when it is more
+    than OWN_DRIFT and more than twice that part's standard error (its samples taken as
+    independent); else 0.0. Parts of fewer than 2 samples are not judged."""
+    t0, t1 = samples[0][0], samples[-1][0]
+    worst = 0.0
+    for k in range(OWN_PARTS):
+        lo, hi = t0 + (t1 - t0) * k / OWN_PARTS, t0 + (t1 - t0) * (k + 1) / OWN_PARTS
+        part = [l for t, l in samples if lo <= t < hi or (k == OWN_PARTS - 1 and t == t1)]
+        if len(part) < 2:
+            continue
+        m = sum(part) / len(part)
+        se = statistics.stdev(part) / math.sqrt(len(part))
+        off = abs(m - mean)
+        if off > OWN_DRIFT * mean and off > 2.0 * se:
+            worst = max(worst, off / mean)
+    return worst
 
 
 def trend(samples):
@@ -403,7 +431,8 @@ def cmd_run(args):
             return None
         why = ("no window yet" if ow["start"] is None else
                f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
-               + ("" if ow["drift"] is None else f", changing by {100 * ow['drift']:+.0f}% along it"))
+               + ("" if ow["drift"] is None else f", changing by {100 * ow['drift']:+.0f}% along it")
+               + (f", a third of it {100 * ow['parts']:.0f}% off its mean" if ow.get("parts") else ""))
         return end, why
 
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -457,7 +486,8 @@ def read_run(run_dir, info):
                 r["notes"].append(f"made as long as --own-window goes (t = {own_cap(info, info['W']):.4g} s, "
                                   f"a jet as long as the box) without a whole window"
                                   + ("" if ow["drift"] is None else
-                                     f"; its length changes by {100 * ow['drift']:+.0f}% along it"))
+                                     f"; its length changes by {100 * ow['drift']:+.0f}% along it")
+                                  + (f", a third of it {100 * ow['parts']:.0f}% off its mean" if ow.get("parts") else ""))
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]

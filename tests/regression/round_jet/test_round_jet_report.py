@@ -303,6 +303,18 @@ def main():
         check(ow["start"] == 0.13 and abs(ow["drift"] - 0.07 / 0.165) < 1e-6
               and abs(ow["need"] - (0.2 + 0.25 * tau_c)) < 1e-9, f"a jet still growing: {ow}")
         check(abs(rjs.own_window(grow, u, d0, 0.5)["drift"]) < 1e-9, "the held jet's window is flat")
+        # a jet that fell and grew back within its window: held at 31 d0, broken at 9 d0 at 0.108 s,
+        # grown back at U to 31 d0 (0.1416 s) and held again, to 0.164 s. Its line is flat (-1.6%:
+        # the fall and the regrowth cancel) but its middle third is 28% below the mean
+        # (parts_off), so it goes on by a quarter of its own L / U; the held jet's thirds are
+        # equal (parts 0)
+        def dip(t):
+            return 31.0 if t < 0.108 else min(31.0, 9.0 + u * (t - 0.108) / d0)
+        vee = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": f"{dip(k / 2000):.6f}"} for k in range(10, 329)]
+        ow = rjs.own_window(vee, u, d0, 0.5)
+        check(ow["start"] is not None and abs(ow["drift"]) < 0.1 and ow["parts"] > 0.1
+              and abs(ow["need"] - (0.164 + 0.25 * ow["L"] * d0 / u)) < 1e-9, f"a jet that fell and grew back: {ow}")
+        check(rjs.own_window(grow, u, d0, 0.5)["parts"] == 0.0, "the held jet's thirds hold its mean")
         # the drift test within one check of the need: a 10 d0-floored jet at 0.4014 m/s (tau =
         # 0.029747 s; window from 0.0525 s, need 0.06738 s) growing from 3 to 9.5 d0, its last
         # check 0.2 ms short of the need: tested with a check's slack (0.5 ms), not without
