@@ -65,7 +65,7 @@ _own) a run's window comes from its own length instead (own_window): from the fi
 t >= 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
 W L / U later; a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
-10% of its mean), so that the short jets of the slow speeds cost their own lengths and the long
+10% of its mean, and each third of it within 10% of its mean), so that the short jets of the slow speeds cost their own lengths and the long
 ones get a window past their own start-up. Drops (equivalent sphere diameters, satellites are
 drops smaller than d0): the mean of the main drops of the last sample of the window, and the
 median and the most frequent size (0.1 d0 bins) of the main drops of every sample of the window,
