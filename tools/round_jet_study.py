@@ -36,13 +36,15 @@ numerics.artificial_alpha = A (Monaghan's artificial viscosity on top of the lam
 damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alphaA), and
 --reconstruct numerics.artificial_reconstruction, which keeps that damping to the particle-scale
 motion (suffix _alphaA_rec); --c0 C sets the measured jets' sound speed fluid.c0 = C (16 m/s in
-the case; the step is about 0.2 h / c0, so a run's cost goes as c0; suffix _c0C). --sink M
-removes, at every check once the jet is broken, the drops wholly farther than M d0 past its end
-(breakup.remove_drops_beyond_d0, a sink that follows the jet), so that a run costs its jet's
-length and not its box's (suffix _sinkM). --cfl K sets time.cfl = K (the Courant number of the
-variable step, 0.2 in the case) in every run (suffix _cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk viscosity's bound.
-K = 0.3 takes about 1.4 times fewer steps but is not converged at the pinch-offs (the drops and
-the shed particles change; cases/round_jet/README.md, "The quick start jet"): the study uses 0.2.
+the case; the step is 0.2 h / (c0 + the pinch-offs' velocity differences), so 12 m/s takes 0.84
+of the particle-steps of 16; suffix _c0C). --sink M removes, at every check once the jet is
+broken, the drops wholly farther than M d0 past its end (breakup.remove_drops_beyond_d0, a sink
+that follows the jet), so that a run costs its jet's length and not its box's (suffix _sinkM).
+--cfl K sets time.cfl = K (the Courant number of the variable step, 0.2 in the case) in every
+run (suffix _cflK); with --quiet-exit a step above 0.25 h / c0 is held there by the bulk
+viscosity's bound. K = 0.3 takes about 1.4 times fewer steps but is not converged at the
+pinch-offs (the drops and the shed particles change; cases/round_jet/README.md, "The quick start
+jet"): the study uses 0.2.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -65,12 +67,12 @@ _own) a run's window comes from its own length instead (own_window): from the fi
 t >= 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
 W L / U later; a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
-10% of its mean, and each third of it within 10% of its mean), so that the short jets of the slow speeds cost their own lengths and the long
-ones get a window past their own start-up. Drops (equivalent sphere diameters, satellites are
-drops smaller than d0): the mean of the main drops of the last sample of the window, and the
-median and the most frequent size (0.1 d0 bins) of the main drops of every sample of the window,
-with the number of drop-samples it is taken over (a drop counts once for each sample it is seen
-in).
+10% of its mean, and each third of it within 10% of its mean), so that the short jets of the
+slow speeds cost their own lengths and the long ones get a window past their own start-up. Drops
+(equivalent sphere diameters, satellites are drops smaller than d0): the mean of the main drops
+of the last sample of the window, and the median and the most frequent size (0.1 d0 bins) of the
+main drops of every sample of the window, with the number of drop-samples it is taken over (a
+drop counts once for each sample it is seen in).
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
@@ -250,9 +252,10 @@ def own_window(rows, u, d0, window, slack=0.0):
     trend from t_j on must be flat (OWN_DRIFT) and each of its parts hold the window's mean
     (OWN_PARTS, parts_off). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
     drift (the window's change along its least-squares line over its mean, or None), parts
-    (parts_off's departure, when the window is judged), need (the end [s] the window needs: OWN_MORE L_j / U past the last
-    sample's time while it drifts; without a start, the end that a window of the recent length
-    would need, at least OWN_GROWTH times the last sample's time)."""
+    (parts_off's departure, when the window is judged), need (the end [s] the window needs:
+    OWN_MORE L_j / U past the last sample's time while it drifts; without a start, the end that
+    a window of the recent length would need, at least OWN_GROWTH times the last sample's
+    time)."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
     tail_sum = 0.0
     sums = []
@@ -308,6 +311,13 @@ def trend(samples):
     slope, _b, r2 = fit   # the slope's variance: slope^2 (1/R^2 - 1) / (n - 2)
     span = samples[-1][0] - samples[0][0]
     return slope * span, abs(slope) * math.sqrt(max(1.0 / r2 - 1.0, 0.0) / (len(samples) - 2)) * span
+
+
+def unsteady(ow):
+    """-> how own_window's judged window ow departs from a steady one (its line's change, the
+    third farthest off its mean), as a phrase to append; '' when it was not judged."""
+    return (("" if ow["drift"] is None else f", changing by {100 * ow['drift']:+.0f}% along it")
+            + (f", a third of it {100 * ow['parts']:.0f}% off its mean" if ow.get("parts") else ""))
 
 
 def own_verdict(rows, info, window):
@@ -431,8 +441,7 @@ def cmd_run(args):
             return None
         why = ("no window yet" if ow["start"] is None else
                f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
-               + ("" if ow["drift"] is None else f", changing by {100 * ow['drift']:+.0f}% along it")
-               + (f", a third of it {100 * ow['parts']:.0f}% off its mean" if ow.get("parts") else ""))
+               + unsteady(ow))
         return end, why
 
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
@@ -484,10 +493,7 @@ def read_run(run_dir, info):
                 return first_breakup(rows), []
             if verdict == "capped":
                 r["notes"].append(f"made as long as --own-window goes (t = {own_cap(info, info['W']):.4g} s, "
-                                  f"a jet as long as the box) without a whole window"
-                                  + ("" if ow["drift"] is None else
-                                     f"; its length changes by {100 * ow['drift']:+.0f}% along it")
-                                  + (f", a third of it {100 * ow['parts']:.0f}% off its mean" if ow.get("parts") else ""))
+                                  f"a jet as long as the box) without a whole window" + unsteady(ow))
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
