@@ -11,6 +11,7 @@
 
 #include "geometry/nozzle.hpp"
 #include "model/errors.hpp"
+#include "model/tait.hpp"
 
 namespace sphjet {
 namespace {
@@ -531,17 +532,6 @@ private:
         }
     }
 
-    // The density at which the Tait EoS gives the pressure p (rho0 when B = 0 or p = 0).
-    [[nodiscard]] double laplace_density(double p) const {
-        if (!(p_.B > 0) || p == 0) return p_.rho0;
-        return p_.rho0 * std::pow(1.0 + p / p_.B, 1.0 / p_.gamma);
-    }
-
-    // The Tait pressure at the density rho (0 when B = 0), the inverse of laplace_density.
-    [[nodiscard]] double tait_pressure(double rho) const {
-        return p_.B > 0 ? p_.B * (std::pow(rho / p_.rho0, p_.gamma) - 1.0) : 0.0;
-    }
-
     // A sphere of concentric half rings (axisymmetric, a FluidDisc with rings and xc = 0):
     // N = max(1, round(R / dx)) rings at radii (j - 1/2) ds, ds = R / N, j = 1..N (no centre
     // particle: it would sit on the axis), ring j holding n_j = 2 round(pi (j - 1/2)) particles
@@ -570,9 +560,9 @@ private:
                 if (!(x > 0) || !clear(x, z)) continue;
                 // without gravity, at the sphere's Laplace pressure 2 sigma / R (0 without
                 // surface tension), so that switching the tension on starts no breathing mode
-                const double rho = g == 0 ? laplace_density(2 * p_.sigma / d.radius)
+                const double rho = g == 0 ? tait_density(p_, 2 * p_.sigma / d.radius)
                                           : rho0 * std::pow(1.0 + rho0 * g * (ztop - z) / p_.B, 1.0 / p_.gamma);
-                const double pr = tait_pressure(rho);
+                const double pr = tait_pressure(p_, rho);
                 ps_.push(x, z, d.u0, d.w0, rho, pr, rho * area * sx * sz, ParticleKind::Fluid);
             }
         }
@@ -589,8 +579,8 @@ private:
     // the axis 50 times the perturbation's own.
     void cylinder(const FluidCylinder& c) {
         const double pi = std::numbers::pi;
-        const double rho = laplace_density(p_.sigma / c.radius);
-        const double pr = tait_pressure(rho);
+        const double rho = tait_density(p_, p_.sigma / c.radius);
+        const double pr = tait_pressure(p_, rho);
         const long ncol = std::max(1L, nint(c.radius / p_.dx));
         const long nrow = std::max(1L, nint((c.zmax - c.zmin) / p_.dz));
         const double dr = c.radius / static_cast<double>(ncol);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/tait.hpp"
+
 namespace sphjet {
 
 NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess,
@@ -61,10 +63,8 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
 }
 
 PlugState plug_state(const SimParams& prm, const NozzleSpec& nz) {
-    if (prm.geometry != Geometry::Axisymmetric || !(prm.B > 0) || prm.sigma == 0) return {prm.rho0, 0.0};
-    const double p = 2 * prm.sigma / nz.d0;
-    const double rho = prm.rho0 * std::pow(1.0 + p / prm.B, 1.0 / prm.gamma);
-    return {rho, prm.B * (std::pow(rho / prm.rho0, prm.gamma) - 1.0)};
+    const double rho = prm.geometry == Geometry::Axisymmetric ? tait_density(prm, 2 * prm.sigma / nz.d0) : prm.rho0;
+    return {rho, tait_pressure(prm, rho)};
 }
 
 ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width, const PlugState& built,
