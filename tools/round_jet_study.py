@@ -381,8 +381,6 @@ def plan(opts):
     extra += numerics_sets(opts)
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
-    if opts.cfl is not None:
-        extra.append(f"time.cfl={opts.cfl:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
     return [(s, name, sets + [e for e in extra if s == "mc" or not e.startswith("fluid.c0=")], info)
             for s, name, sets, info in runs]
@@ -400,8 +398,7 @@ def study_flags(opts):
             + (" --quiet-exit" if opts.quiet_exit else "") + numerics_flags(opts)
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
-            + (" --own-window" if opts.own_window else "")
-            + ("" if opts.cfl is None else f" --cfl {opts.cfl:g}"))
+            + (" --own-window" if opts.own_window else ""))
 
 
 def study_dir(opts):
@@ -412,8 +409,7 @@ def study_dir(opts):
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
             + numerics_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
-            + ("_own" if opts.own_window else "")
-            + ("" if opts.cfl is None else f"_cfl{opts.cfl:g}"))
+            + ("_own" if opts.own_window else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -748,9 +744,6 @@ def parse(argv=None):
                             f"{OWN_START:g} L / U (L its mean from there on), W L / U long; runs are "
                             f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it (needs "
                             f"--quiet-exit's refilling nozzle; suffix _own)")
-        p.add_argument("--cfl", type=float, default=None, metavar="K",
-                       help="time.cfl = K in every run: the Courant number of the variable step "
-                            "(default: the case's, 0.2; suffix _cflK)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -773,8 +766,6 @@ def parse(argv=None):
         ap.error(f"--size-c {args.size_c}: expected a positive number")
     if not args.window > 0:
         ap.error(f"--window {args.window}: expected a positive number of L_ref / U")
-    if args.cfl is not None and not 0 < args.cfl <= 1:
-        ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.own_window and not args.quiet_exit:

@@ -136,10 +136,10 @@ def add_run_arguments(p, set_names, repo):
 
 
 def add_numerics_arguments(p):
-    """--artificial-alpha A, --reconstruct and --c0 C on the subparser p: numerics of every run of
-    a study that the case leaves at their defaults (numerics.artificial_alpha,
-    numerics.artificial_reconstruction, fluid.c0; cases/CASE_FORMAT.md), in a study directory of
-    its own (numerics_tag)."""
+    """--artificial-alpha A, --reconstruct, --c0 C and --cfl K on the subparser p: numerics of every
+    run of a study that the case leaves at their defaults (numerics.artificial_alpha,
+    numerics.artificial_reconstruction, fluid.c0, time.cfl; cases/CASE_FORMAT.md), in a study
+    directory of its own (numerics_tag)."""
     p.add_argument("--artificial-alpha", type=float, default=0.0, metavar="A",
                    help="numerics.artificial_alpha = A in every run, on top of the laminar viscosity "
                         "(default 0: off; directory suffix _alphaA)")
@@ -149,38 +149,47 @@ def add_numerics_arguments(p):
     p.add_argument("--c0", type=float, default=None, metavar="C",
                    help="fluid.c0 = C [m/s] in every run of the measured jets: the sound speed, which "
                         "sets the step (default: the case's, 16; suffix _c0C)")
+    p.add_argument("--cfl", type=float, default=None, metavar="K",
+                   help="time.cfl = K in every run: the Courant number of the variable step "
+                        "(default: the case's, 0.2; suffix _cflK)")
 
 
 def check_numerics(ap, args):
-    """Refuses (ap.error) an alpha outside [0, 1], --reconstruct without an alpha and a sound
-    speed that is not positive."""
+    """Refuses (ap.error) an alpha outside [0, 1], --reconstruct without an alpha, a sound speed
+    that is not positive and a Courant number outside (0, 1]."""
     if not 0 <= args.artificial_alpha <= 1:
         ap.error(f"--artificial-alpha {args.artificial_alpha}: expected in [0, 1]")
     if args.reconstruct and not args.artificial_alpha > 0:
         ap.error("--reconstruct acts on the artificial viscosity of --artificial-alpha: give --artificial-alpha A > 0")
     if args.c0 is not None and not args.c0 > 0:
         ap.error(f"--c0 {args.c0}: expected a positive sound speed [m/s]")
+    if args.cfl is not None and not 0 < args.cfl <= 1:
+        ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
 
 
 def numerics_sets(args):
     """-> the --set overrides of args' numerics, [] when all are the case's."""
     return (([f"numerics.artificial_alpha={args.artificial_alpha:g}"] if args.artificial_alpha > 0 else [])
             + (["numerics.artificial_reconstruction=true"] if args.reconstruct else [])
-            + ([] if args.c0 is None else [f"fluid.c0={args.c0:g}"]))
+            + ([] if args.c0 is None else [f"fluid.c0={args.c0:g}"])
+            + ([] if args.cfl is None else [f"time.cfl={args.cfl:g}"]))
 
 
 def numerics_tag(args):
-    """-> the study directory's suffix for args' numerics: _alphaA, _alphaA_rec, _c0C or ''."""
+    """-> the study directory's suffix for args' numerics: _alphaA, _alphaA_rec, _c0C, _cflK, those
+    together or ''."""
     return ((f"_alpha{args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
             + ("_rec" if args.reconstruct else "")
-            + ("" if args.c0 is None else f"_c0{args.c0:g}"))
+            + ("" if args.c0 is None else f"_c0{args.c0:g}")
+            + ("" if args.cfl is None else f"_cfl{args.cfl:g}"))
 
 
 def numerics_flags(args):
     """-> args' numerics as the command-line flags that give them ('' when all are the case's)."""
     return ((f" --artificial-alpha {args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
             + (" --reconstruct" if args.reconstruct else "")
-            + ("" if args.c0 is None else f" --c0 {args.c0:g}"))
+            + ("" if args.c0 is None else f" --c0 {args.c0:g}")
+            + ("" if args.cfl is None else f" --cfl {args.cfl:g}"))
 
 
 def dispatch(args, run, report, tool):

@@ -236,12 +236,12 @@ def main():
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"),
                             "--window", "0.4", "--cfl", "0.3", "--only", "mc_u0.7814"],
                            capture_output=True, text=True)
-        check("time.cfl=0.3" in p.stdout and "eps0.01_n10_w0.4_cfl0.3" in p.stdout, f"--cfl: {p.stdout}")
+        check("time.cfl=0.3" in p.stdout and "eps0.01_n10_cfl0.3_w0.4" in p.stdout, f"--cfl: {p.stdout}")
         for bad in ("0", "1.5"):
             p = subprocess.run([PY, TOOL, "run", "--dry-run", "--cfl", bad], capture_output=True, text=True)
             check(p.returncode == 2 and "--cfl" in p.stderr, f"--cfl {bad}: exit {p.returncode}")
         check(rjs.study_flags(rjs.parse(["report", "--window", "0.4", "--cfl", "0.3"]))
-              == " --eps 0.01 --d0-over-dx 10 --window 0.4 --cfl 0.3", "the report's run command with --cfl")
+              == " --eps 0.01 --d0-over-dx 10 --cfl 0.3 --window 0.4", "the report's run command with --cfl")
         # --c0 12: the measured jets' sound speed, in a directory of its own; the paper's jets keep 4 m/s
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--c0", "12",
                             "--only", "mc_u0.7814", "paper_u0.2"], capture_output=True, text=True)

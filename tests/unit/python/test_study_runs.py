@@ -173,13 +173,15 @@ class CommandLineTests(unittest.TestCase):
         sr.add_numerics_arguments(sub.add_parser("run"))
         args = ap.parse_args(["run"])
         self.assertEqual((sr.numerics_sets(args), sr.numerics_tag(args), sr.numerics_flags(args)), ([], "", ""))
-        args = ap.parse_args(["run", "--artificial-alpha", "0.02", "--reconstruct", "--c0", "12"])
+        args = ap.parse_args(["run", "--artificial-alpha", "0.02", "--reconstruct", "--c0", "12", "--cfl", "0.25"])
         sr.check_numerics(ap, args)
         self.assertEqual(sr.numerics_sets(args), ["numerics.artificial_alpha=0.02",
-                                                  "numerics.artificial_reconstruction=true", "fluid.c0=12"])
-        self.assertEqual(sr.numerics_tag(args), "_alpha0.02_rec_c012")
-        self.assertEqual(sr.numerics_flags(args), " --artificial-alpha 0.02 --reconstruct --c0 12")
+                                                  "numerics.artificial_reconstruction=true", "fluid.c0=12",
+                                                  "time.cfl=0.25"])
+        self.assertEqual(sr.numerics_tag(args), "_alpha0.02_rec_c012_cfl0.25")
+        self.assertEqual(sr.numerics_flags(args), " --artificial-alpha 0.02 --reconstruct --c0 12 --cfl 0.25")
         for bad, says in ((["--c0", "0"], "expected a positive sound speed"),
+                          (["--cfl", "1.5"], "expected a Courant number in (0, 1]"),
                           (["--reconstruct"], "give --artificial-alpha A > 0")):
             err = io.StringIO()
             with redirect_stderr(err), self.assertRaises(SystemExit):
