@@ -353,8 +353,8 @@ def plan(opts):
     length; axis_pair: domain.axis_pair of every run (None: the case's, the smoothed-radius
     pair), or "rings_own": the rings pair with surface_tension.rings_curvature = "own", or
     "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
-    bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0: the damping and
-    the measured jets' sound speed (study_runs.numerics_sets)."""
+    bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0, cfl: the damping,
+    the measured jets' sound speed and the Courant number (study_runs.numerics_sets)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
