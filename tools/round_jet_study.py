@@ -37,7 +37,7 @@ damps the particles' noise; cases/round_jet/README.md) to every run (suffix _alp
 --reconstruct numerics.artificial_reconstruction, which keeps that damping to the particle-scale
 motion (suffix _alphaA_rec); --c0 C sets the measured jets' sound speed fluid.c0 = C (16 m/s in
 the case; the step is 0.2 h / (c0 + the pinch-offs' velocity differences), so 12 m/s takes 0.84
-of the particle-steps of 16, but its unforced jets are 5-7% longer: the sound speed moves the
+of the particle-steps of 16, but its unforced jets are 5-12% longer: the sound speed moves the
 noise floor; suffix _c0C). --sink M removes, at every check once the jet is
 broken, the drops wholly farther than M d0 past its end (breakup.remove_drops_beyond_d0, a sink
 that follows the jet), so that a run costs its jet's length and not its box's (suffix _sinkM).
