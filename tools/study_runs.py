@@ -167,29 +167,40 @@ def check_numerics(ap, args):
         ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
 
 
+# The shared numerics: (args attribute, case key, directory suffix, flag), in the order of their
+# overrides, suffixes and flags. An option is given when its value is true (an alpha of 0, a
+# sound speed or Courant number left at None and --reconstruct not set are the case's); a switch
+# (True) sets its key to true and adds its suffix and flag alone, a number adds its value to each.
+NUMERICS = (("artificial_alpha", "numerics.artificial_alpha", "_alpha", "--artificial-alpha"),
+            ("reconstruct", "numerics.artificial_reconstruction", "_rec", "--reconstruct"),
+            ("c0", "fluid.c0", "_c0", "--c0"),
+            ("cfl", "time.cfl", "_cfl", "--cfl"))
+
+
+def given_numerics(args):
+    """-> (key, suffix, flag, value) of each of NUMERICS that args give; value '' for a switch."""
+    out = []
+    for attr, key, suffix, flag in NUMERICS:
+        v = getattr(args, attr)
+        if v:
+            out.append((key, suffix, flag, "" if v is True else f"{v:g}"))
+    return out
+
+
 def numerics_sets(args):
     """-> the --set overrides of args' numerics, [] when all are the case's."""
-    return (([f"numerics.artificial_alpha={args.artificial_alpha:g}"] if args.artificial_alpha > 0 else [])
-            + (["numerics.artificial_reconstruction=true"] if args.reconstruct else [])
-            + ([] if args.c0 is None else [f"fluid.c0={args.c0:g}"])
-            + ([] if args.cfl is None else [f"time.cfl={args.cfl:g}"]))
+    return [f"{key}={v or 'true'}" for key, _s, _f, v in given_numerics(args)]
 
 
 def numerics_tag(args):
     """-> the study directory's suffix for args' numerics: _alphaA, _alphaA_rec, _c0C, _cflK, those
     together or ''."""
-    return ((f"_alpha{args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
-            + ("_rec" if args.reconstruct else "")
-            + ("" if args.c0 is None else f"_c0{args.c0:g}")
-            + ("" if args.cfl is None else f"_cfl{args.cfl:g}"))
+    return "".join(suffix + v for _k, suffix, _f, v in given_numerics(args))
 
 
 def numerics_flags(args):
     """-> args' numerics as the command-line flags that give them ('' when all are the case's)."""
-    return ((f" --artificial-alpha {args.artificial_alpha:g}" if args.artificial_alpha > 0 else "")
-            + (" --reconstruct" if args.reconstruct else "")
-            + ("" if args.c0 is None else f" --c0 {args.c0:g}")
-            + ("" if args.cfl is None else f" --cfl {args.cfl:g}"))
+    return "".join(f" {flag}" + (f" {v}" if v else "") for _k, _s, flag, v in given_numerics(args))
 
 
 def dispatch(args, run, report, tool):
