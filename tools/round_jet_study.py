@@ -70,8 +70,10 @@ _own) a run's window comes from its own length instead (own_window): from the fi
 t >= 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
 W L / U later; a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
-10% of its mean, and each third of it within 10% of its mean), so that the short jets of the
-slow speeds cost their own lengths and the long ones get a window past their own start-up. Drops
+10% of its mean, and each third of it within 10% of its mean), or until a window that is not
+steady spans 2 L / U (status "finished, unsteady window": a dripping jet's length wanders), so
+that the short jets of the slow speeds cost their own lengths and the long ones get a window
+past their own start-up. Drops
 (equivalent sphere diameters, satellites are drops smaller than d0): the mean of the main drops
 of the last sample of the window, and the median and the most frequent size (0.1 d0 bins) of the
 main drops of every sample of the window, with the number of drop-samples it is taken over (a
@@ -133,6 +135,12 @@ OWN_DRIFT, OWN_MORE = 0.10, 0.25
 # window (by time) must also hold its mean within OWN_DRIFT of the window's, or within twice that
 # third's standard error, else the run goes on by OWN_MORE L / U.
 OWN_PARTS = 3
+# A window that is still not steady once it spans OWN_LONGEST L / U from its start is not made
+# longer: the jet's length wanders rather than settles (the dripping jets below We_d = 2 pi, whose
+# length drifts by 15-75% over their windows). The run ends there and its length is reported as
+# unsteady, with its drift. The convective runs' windows became whole within 0.54-1.09 of their
+# own L / U from their start (the 0.78, 0.86, 0.88 and 0.96 m/s runs at c0 12 and 16 m/s).
+OWN_LONGEST = 2.0
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -327,8 +335,10 @@ def own_verdict(rows, info, window):
     """--own-window: what a run's jet.csv rows (at least one) say of its window, for `run` and
     `report` alike -> (own_window's dict, verdict, end): verdict "whole" (the rows reach the
     window's need within one check), "capped" (they do not, but reach own_cap within one check:
-    the run is made no longer) or "more", with the end [s] to resume it to (the need and one
-    check more, at most own_cap)."""
+    the run is made no longer), "unsteady" (the window was judged and is still not steady when it
+    spans OWN_LONGEST (or W, if more) of the jet's own L / U, within one check: made no longer) or "more",
+    with the end [s] to resume it to (the need and one check more, at most own_cap and the
+    unsteady window's longest)."""
     every = own_check_every(info["L_ref"], info["U"])
     ow = own_window(rows, info["U"], info["d0"], window, every)
     last, cap = float(rows[-1]["time"]), own_cap(info, window)
@@ -336,6 +346,11 @@ def own_verdict(rows, info, window):
         return ow, "whole", None
     if last >= cap - every:
         return ow, "capped", None
+    if ow["start"] is not None:
+        longest = ow["start"] + max(OWN_LONGEST, window) * max(ow["L"], OWN_MIN_D0) * info["d0"] / info["U"]
+        if ow["drift"] is not None and last >= longest - every:
+            return ow, "unsteady", None
+        cap = min(cap, longest)
     return ow, "more", min(ow["need"] + every, cap)
 
 
@@ -493,6 +508,11 @@ def read_run(run_dir, info):
             if verdict == "capped":
                 r["notes"].append(f"made as long as --own-window goes (t = {own_cap(info, info['W']):.4g} s, "
                                   f"a jet as long as the box) without a whole window" + unsteady(ow))
+            if verdict == "unsteady":
+                r["unsteady"] = True
+                r["notes"].append(f"its window not steady over {OWN_LONGEST:g} of its own L / U "
+                                  f"(from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow)
+                                  + ": the length wanders, made no longer")
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
@@ -553,7 +573,8 @@ def read_run(run_dir, info):
     elif r["finished"] and own_short:
         r["status"] = "unfinished (its own window not reached)"
     elif r["finished"]:
-        r["status"] = "finished" if r["L"] is not None else "finished, no steady breakup"
+        r["status"] = ("finished, no steady breakup" if r["L"] is None else
+                       "finished, unsteady window" if r.get("unsteady") else "finished")
     else:
         r["status"] = "unfinished"
     return r
@@ -745,7 +766,8 @@ def parse(argv=None):
         p.add_argument("--own-window", action="store_true",
                        help=f"each run's window from its own length: from the first sample at t >= "
                             f"{OWN_START:g} L / U (L its mean from there on), W L / U long; runs are "
-                            f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it (needs "
+                            f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it, an unsteady "
+                            f"one for at most {OWN_LONGEST:g} L / U (needs "
                             f"--quiet-exit's refilling nozzle; suffix _own)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "

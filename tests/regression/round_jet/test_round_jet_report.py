@@ -339,6 +339,23 @@ def main():
         ow = rjs.own_window(slow, 0.3441, d0, 0.5)
         check(ow["start"] == 0.061 and abs(ow["need"] - (0.061 + 5 * d0 / 0.3441)) < 1e-12,
               f"own window of a short jet: {ow}")
+        # a dripping jet at 0.3441 m/s whose length wanders between 4 and 8 d0 (a triangle of 60 ms):
+        # its window (from 0.061 s, tau = 10 d0 / U = 0.034698 s) is made longer up to 2 tau from
+        # its start, 0.1304 s, and no further: "unsteady" within a check of it (checks every
+        # 31.85 d0 / (200 U) = 0.55 ms)
+        slow_info = {"U": 0.3441, "d0": d0, "L_ref": 31.85 * d0, "box": rjs.box_below(31.85 * d0, d0),
+                     "own": True, "W": 0.5}
+
+        def wander(t_end):
+            return [{"time": f"{k * 0.0005:.4f}", "broken": "1",
+                     "L_over_d0": f"{4 + 8 * min((k * 0.0005 / 0.06) % 1, 1 - (k * 0.0005 / 0.06) % 1):.6f}"}
+                    for k in range(20, round(t_end / 0.0005) + 1)]
+        longest = 0.061 + 2.0 * 10 * d0 / 0.3441
+        ow, verdict, end = rjs.own_verdict(wander(0.12), slow_info, 0.5)
+        check(verdict == "more" and ow["parts"] > 0.1 and end <= longest + 0.00056, f"wandering, 0.12 s: {verdict} {end}")
+        ow, verdict, end = rjs.own_verdict(wander(0.13), slow_info, 0.5)
+        check(verdict == "unsteady" and end is None, f"wandering, 0.13 s: {verdict} {ow}")
+        check(rjs.own_verdict(grow, info, 0.5)[1] == "whole", "a steady jet is never unsteady")
         # the runs: sized for 10 d0 (2.25 x 10 d0 / U), checks every L_ref / (200 U), a
         # refilling nozzle, in a directory of its own; without --quiet-exit refused
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--axis-pair",
@@ -353,7 +370,7 @@ def main():
         # same lengths at 1.0179 m/s to 0.14 s fall short of their window (from 0.112 s, to 0.1439
         # s): unfinished
         osdir = os.path.join(root, "eps0.01_n10_rings_fit_quiet_w0.5_own")
-        for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136])):
+        for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136]), ("mc_u0.3441", wander(0.13))):
             fake_run(os.path.join(osdir, name), [(float(x["time"]), k, 1, float(x["L_over_d0"]))
                                                  for k, x in enumerate(rows)])
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", os.path.join(tmp, "own"), "--no-figures",
@@ -368,6 +385,11 @@ def main():
         r = rows.get("mc_u1.0179", {})
         check(r.get("status") == "unfinished (its own window not reached)" and r.get("L/d0 SPH (std)") == "- (-)",
               f"short of its own window: {r}")
+        r = rows.get("mc_u0.3441", {})
+        with open(os.path.join(tmp, "own", "round_jets.md")) as f:
+            md = f.read()
+        check(r.get("status") == "finished, unsteady window" and "not steady over 2 of its own L / U" in md
+              and r.get("L/d0 SPH (std)", "-").split()[0] != "-", f"unsteady window: {r}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
