@@ -137,7 +137,7 @@ OWN_DRIFT, OWN_MORE = 0.10, 0.25
 OWN_PARTS = 3
 # A window that is still not steady once it spans OWN_LONGEST L / U from its start is not made
 # longer: the jet's length wanders rather than settles (the dripping jets below We_d = 2 pi, whose
-# length drifts by 15-75% over their windows). The run ends there and its length is reported as
+# windows' lines changed by 33-83% at c0 = 12 m/s). The run ends there and its length is reported as
 # unsteady, with its drift. The convective runs' windows became whole within 0.54-1.09 of their
 # own L / U from their start (the 0.78, 0.86, 0.88 and 0.96 m/s runs at c0 12 and 16 m/s).
 OWN_LONGEST = 2.0
@@ -335,10 +335,10 @@ def own_verdict(rows, info, window):
     """--own-window: what a run's jet.csv rows (at least one) say of its window, for `run` and
     `report` alike -> (own_window's dict, verdict, end): verdict "whole" (the rows reach the
     window's need within one check), "capped" (they do not, but reach own_cap within one check:
-    the run is made no longer), "unsteady" (the window was judged and is still not steady when it
-    spans OWN_LONGEST (or W, if more) of the jet's own L / U, within one check: made no longer) or "more",
-    with the end [s] to resume it to (the need and one check more, at most own_cap and the
-    unsteady window's longest)."""
+    the run is made no longer), "unsteady" (the window was judged and is still not steady when
+    it spans OWN_LONGEST (or W, if more) of the jet's own L / U, within one check: made no
+    longer) or "more", with the end [s] to resume it to (the need and one check more, at most
+    own_cap and the unsteady window's longest)."""
     every = own_check_every(info["L_ref"], info["U"])
     ow = own_window(rows, info["U"], info["d0"], window, every)
     last, cap = float(rows[-1]["time"]), own_cap(info, window)
