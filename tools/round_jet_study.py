@@ -262,8 +262,9 @@ def own_window(rows, u, d0, window, slack=0.0):
     needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their
     trend from t_j on must be flat (OWN_DRIFT) and each of its parts hold the window's mean
     (OWN_PARTS, parts_off). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
-    drift (the window's change along its least-squares line over its mean, or None), parts
-    (parts_off's departure, when the window is judged), need (the end [s] the window needs:
+    tau (max(L_j, OWN_MIN_D0) d0 / U [s], with a start), drift (the window's change along its
+    least-squares line over its mean, or None), parts (parts_off's departure, when the window is
+    judged), need (the end [s] the window needs:
     OWN_MORE L_j / U past the last sample's time while it drifts; without a start, the end that
     a window of the recent length would need, at least OWN_GROWTH times the last sample's
     time)."""
@@ -278,7 +279,7 @@ def own_window(rows, u, d0, window, slack=0.0):
         mean = sums[j] / (len(broken) - j)
         tau = max(mean, OWN_MIN_D0) * d0 / u
         if t >= OWN_START * tau:
-            out = {"start": t, "L": mean, "drift": None, "need": t + window * tau}
+            out = {"start": t, "L": mean, "tau": tau, "drift": None, "need": t + window * tau}
             if float(rows[-1]["time"]) >= out["need"] - slack and len(broken) - j >= 3:
                 change, error = trend(broken[j:])
                 out["drift"] = change / mean
@@ -347,7 +348,7 @@ def own_verdict(rows, info, window):
     if last >= cap - every:
         return ow, "capped", None
     if ow["start"] is not None:
-        longest = ow["start"] + max(OWN_LONGEST, window) * max(ow["L"], OWN_MIN_D0) * info["d0"] / info["U"]
+        longest = ow["start"] + max(OWN_LONGEST, window) * ow["tau"]
         if ow["drift"] is not None and last >= longest - every:
             return ow, "unsteady", None
         cap = min(cap, longest)
@@ -493,7 +494,8 @@ def read_run(run_dir, info):
          "t_first": None,
          "L_first": None, "drops_main": None, "drops_median": None, "drops_mode": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
-         "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False}
+         "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False,
+         "unsteady": False}
     t0 = window_start(info)
     r["t0"] = t0
     own_short = []   # --own-window: the end the window still needs [s], when the run is short of it
@@ -574,7 +576,7 @@ def read_run(run_dir, info):
         r["status"] = "unfinished (its own window not reached)"
     elif r["finished"]:
         r["status"] = ("finished, no steady breakup" if r["L"] is None else
-                       "finished, unsteady window" if r.get("unsteady") else "finished")
+                       "finished, unsteady window" if r["unsteady"] else "finished")
     else:
         r["status"] = "unfinished"
     return r
