@@ -442,8 +442,9 @@ def cmd_run(args):
     infos = {name: info for _s, name, _sets, info in todo}
 
     def more_time(name, run_dir):
-        """--own-window: (the end a finished run is to go on to, why), or None when its window is
-        whole or it cannot have it (a blow-up, no rows, own_cap reached)."""
+        """--own-window: (the end a finished run is to go on to, why); (None, why) when it is made
+        no longer with its window not whole (own_cap reached, or unsteady); None when its window
+        is whole or it cannot have it (a blow-up, no rows)."""
         info = infos[name]
         try:
             rows = read_csv(os.path.join(run_dir, "jet.csv"))
@@ -452,8 +453,14 @@ def cmd_run(args):
         if not rows or blew_up(run_dir):
             return None
         ow, verdict, end = own_verdict(rows, info, args.window)
-        if verdict != "more":
+        if verdict == "whole":
             return None
+        if verdict == "capped":
+            return None, ("as long as --own-window goes (a jet as long as the box) without a whole "
+                          "window" + unsteady(ow))
+        if verdict == "unsteady":
+            return None, (f"its window not steady over {max(OWN_LONGEST, args.window):g} of its own "
+                          f"L / U (from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow))
         why = ("no window yet" if ow["start"] is None else
                f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
                + unsteady(ow))
@@ -512,7 +519,7 @@ def read_run(run_dir, info):
                                   f"a jet as long as the box) without a whole window" + unsteady(ow))
             if verdict == "unsteady":
                 r["unsteady"] = True
-                r["notes"].append(f"its window not steady over {OWN_LONGEST:g} of its own L / U "
+                r["notes"].append(f"its window not steady over {max(OWN_LONGEST, info['W']):g} of its own L / U "
                                   f"(from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow)
                                   + ": the length wanders, made no longer")
             if ow["start"] is not None:

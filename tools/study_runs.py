@@ -297,7 +297,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
     starts no more runs and stops the others with SIGTERM (each keeps a checkpoint). With more
     than one at a time, each run's output lines are printed after its name (prefixed_copy).
     more_time(name, run_dir): for a finished run, None, or (t, why) when it is to go on to the
-    end t [s] (it resumes with --tmax t; asked again when that part ends). -> exit code."""
+    end t [s] (it resumes with --tmax t; asked again when that part ends), or (None, why) when
+    it is made no longer for a reason worth printing beside "done". -> exit code."""
     lock = None
     if not dry_run:
         os.makedirs(sdir, exist_ok=True)
@@ -352,10 +353,13 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             longer = asked.pop(name, None)
             if longer is None and more_time and finished(run_dir):
                 longer = ask(name, run_dir)
+            why_not = f" ({longer[1]})" if longer and longer[0] is None else ""
+            if why_not:
+                longer = None
             state, argv = run_command(sphjet, case, run_dir, sets, threads, longer[0] if longer else tmax,
                                       go_on=bool(longer))
             if state == "done":
-                print(f"{head}: finished, skipped", flush=True)
+                print(f"{head}: finished, skipped{why_not}", flush=True)
                 n_done += 1
                 continue
             what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer
@@ -417,12 +421,12 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
                         failed = 1
                 continue
             longer = ask(name, run_dir) if more_time else None
-            if longer:
+            if longer and longer[0] is not None:
                 asked[name] = longer
                 queue.insert(0, entry)   # made longer next, before the runs not yet started
                 continue
             n_run += 1
-            print(f"{head}: done", flush=True)
+            print(f"{head}: done" + (f" ({longer[1]})" if longer else ""), flush=True)
     if got_signal:
         return 128 + got_signal[0]
     if failed is not None:

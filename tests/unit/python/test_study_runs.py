@@ -263,6 +263,25 @@ class RunAllTests(unittest.TestCase):
         self.assertIn("[1/2] r1: going on to t = 0.4 s", out.getvalue())
         self.assertIn("[2/2] r2: finished, skipped", out.getvalue())
 
+    def test_made_no_longer_with_a_reason(self):
+        # more_time's (None, why): the run ends there and `done` says why, at its end and when a
+        # second `run` skips it; r2's None prints a plain `done`
+        def more_time(name, run_dir):
+            return (None, "its window not steady") if name == "r1" else None
+
+        for finished_line in ("[1/2] r1: done (its window not steady)\n",
+                              "[1/2] r1: finished, skipped (its window not steady)\n"):
+            out = io.StringIO()
+            with redirect_stdout(out), redirect_stderr(io.StringIO()):
+                rc = sr.run_all([("r1", []), ("r2", [])], self.sdir, "c.toml", self.sphjet, 1, None,
+                                False, "study.py run", "a study", self.tmp.name, 1, more_time)
+            self.assertEqual(rc, 0)
+            self.assertIn(finished_line, out.getvalue())
+            self.assertNotIn("going on", out.getvalue())
+        self.assertIn("[2/2] r2: finished, skipped\n", out.getvalue())
+        with open(os.path.join(self.sdir, "r1", "run.log")) as f:
+            self.assertEqual(f.read().count("resuming"), 0)
+
     def test_a_failing_more_time_leaves_the_run_as_it_is(self):
         def more_time(name, run_dir):
             raise KeyError("L_over_d0")
