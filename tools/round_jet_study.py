@@ -82,7 +82,8 @@ drop counts once for each sample it is seen in).
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
 C in L / d0 = C x through the origin to the measurements and to the runs, and a line
-L / d0 = C x + b with its R^2 to each. The paper's eq 37 is the same form with radius groups
+L / d0 = C x + b with its R^2 to each, over every speed and over the convectively unstable
+ones alone (We_d >= 2 pi: the speeds where a jet without gravity can stand). The paper's eq 37 is the same form with radius groups
 (We = We_d / 2, Oh = Oh_d sqrt 2) and C = 13.
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
@@ -604,6 +605,7 @@ def report(args):
               "particles", "wall [s]"]
     rows, missing, notes = [], [], []
     xs_m, ys_m, xs_s, ys_s = [], [], [], []
+    conv_m, conv_s = ([], []), ([], [])   # the same, We_d >= 2 pi only
     cs_conv, cs_abs = [], []   # measured C = L / (d0 x), convectively and absolutely unstable speeds
     for s, name, info, r in runs:
         g = groups(info["U"], info["d0"])
@@ -613,11 +615,15 @@ def report(args):
                else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
         if info["L_meas"] is not None:
             xs_m.append(g["x"]), ys_m.append(info["L_meas"])
+            if not absolutely_unstable(g["We_d"]):
+                conv_m[0].append(g["x"]), conv_m[1].append(info["L_meas"])
             (cs_abs if absolutely_unstable(g["We_d"]) else cs_conv).append(info["L_meas"] / g["x"])
         if r["notes"]:
             notes.append(f"{name}: " + "; ".join(r["notes"]))
         if s == "mc" and r["L"] is not None:
             xs_s.append(g["x"]), ys_s.append(r["L"])
+            if not absolutely_unstable(g["We_d"]):
+                conv_s[0].append(g["x"]), conv_s[1].append(r["L"])
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
                      f"{fmt(r['L'])} ({fmt(r['L_std'])})",
@@ -659,7 +665,11 @@ def report(args):
             f"| | C of L/d0 = C x | line |\n|---|---|---|\n"
             f"| measured ({len(xs_m)} jets) | "
             f"{fmt(c_m)} | {line_text(line_m)} |\n"
-            f"| SPH ({len(xs_s)} runs) | {fmt(c_s)} | {line_text(line_s)} |\n\n"
+            f"| SPH ({len(xs_s)} runs) | {fmt(c_s)} | {line_text(line_s)} |\n"
+            f"| measured, We_d >= 2 pi ({len(conv_m[0])} jets) | {fmt(fit_origin(*conv_m))} | "
+            f"{line_text(fit_line(*conv_m))} |\n"
+            f"| SPH, We_d >= 2 pi ({len(conv_s[0])} runs) | {fmt(fit_origin(*conv_s))} | "
+            f"{line_text(fit_line(*conv_s))} |\n\n"
             f"One C for every speed, with every length within {LENGTH_TOL:.0%} of the measured one "
             f"(max C / {1 + LENGTH_TOL:g} to min C / {1 - LENGTH_TOL:g} of the measured C = L/(d0 x)):\n"
             f"- the {len(cs_conv)} speeds with We_d >= 2 pi (convectively unstable): {band_text(cs_conv)};\n"
