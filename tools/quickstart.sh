@@ -4,7 +4,7 @@
 # disturbance) in the axisymmetric mode, with the round-jet study's numerics
 # (cases/round_jet/README.md) at a coarse d0/dx = 6 and a short window (0.4 L/U from
 # 1.5 L/U), then print its breakup length beside the measurement and the theory, and its main
-# drops beside Rayleigh's. About 2.5-3 minutes on two cores once built
+# drops beside Rayleigh's. About 2.5-5 minutes on two cores once built
 # (the first build of the driver, about 2.5 minutes more). Output goes to
 # runs/quickstart/.../mc_u1.2545/ (open sphjet.xmf in ParaView; jet.csv and drops.csv are the
 # breakup record). The paper's planar jets are cases/jet/ and tools/jet_study.py.
