@@ -83,8 +83,8 @@ Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
 C in L / d0 = C x through the origin to the measurements and to the runs, and a line
 L / d0 = C x + b with its R^2 to each, over every speed and over the convectively unstable
-ones alone (We_d >= 2 pi: the speeds where a jet without gravity can stand). The paper's eq 37 is the same form with radius groups
-(We = We_d / 2, Oh = Oh_d sqrt 2) and C = 13.
+ones alone (We_d >= 2 pi: the speeds where a jet without gravity can stand). The paper's eq 37
+is the same form with radius groups (We = We_d / 2, Oh = Oh_d sqrt 2) and C = 13.
 
 `run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
 `report --brief` prints each run in a few lines instead of the table: its length beside the
@@ -609,20 +609,21 @@ def report(args):
     cs_conv, cs_abs = [], []   # measured C = L / (d0 x), convectively and absolutely unstable speeds
     for s, name, info, r in runs:
         g = groups(info["U"], info["d0"])
+        convective = not absolutely_unstable(g["We_d"])
         if r["status"] == "missing":
             missing.append(name)
         err = (None if r["L"] is None or info["L_meas"] is None
                else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
         if info["L_meas"] is not None:
             xs_m.append(g["x"]), ys_m.append(info["L_meas"])
-            if not absolutely_unstable(g["We_d"]):
+            if convective:
                 conv_m[0].append(g["x"]), conv_m[1].append(info["L_meas"])
-            (cs_abs if absolutely_unstable(g["We_d"]) else cs_conv).append(info["L_meas"] / g["x"])
+            (cs_conv if convective else cs_abs).append(info["L_meas"] / g["x"])
         if r["notes"]:
             notes.append(f"{name}: " + "; ".join(r["notes"]))
         if s == "mc" and r["L"] is not None:
             xs_s.append(g["x"]), ys_s.append(r["L"])
-            if not absolutely_unstable(g["We_d"]):
+            if convective:
                 conv_s[0].append(g["x"]), conv_s[1].append(r["L"])
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
@@ -634,7 +635,7 @@ def report(args):
                      fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(None if info['L_meas'] is None else info['L_meas'] / g['x'], '.1f')} / "
                      f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",
-                     "absolute" if absolutely_unstable(g["We_d"]) else "convective",
+                     "convective" if convective else "absolute",
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
