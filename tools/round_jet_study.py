@@ -333,6 +333,16 @@ def unsteady(ow):
             + (f", a third of it {100 * ow['parts']:.0f}% off its mean" if ow.get("parts") else ""))
 
 
+def no_longer(ow, verdict, info, window):
+    """--own-window: why a run whose own_verdict is "capped" or "unsteady" is made no longer, as
+    `run` prints it beside "done" and `report` notes it."""
+    if verdict == "capped":
+        return (f"made as long as --own-window goes (t = {own_cap(info, window):.4g} s, a jet as long "
+                f"as the box) without a whole window" + unsteady(ow))
+    return (f"its window not steady over {max(OWN_LONGEST, window):g} of its own L / U (from t = "
+            f"{ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow) + ": the length wanders, made no longer")
+
+
 def own_verdict(rows, info, window):
     """--own-window: what a run's jet.csv rows (at least one) say of its window, for `run` and
     `report` alike -> (own_window's dict, verdict, end): verdict "whole" (the rows reach the
@@ -456,12 +466,8 @@ def cmd_run(args):
         ow, verdict, end = own_verdict(rows, info, args.window)
         if verdict == "whole":
             return None
-        if verdict == "capped":
-            return None, ("as long as --own-window goes (a jet as long as the box) without a whole "
-                          "window" + unsteady(ow))
-        if verdict == "unsteady":
-            return None, (f"its window not steady over {max(OWN_LONGEST, args.window):g} of its own "
-                          f"L / U (from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow))
+        if verdict != "more":
+            return None, no_longer(ow, verdict, info, args.window)
         why = ("no window yet" if ow["start"] is None else
                f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
                + unsteady(ow))
@@ -515,14 +521,9 @@ def read_run(run_dir, info):
             if verdict == "more":
                 own_short.append(ow["need"])
                 return first_breakup(rows), []
-            if verdict == "capped":
-                r["notes"].append(f"made as long as --own-window goes (t = {own_cap(info, info['W']):.4g} s, "
-                                  f"a jet as long as the box) without a whole window" + unsteady(ow))
-            if verdict == "unsteady":
-                r["unsteady"] = True
-                r["notes"].append(f"its window not steady over {max(OWN_LONGEST, info['W']):g} of its own L / U "
-                                  f"(from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow)
-                                  + ": the length wanders, made no longer")
+            if verdict in ("capped", "unsteady"):
+                r["notes"].append(no_longer(ow, verdict, info, info["W"]))
+                r["unsteady"] = verdict == "unsteady"
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
@@ -604,9 +605,7 @@ def report(args):
               "drops (satellites)", "status",
               "particles", "wall [s]"]
     rows, missing, notes = [], [], []
-    xs_m, ys_m, xs_s, ys_s = [], [], [], []
-    conv_m, conv_s = ([], []), ([], [])   # the same, We_d >= 2 pi only
-    cs_conv, cs_abs = [], []   # measured C = L / (d0 x), convectively and absolutely unstable speeds
+    pts_m, pts_s = [], []   # (x, L/d0, convectively unstable) of the measured jets and the runs
     for s, name, info, r in runs:
         g = groups(info["U"], info["d0"])
         convective = not absolutely_unstable(g["We_d"])
@@ -615,16 +614,11 @@ def report(args):
         err = (None if r["L"] is None or info["L_meas"] is None
                else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
         if info["L_meas"] is not None:
-            xs_m.append(g["x"]), ys_m.append(info["L_meas"])
-            if convective:
-                conv_m[0].append(g["x"]), conv_m[1].append(info["L_meas"])
-            (cs_conv if convective else cs_abs).append(info["L_meas"] / g["x"])
+            pts_m.append((g["x"], info["L_meas"], convective))
         if r["notes"]:
             notes.append(f"{name}: " + "; ".join(r["notes"]))
         if s == "mc" and r["L"] is not None:
-            xs_s.append(g["x"]), ys_s.append(r["L"])
-            if convective:
-                conv_s[0].append(g["x"]), conv_s[1].append(r["L"])
+            pts_s.append((g["x"], r["L"], convective))
         rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
                      fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
                      f"{fmt(r['L'])} ({fmt(r['L_std'])})",
@@ -644,11 +638,21 @@ def report(args):
         w = csv.writer(f)
         w.writerow(header)
         w.writerows(rows)
-    c_m, c_s = fit_origin(xs_m, ys_m), fit_origin(xs_s, ys_s)
-    line_m, line_s = fit_line(xs_m, ys_m), fit_line(xs_s, ys_s)
+    def convective_only(pts):
+        return [p for p in pts if p[2]]
 
-    def line_text(fit):
-        return "-" if fit is None else f"L/d0 = {fit[0]:.2f} x {fit[1]:+.1f}, R^2 = {fit[2]:.3f}"
+    def origin_c(pts):
+        return fit_origin([p[0] for p in pts], [p[1] for p in pts])
+
+    def fit_row(label, pts, what):
+        """A row of the fits table: C through the origin and the line over pts ((x, L/d0, _))."""
+        line = fit_line([p[0] for p in pts], [p[1] for p in pts])
+        return (f"| {label} ({len(pts)} {what}) | {fmt(origin_c(pts))} | "
+                + ("-" if line is None else f"L/d0 = {line[0]:.2f} x {line[1]:+.1f}, R^2 = {line[2]:.3f}")
+                + " |\n")
+
+    cs_all = [y / x for x, y, _c in pts_m]   # the measured C = L / (d0 x)
+    cs_conv = [y / x for x, y, _c in convective_only(pts_m)]
 
     def band_text(cs):
         band = one_c_band(cs, LENGTH_TOL)
@@ -662,21 +666,17 @@ def report(args):
             f"{args.d0_over_dx:g}, nozzle disturbance {args.eps:g} (plug speed u0 (1 + eps "
             f"sin(omega t)), k a = 0.697), the same for every run.\n\n"
             + md_table(header, rows) +
-            f"\nFits over the Mansour & Chigier speeds (x = sqrt(We_d)(1 + 3 Oh_d)):\n\n"
-            f"| | C of L/d0 = C x | line |\n|---|---|---|\n"
-            f"| measured ({len(xs_m)} jets) | "
-            f"{fmt(c_m)} | {line_text(line_m)} |\n"
-            f"| SPH ({len(xs_s)} runs) | {fmt(c_s)} | {line_text(line_s)} |\n"
-            f"| measured, We_d >= 2 pi ({len(conv_m[0])} jets) | {fmt(fit_origin(*conv_m))} | "
-            f"{line_text(fit_line(*conv_m))} |\n"
-            f"| SPH, We_d >= 2 pi ({len(conv_s[0])} runs) | {fmt(fit_origin(*conv_s))} | "
-            f"{line_text(fit_line(*conv_s))} |\n\n"
+            "\nFits over the Mansour & Chigier speeds (x = sqrt(We_d)(1 + 3 Oh_d)):\n\n"
+            "| | C of L/d0 = C x | line |\n|---|---|---|\n"
+            + fit_row("measured", pts_m, "jets") + fit_row("SPH", pts_s, "runs")
+            + fit_row("measured, We_d >= 2 pi", convective_only(pts_m), "jets")
+            + fit_row("SPH, We_d >= 2 pi", convective_only(pts_s), "runs") + "\n"
             f"One C for every speed, with every length within {LENGTH_TOL:.0%} of the measured one "
             f"(max C / {1 + LENGTH_TOL:g} to min C / {1 - LENGTH_TOL:g} of the measured C = L/(d0 x)):\n"
             f"- the {len(cs_conv)} speeds with We_d >= 2 pi (convectively unstable): {band_text(cs_conv)};\n"
-            f"- all {len(cs_conv) + len(cs_abs)} speeds: {band_text(cs_conv + cs_abs)}.\n"
+            f"- all {len(cs_all)} speeds: {band_text(cs_all)}.\n"
             f"Below We_d = 2 pi a jet without gravity is absolutely unstable (Leib & Goldstein 1986) "
-            f"and breaks near the orifice: {len(cs_abs)} of the measured speeds, where this model (no gravity) "
+            f"and breaks near the orifice: {len(cs_all) - len(cs_conv)} of the measured speeds, where this model (no gravity) "
             f"cannot form the measured jet.\n\n"
             f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
             f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
@@ -684,7 +684,7 @@ def report(args):
     with open(os.path.join(args.out, "round_jets.md"), "w") as f:
         f.write(text)
     if not args.no_figures:
-        figure(args.out, runs, c_m, c_s)
+        figure(args.out, runs, origin_c(pts_m), origin_c(pts_s))
     if args.brief:
         c_all = measured_c()
         text = "\n\n".join(brief(sdir, args, name, info, r, c_all) for _s, name, info, r in runs)
