@@ -17,6 +17,7 @@ module sphjet_types
     integer(c_int) :: kernel = 5             !< 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland
     integer(c_int) :: density_filter = 0     !< 0 none, 1 Shepard, 2 MLS
     integer(c_int) :: tensile = 0            !< 1: tensile-instability correction on
+    integer(c_int) :: integrator = 1         !< 1 predictor-corrector, 2 leapfrog (fluid alone)
     real(c_double) :: h = 0.0_rp             !< smoothing length [m]
     real(c_double) :: xsph_eps = 0.5_rp      !< XSPH epsilon
     real(c_double) :: density_diffusion = 0.0_rp !< delta of the density diffusion; 0 = off
@@ -150,7 +151,8 @@ module sphjet_types
     integer(c_int64_t) :: n_removed = 0  !< out: particles removed in this step
     integer(c_int64_t) :: bad_particle = -1 !< out: 0-based index of the offending particle
     integer(c_int) :: bad_cause = 0      !< out: status code of the failure
-    integer(c_int) :: pad = 0
+    integer(c_int) :: rates_kept = 0     !< in/out (leapfrog): 1 when ax, az, ar and XSPH are the
+                                         !< rates of the state as it is
   end type sph_step_info_t
 
   !> Internal view of the arrays.

@@ -818,6 +818,9 @@ def parse(argv=None):
                  "refilling nozzle")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
+    if args.leapfrog and not args.quiet_exit:
+        ap.error("--leapfrog needs the bulk viscosity of --quiet-exit (numerics.integrator = \"leapfrog\" "
+                 "is refused without numerics.bulk_viscosity > 0)")
     check_numerics(ap, args)
     if not args.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {args.d0_over_dx}: expected >= 4 (2 rings across the radius)")

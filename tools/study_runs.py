@@ -136,10 +136,10 @@ def add_run_arguments(p, set_names, repo):
 
 
 def add_numerics_arguments(p):
-    """--artificial-alpha A, --reconstruct, --c0 C and --cfl K on the subparser p: numerics of every
-    run of a study that the case leaves at their defaults (numerics.artificial_alpha,
-    numerics.artificial_reconstruction, fluid.c0, time.cfl; cases/CASE_FORMAT.md), in a study
-    directory of its own (numerics_tag)."""
+    """--artificial-alpha A, --reconstruct, --c0 C, --cfl K and --leapfrog on the subparser p:
+    numerics of every run of a study that the case leaves at their defaults
+    (numerics.artificial_alpha, numerics.artificial_reconstruction, fluid.c0, time.cfl,
+    numerics.integrator; cases/CASE_FORMAT.md), in a study directory of its own (numerics_tag)."""
     p.add_argument("--artificial-alpha", type=float, default=0.0, metavar="A",
                    help="numerics.artificial_alpha = A in every run, on top of the laminar viscosity "
                         "(default 0: off; directory suffix _alphaA)")
@@ -152,6 +152,9 @@ def add_numerics_arguments(p):
     p.add_argument("--cfl", type=float, default=None, metavar="K",
                    help="time.cfl = K in every run: the Courant number of the variable step "
                         "(default: the case's, 0.2; suffix _cflK)")
+    p.add_argument("--leapfrog", action="store_true",
+                   help="numerics.integrator = \"leapfrog\" in every run: one evaluation of the rates "
+                        "per step instead of the predictor-corrector's two (suffix _lf)")
 
 
 def check_numerics(ap, args):
@@ -167,40 +170,43 @@ def check_numerics(ap, args):
         ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
 
 
-# The shared numerics: (args attribute, case key, directory suffix, flag), in the order of their
-# overrides, suffixes and flags. An option is given when its value is true (an alpha of 0, a
-# sound speed or Courant number left at None and --reconstruct not set are the case's); a switch
-# (True) sets its key to true and adds its suffix and flag alone, a number adds its value to each.
-NUMERICS = (("artificial_alpha", "numerics.artificial_alpha", "_alpha", "--artificial-alpha"),
-            ("reconstruct", "numerics.artificial_reconstruction", "_rec", "--reconstruct"),
-            ("c0", "fluid.c0", "_c0", "--c0"),
-            ("cfl", "time.cfl", "_cfl", "--cfl"))
+# The shared numerics: (args attribute, case key, directory suffix, flag, the value a switch
+# sets), in the order of their overrides, suffixes and flags. An option is given when its value
+# is true (an alpha of 0, a sound speed or Courant number left at None and a switch not set are
+# the case's); a switch (True) sets its key to its value and adds its suffix and flag alone, a
+# number adds its value to each.
+NUMERICS = (("artificial_alpha", "numerics.artificial_alpha", "_alpha", "--artificial-alpha", None),
+            ("reconstruct", "numerics.artificial_reconstruction", "_rec", "--reconstruct", "true"),
+            ("c0", "fluid.c0", "_c0", "--c0", None),
+            ("cfl", "time.cfl", "_cfl", "--cfl", None),
+            ("leapfrog", "numerics.integrator", "_lf", "--leapfrog", "leapfrog"))
 
 
 def given_numerics(args):
-    """-> (key, suffix, flag, value) of each of NUMERICS that args give; value '' for a switch."""
+    """-> (key, suffix, flag, value, set) of each of NUMERICS that args give: value '' for a
+    switch, set the value its key is set to."""
     out = []
-    for attr, key, suffix, flag in NUMERICS:
+    for attr, key, suffix, flag, on in NUMERICS:
         v = getattr(args, attr)
         if v:
-            out.append((key, suffix, flag, "" if v is True else f"{v:g}"))
+            out.append((key, suffix, flag, "" if v is True else f"{v:g}", on if v is True else f"{v:g}"))
     return out
 
 
 def numerics_sets(args):
     """-> the --set overrides of args' numerics, [] when all are the case's."""
-    return [f"{key}={v or 'true'}" for key, _s, _f, v in given_numerics(args)]
+    return [f"{key}={value}" for key, _s, _f, _v, value in given_numerics(args)]
 
 
 def numerics_tag(args):
     """-> the study directory's suffix for args' numerics: _alphaA, _alphaA_rec, _c0C, _cflK, those
     together or ''."""
-    return "".join(suffix + v for _k, suffix, _f, v in given_numerics(args))
+    return "".join(suffix + v for _k, suffix, _f, v, _set in given_numerics(args))
 
 
 def numerics_flags(args):
     """-> args' numerics as the command-line flags that give them ('' when all are the case's)."""
-    return "".join(f" {flag}" + (f" {v}" if v else "") for _k, _s, flag, v in given_numerics(args))
+    return "".join(f" {flag}" + (f" {v}" if v else "") for _k, _s, flag, v, _set in given_numerics(args))
 
 
 def dispatch(args, run, report, tool):

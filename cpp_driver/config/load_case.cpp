@@ -22,6 +22,22 @@ LoadedCase load_case(const fs::path& path, const std::vector<std::string>& overr
         InitialState init = generate(lc.spec);
         lc.spec.params = init.params;
         lc.particles = std::move(init.particles);
+        if (lc.spec.params.integrator == Integrator::Leapfrog) {
+            const std::string where = path.string() + ": numerics.integrator";
+            if (lc.particles.nb > 0)
+                throw InputError(where, "the leapfrog advances fluid particles alone; this case has boundary particles",
+                                 "numerics.integrator = \"predictor_corrector\", or a case without walls, "
+                                 "obstacles, nozzle walls or a gate",
+                                 std::to_string(lc.particles.nb) + " boundary particles");
+            // its prediction amplifies an undamped sound wave twice as fast as the
+            // predictor-corrector (fortran_core/integrate/leapfrog.f90)
+            if (!(lc.spec.params.bulk_viscosity > 0))
+                throw InputError(where, "the leapfrog needs the bulk viscosity, which damps the sound waves "
+                                        "its prediction amplifies",
+                                 "numerics.bulk_viscosity > 0 (e.g. 0.5), or numerics.integrator = "
+                                 "\"predictor_corrector\"",
+                                 "numerics.bulk_viscosity = 0");
+        }
         return lc;
     }
     if (!overrides.empty())

@@ -31,6 +31,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.numerics.kernel = static_cast<int>(p.kernel);
     c.numerics.density_filter = static_cast<int>(p.density_filter);
     c.numerics.tensile = p.tensile_on() ? 1 : 0;
+    c.numerics.integrator = static_cast<int>(p.integrator);
     c.numerics.h = p.h;
     c.numerics.xsph_eps = p.xsph_eps;
     c.numerics.density_diffusion = p.density_diffusion;
@@ -225,6 +226,7 @@ StepReport Solver::step(bool fields) {
     info.dt = state_.dt;
     info.time = state_.time;
     info.dbc_counter = state_.dbc_counter;
+    info.rates_kept = rates_kept_ ? 1 : 0;
     // A disturbed nozzle: the plug speed over this step (SimParams::drive_eps).
     if (params_.drive_eps != 0.0)
         prm_.nozzle.u = params_.drive_u * (1.0 + params_.drive_eps * std::sin(params_.drive_omega * state_.time));
@@ -252,6 +254,7 @@ StepReport Solver::step(bool fields) {
     state_.dt_cv = info.dt_cv;
     state_.dt_new = info.dt_new;
     state_.dbc_counter = info.dbc_counter;
+    rates_kept_ = info.rates_kept != 0;
     state_.n_removed += info.n_removed;
     return r;
 }
@@ -261,6 +264,7 @@ void Solver::density_filter() {
     int64_t singular = 0;
     const int status = sph_density_filter(ws_, &prm_, &arr_, &singular);
     if (status != SPH_OK) fail(status, -1, "density filter");
+    rates_kept_ = false;
 }
 
 void Solver::density_filter_if_due() {
@@ -286,15 +290,17 @@ std::size_t Solver::deactivate(const std::vector<std::size_t>& indices) {
         ++n;
     }
     if (n > 0) {
+        rates_kept_ = false;
         std::fill(list_x_.begin(), list_x_.end(), std::numeric_limits<double>::quiet_NaN());
         std::fill(list_z_.begin(), list_z_.end(), std::numeric_limits<double>::quiet_NaN());
     }
     return n;
 }
 
-std::size_t Solver::append_fluid(const ParticleSet& more) {
+std::size_t Solver::append_fluid(const ParticleSet& more, bool plug_rows) {
     const std::size_t n0 = ps_.size(), k = more.size();
     if (k == 0) return 0;
+    if (!plug_rows) rates_kept_ = false;
     for (std::size_t i = 0; i < k; ++i)
         (void)ps_.push(more.x[i], more.z[i], more.u[i], more.w[i], more.rho[i], more.p[i], more.m[i],
                        ParticleKind::Fluid);
@@ -349,6 +355,7 @@ double Solver::compute_rates() {
 }
 
 double Solver::rates_of_edited_state() {
+    rates_kept_ = false;
     std::fill(ar_.begin(), ar_.end(), 0.0);
     const int status = sph_eos(&prm_, static_cast<int64_t>(ps_.size()), ps_.rho.data(), ps_.p.data(), c_.data());
     if (status != SPH_OK) fail(status, -1, "equation of state");
@@ -363,6 +370,16 @@ void Solver::set_list_positions(const std::vector<double>& x, const std::vector<
 
 void Solver::set_density_rates(const std::vector<double>& drho_dt) {
     if (drho_dt.size() == ar_.size()) std::copy(drho_dt.begin(), drho_dt.end(), ar_.begin());
+}
+
+void Solver::set_kept_rates(const std::vector<const std::vector<double>*>& ax_az_ar_xu_xw) {
+    std::vector<double>* dst[] = {&ax_, &az_, &ar_, &xu_, &xw_};
+    rates_kept_ = false;
+    if (ax_az_ar_xu_xw.size() != 5) return;
+    for (std::size_t k = 0; k < 5; ++k)
+        if (ax_az_ar_xu_xw[k] == nullptr || ax_az_ar_xu_xw[k]->size() != dst[k]->size()) return;
+    for (std::size_t k = 0; k < 5; ++k) std::copy(ax_az_ar_xu_xw[k]->begin(), ax_az_ar_xu_xw[k]->end(), dst[k]->begin());
+    rates_kept_ = true;
 }
 
 std::vector<ExtraField> Solver::wall_geometry() const {

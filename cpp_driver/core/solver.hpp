@@ -56,8 +56,11 @@ public:
     std::size_t deactivate(const std::vector<std::size_t>& indices);
     // Appends fluid particles (ids: their indices), at rest in the integrator's sense (no
     // rates yet), their pressure and sound speed from their densities; the pairs are listed
-    // again at the next step. Returns how many.
-    std::size_t append_fluid(const ParticleSet& more);
+    // again at the next step. The leapfrog's rates kept from the last step are then
+    // evaluated again, unless plug_rows: rows entering a driven nozzle's plug, whose rates
+    // are zero (every neighbour moves with the same velocity, none across the axis) and add
+    // nothing to their neighbours'. Returns how many.
+    std::size_t append_fluid(const ParticleSet& more, bool plug_rows = false);
     // domain.split_axis_rings: each ring too heavy for its radius (sph_axis_rings_to_split)
     // becomes two of half its mass, at z + dz/2 (itself) and z - dz/2 (appended), with its
     // velocity, density and pressure: mass, momentum and centre of mass kept. Returns how many
@@ -97,6 +100,11 @@ public:
     // The density rates of the last evaluation, as a checkpoint kept them (the bulk viscosity
     // uses them in the next one); ignored unless one per particle.
     void set_density_rates(const std::vector<double>& drho_dt);
+    // numerics.integrator = "leapfrog": whether ax, az, ar and the XSPH correction hold the
+    // rates of the state as it is (the last step's end), which a checkpoint keeps; set them
+    // (arrays of another length leave the rates to be evaluated at the next step's start).
+    [[nodiscard]] bool rates_kept() const { return rates_kept_; }
+    void set_kept_rates(const std::vector<const std::vector<double>*>& ax_az_ar_xu_xw);
     // Repulsive-wall geometry (unit normal, spacing to the wall neighbours; empty for other
     // boundaries). sph_prepare computes it from the positions at construction: a moving gate
     // would give it again from moved positions, which round differently, so a checkpoint
@@ -133,6 +141,7 @@ private:
     std::vector<double> colour_, st_nx_, st_nz_, kappa_;
     std::vector<double> list_x_, list_z_;
     std::size_t rings_split_unasked_ = 0;
+    bool rates_kept_ = false;  // leapfrog: the rates arrays are the current state's
     std::vector<char> was_active_;  // active flags before the last step with a removal
     void* ws_ = nullptr;
 };

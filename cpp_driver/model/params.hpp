@@ -11,7 +11,7 @@ namespace sphjet {
 
 // Numbering follows the legacy case file so that legacy values map one to one.
 enum class KernelType : int { Gaussian = 1, Quadratic = 2, CubicSpline = 3, Wendland = 5 };
-enum class Integrator : int { PredictorCorrector = 1 };
+enum class Integrator : int { PredictorCorrector = 1, Leapfrog = 2 };
 enum class DensityFilter : int { None = 0, Shepard = 1, MLS = 2 };
 enum class ViscosityModel : int { Artificial = 1, Laminar = 2 };
 enum class BoundaryType : int { Repulsive = 1, Dynamic = 2 };
@@ -63,7 +63,8 @@ struct EnumNames<KernelType> {
 };
 template <>
 struct EnumNames<Integrator> {
-    static constexpr NameTable<Integrator, 1> list{{{"predictor_corrector", Integrator::PredictorCorrector}}};
+    static constexpr NameTable<Integrator, 2> list{
+        {{"predictor_corrector", Integrator::PredictorCorrector}, {"leapfrog", Integrator::Leapfrog}}};
 };
 template <>
 struct EnumNames<DensityFilter> {

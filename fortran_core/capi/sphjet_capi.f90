@@ -11,7 +11,7 @@ module sphjet_capi
                           GEOM_PLANAR, GEOM_AXISYMMETRIC, AXIS_PAIR_SMOOTHED_RADIUS, &
                           AXIS_PAIR_RINGS, RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN, &
                           CURV_NORMALS_ALL, CURV_NORMALS_BAND, CURVATURE_NORMALS, &
-                          CURVATURE_SURFACE_FIT
+                          CURVATURE_SURFACE_FIT, INTEGRATOR_PC, INTEGRATOR_LEAPFROG
   use sphjet_types, only: sph_params_t, sph_arrays_t, sph_step_info_t, state_t, bind_state
   use sphjet_kernels, only: kernel_t, kernel_setup, kernel_eval, kernel_valid
   use sorted_state, only: sorted_t, R_AX, R_AZ
@@ -19,6 +19,7 @@ module sphjet_capi
   use traversal, only: pair_list_t, build_row_pairs, PAIRS_ALL
   use rates, only: compute_rates
   use predictor_corrector, only: pc_step, update_eos
+  use leapfrog, only: lf_step
   use filter_loops, only: apply_density_filter
   use state_checks, only: check_finite, rings_to_split
   use repulsive_wall, only: wall_normal
@@ -108,7 +109,8 @@ contains
       .and. any(prm%surface_tension%curvature == [CURVATURE_NORMALS, CURVATURE_SURFACE_FIT]) &
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
-      .and. any(prm%viscosity%reconstruct == [0, 1])
+      .and. any(prm%viscosity%reconstruct == [0, 1]) &
+      .and. any(prm%numerics%integrator == [INTEGRATOR_PC, INTEGRATOR_LEAPFROG])
     ! a period must hold the images of both ends apart (two kernel supports)
     if (prm%geometry%periodic_z /= 0) params_ok = params_ok .and. &
       prm%domain%zmax - prm%domain%zmin > 4.0_rp * prm%numerics%h
@@ -169,7 +171,11 @@ contains
     info%bad_particle = -1
     info%bad_cause = SPH_OK
     nt = share_threads(st%n)
-    call pc_step(prm, kern, st, ws%sorted, info, status)
+    if (prm%numerics%integrator == INTEGRATOR_LEAPFROG) then
+      call lf_step(prm, kern, st, ws%sorted, info, status)
+    else
+      call pc_step(prm, kern, st, ws%sorted, info, status)
+    end if
     call omp_set_num_threads(nt)
     if (status /= SPH_OK) return
     if (prm%time_step%variable_dt /= 0 .and. info%dt_next < prm%time_step%dt_min) then

@@ -32,6 +32,7 @@ typedef struct sph_numerics_t {
     int kernel;               /* 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland */
     int density_filter;       /* 0 none, 1 Shepard, 2 MLS */
     int tensile;              /* 1: tensile-instability correction on */
+    int integrator;           /* 1 predictor-corrector, 2 leapfrog (fluid particles alone) */
     double h;                 /* smoothing length [m] */
     double xsph_eps;          /* XSPH epsilon */
     double density_diffusion; /* delta of the density diffusion (delta-SPH); 0 = off */
@@ -173,7 +174,8 @@ typedef struct sph_step_info_t {
     int64_t n_removed;        /* out: particles removed in this step */
     int64_t bad_particle;     /* out: 0-based index of the offending particle, -1 if none */
     int bad_cause;            /* out: status of the failure */
-    int pad;
+    int rates_kept;           /* in/out (leapfrog): 1 when ax, az, ar and the XSPH correction
+                                 are the rates of the state as it is */
 } sph_step_info_t;
 
 void* sph_workspace_create(void);
