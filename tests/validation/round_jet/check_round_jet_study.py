@@ -79,10 +79,11 @@ def drop_stale_runs(sphjet, sdir, runs=RUNS):
             shutil.rmtree(sdir / name)
 
 
-def run_and_report(tool, common, sphjet, runs, out):
-    """round_jet_study.py run (two threads) and report (into out) of runs with the options
-    common -> the report's rows of those runs, by name; exits with FAIL if either fails."""
-    r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), "--threads", "2",
+def run_and_report(tool, common, sphjet, runs, out, run_opts=("--threads", "2")):
+    """round_jet_study.py run (with run_opts: one run at a time on two threads by default) and
+    report (into out) of runs with the options common -> the report's rows of those runs, by
+    name; exits with FAIL if either fails."""
+    r = subprocess.run([PY, str(tool), "run", *common, "--sphjet", str(sphjet), *run_opts,
                         "--only", *runs])
     if r.returncode != 0:
         sys.exit(f"FAIL: round_jet_study.py run exited {r.returncode}")
