@@ -180,6 +180,10 @@ class CommandLineTests(unittest.TestCase):
                                                   "time.cfl=0.25"])
         self.assertEqual(sr.numerics_tag(args), "_alpha0.02_rec_c012_cfl0.25")
         self.assertEqual(sr.numerics_flags(args), " --artificial-alpha 0.02 --reconstruct --c0 12 --cfl 0.25")
+        # a switch that sets its key to a name, not to true
+        args = ap.parse_args(["run", "--c0", "12", "--leapfrog"])
+        self.assertEqual(sr.numerics_sets(args), ["fluid.c0=12", "numerics.integrator=leapfrog"])
+        self.assertEqual((sr.numerics_tag(args), sr.numerics_flags(args)), ("_c012_lf", " --c0 12 --leapfrog"))
         for bad, says in ((["--c0", "0"], "expected a positive sound speed"),
                           (["--cfl", "1.5"], "expected a Courant number in (0, 1]"),
                           (["--reconstruct"], "give --artificial-alpha A > 0")):
