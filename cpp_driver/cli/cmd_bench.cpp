@@ -81,8 +81,9 @@ void register_bench(CLI::App& app) {
             const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
             const double ps = static_cast<double>(lc.particles.size()) *
                               static_cast<double>(args->steps);
-            // The predictor-corrector evaluates the forces (the rates pair loop) twice a step.
-            constexpr double force_evals_per_step = 2.0;
+            // The predictor-corrector evaluates the forces (the rates pair loop) twice a step,
+            // the leapfrog once.
+            const double force_evals_per_step = lc.spec.params.integrator == Integrator::Leapfrog ? 1.0 : 2.0;
             // a small case runs on fewer threads than asked (Solver::threads_for): say so
             const int used = Solver::threads_for(lc.particles.size());
             std::cout << fmt::format(

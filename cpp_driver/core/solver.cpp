@@ -349,6 +349,7 @@ std::size_t Solver::split_heavy_rings() {
 
 double Solver::compute_rates() {
     double vmax = 0;
+    rates_kept_ = false;   // the leapfrog's rates of the last step's end are overwritten
     const int status = sph_compute_rates(ws_, &prm_, &arr_, &vmax);
     if (status != SPH_OK) fail(status, -1, "rates");
     return vmax;

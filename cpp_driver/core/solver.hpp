@@ -34,7 +34,7 @@ public:
     Solver(const Solver&) = delete;
     Solver& operator=(const Solver&) = delete;
 
-    // One predictor-corrector step with state().dt; updates RunState (time, legacy clock,
+    // One step of numerics.integrator with state().dt; updates RunState (time, legacy clock,
     // step, dt, counters). Throws SimulationError with step, time, particle and cause.
     // fields: whether colour(), st_nx(), st_nz() and curvature() are to hold this step's
     // surface-tension fields afterwards (an output follows); otherwise they keep what they
@@ -74,7 +74,10 @@ public:
     // rates_of_edited_state() for the rates of the edited state, with pressure and sound speed
     // from its densities (Tait); returns max visc term. An edited state has no last evaluation,
     // so numerics.bulk_viscosity's term (which uses its density rates) is left out of them.
-    [[nodiscard]] ParticleSet& particles_to_edit() { return ps_; }
+    [[nodiscard]] ParticleSet& particles_to_edit() {
+        rates_kept_ = false;   // an edited state has no rates of its own yet
+        return ps_;
+    }
     double rates_of_edited_state();
 
     [[nodiscard]] const ParticleSet& particles() const { return ps_; }

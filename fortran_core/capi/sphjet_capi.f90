@@ -147,7 +147,8 @@ contains
     status = SPH_OK
   end function sph_prepare
 
-  !> One predictor-corrector step; info%dt is the step to take.
+  !> One step of numerics%integrator (the predictor-corrector or the leapfrog); info%dt is the
+  !> step to take.
   function sph_step(ws_handle, prm, arr, info) result(status) bind(C, name="sph_step")
     type(c_ptr), value :: ws_handle
     type(sph_params_t), intent(in) :: prm

@@ -72,6 +72,7 @@ inline LatticeOffsets lattice_offsets(int kernel, double h, double dx) {
 inline sph_params_t water_params(int kernel, double h) {
     sph_params_t p{};
     p.numerics.kernel = kernel;
+    p.numerics.integrator = 1;   // the predictor-corrector
     p.viscosity.model = 1;
     p.boundary.model = 2;
     p.numerics.density_filter = 0;
