@@ -23,14 +23,14 @@
 !> with them).
 module leapfrog
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use sphjet_kinds, only: rp, ip, KIND_FLUID, GEOM_AXISYMMETRIC, SPH_OK, SPH_ERR_ARGUMENT
+  use sphjet_kinds, only: rp, ip, GEOM_AXISYMMETRIC, SPH_ERR_ARGUMENT
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
   use rates, only: compute_rates
   use time_step, only: cfl_scan_t, cfl_add, cfl_time_step
-  use eos_tait, only: tait_pressure, tait_sound_speed
   use state_checks, only: check_domain, fold_into_domain
+  use predictor_corrector, only: eos_one, moving_fluid
   use nozzle_drive, only: in_driven_nozzle
   implicit none
   private
@@ -63,7 +63,7 @@ contains
     ! start-of-step position (the plug's test, as the predictor-corrector's) in xo, zo
     !$omp parallel do schedule(static)
     do i = 1, st%n
-      if (.not. moves(st, i)) cycle
+      if (.not. moving_fluid(st, i)) cycle
       st%xo(i) = st%x(i)
       st%zo(i) = st%z(i)
       st%uo(i) = st%u(i) + dt2 * (st%ax(i) + prm%gravity%gx)
@@ -71,11 +71,7 @@ contains
       st%rhoo(i) = st%rho(i) + dt2 * st%ar(i)
       st%x(i) = st%x(i) + dt * (st%uo(i) + st%xsph_u(i))
       st%z(i) = st%z(i) + dt * (st%wo(i) + st%xsph_w(i))
-      st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gravity%gx)
-      st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gravity%gz)
-      st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
-      call plug(prm, st, i, dt)
-      call eos_one(prm, st, i)
+      call half_kick(prm, st, i, dt)   ! the prediction
     end do
     !$omp end parallel do
 
@@ -85,16 +81,11 @@ contains
     ! the time-step scan of the new rates (one thread: its order is the particles'), then the
     ! second kick
     do i = 1, st%n
-      if (moves(st, i)) call cfl_add(scan, st, i)
+      if (moving_fluid(st, i)) call cfl_add(scan, st, i)
     end do
     !$omp parallel do schedule(static)
     do i = 1, st%n
-      if (.not. moves(st, i)) cycle
-      st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gravity%gx)
-      st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gravity%gz)
-      st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
-      call plug(prm, st, i, dt)
-      call eos_one(prm, st, i)
+      if (moving_fluid(st, i)) call half_kick(prm, st, i, dt)
     end do
     !$omp end parallel do
     info%rates_kept = 1
@@ -109,7 +100,7 @@ contains
     ! a particle reflected at the axis keeps rates that are its mirror image's
     if (prm%geometry%kind == GEOM_AXISYMMETRIC) then
       do i = 1, st%n
-        if (moves(st, i) .and. st%x(i) < 0.0_rp) then
+        if (moving_fluid(st, i) .and. st%x(i) < 0.0_rp) then
           st%ax(i) = -st%ax(i)
           st%xsph_u(i) = -st%xsph_u(i)
         end if
@@ -127,38 +118,31 @@ contains
     info%bad_cause = status
   end subroutine lf_step
 
-  !> Whether particle i is fluid still in the domain.
-  pure logical function moves(st, i)
-    type(state_t), intent(in) :: st
-    integer, intent(in) :: i
-    moves = st%active(i) /= 0 .and. st%kind(i) == KIND_FLUID
-  end function moves
-
-  !> A particle whose start-of-step position (xo, zo) lies in a driven nozzle moves rigidly
-  !> with the plug instead: r = r^n + dt u_plug, u = u_plug (its density still follows
-  !> continuity).
-  subroutine plug(prm, st, i, dt)
+  !> Particle i's velocity and density half the step dt on from the half-step values uo, wo,
+  !> rhoo with its current rates (the prediction, or the second kick), then p and c. A particle
+  !> whose start-of-step position (xo, zo) lies in a driven nozzle moves rigidly with the plug
+  !> instead: r = r^n + dt u_plug, u = u_plug (its density still follows continuity).
+  subroutine half_kick(prm, st, i, dt)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
     real(rp), intent(in) :: dt
-    if (.not. prm%nozzle%u > 0.0_rp) return
-    if (.not. in_driven_nozzle(prm, st%xo(i), st%zo(i))) return
-    st%u(i) = prm%nozzle%u * prm%nozzle%ex
-    st%w(i) = prm%nozzle%u * prm%nozzle%ez
-    st%uo(i) = st%u(i)
-    st%wo(i) = st%w(i)
-    st%x(i) = st%xo(i) + dt * st%u(i)
-    st%z(i) = st%zo(i) + dt * st%w(i)
-  end subroutine plug
-
-  !> p and c of particle i from its density.
-  subroutine eos_one(prm, st, i)
-    type(sph_params_t), intent(in) :: prm
-    type(state_t), intent(inout) :: st
-    integer, intent(in) :: i
-    st%p(i) = tait_pressure(st%rho(i), prm%eos%rho0, prm%eos%b, prm%eos%gamma)
-    st%c(i) = tait_sound_speed(st%rho(i), prm%eos%rho0, prm%eos%c0)
-  end subroutine eos_one
+    real(rp) :: dt2
+    dt2 = 0.5_rp * dt
+    st%u(i) = st%uo(i) + dt2 * (st%ax(i) + prm%gravity%gx)
+    st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gravity%gz)
+    st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
+    if (prm%nozzle%u > 0.0_rp) then
+      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) then
+        st%u(i) = prm%nozzle%u * prm%nozzle%ex
+        st%w(i) = prm%nozzle%u * prm%nozzle%ez
+        st%uo(i) = st%u(i)
+        st%wo(i) = st%w(i)
+        st%x(i) = st%xo(i) + dt * st%u(i)
+        st%z(i) = st%zo(i) + dt * st%w(i)
+      end if
+    end if
+    call eos_one(prm, st, i)
+  end subroutine half_kick
 
 end module leapfrog

@@ -25,7 +25,7 @@ module predictor_corrector
   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
   private
-  public :: pc_step, update_eos
+  public :: pc_step, update_eos, eos_one, moving_fluid
 
   !> The particle loops of a step (in_team): which = PREDICT or CORRECT. They also make the
   !> time step's scan of the stage's rates (time_step.f90), into scan(which).
