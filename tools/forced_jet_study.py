@@ -4,10 +4,10 @@ growth along the jet, the breakup length and the drops. Run them, then tabulate 
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/forced_jet_study.py run [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--only RUN ...] [--threads 2]
+      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--leapfrog] [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/forced_jet_study.py report [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--out cases/round_jet/forced]
+      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--leapfrog] [--out cases/round_jet/forced]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/nN/NAME, one run for each
 speed of U_SPEEDS (Mansour & Chigier's 0.78 and 1.57 m/s, We_d = 10 and 41) and each target
@@ -18,7 +18,8 @@ run has the quiet exit of the round-jet study (`round_jet_study.py --axis-pair r
 --artificial-alpha A adds numerics.artificial_alpha = A to every run (study ROOT/nN_alphaA), and
 --reconstruct numerics.artificial_reconstruction (ROOT/nN_alphaA_rec); --c0 C the sound speed
 fluid.c0 = C (16 m/s in the case; suffix _c0C); --cfl K the Courant number time.cfl = K (0.2 in
-the case; suffix _cflK).
+the case; suffix _cflK); --leapfrog numerics.integrator = "leapfrog" (one evaluation of the
+rates per step; suffix _lf).
 
 The forcing (nozzle.disturbance = eps: the plug moves at u0 (1 + eps sin(omega_f t)), omega_f =
 u0 k) is set from the target with linear theory, not fitted: a plug whose speed varies by
