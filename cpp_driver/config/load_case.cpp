@@ -31,6 +31,11 @@ LoadedCase load_case(const fs::path& path, const std::vector<std::string>& overr
                                  std::to_string(lc.particles.nb) + " boundary particles");
             // its prediction amplifies an undamped sound wave twice as fast as the
             // predictor-corrector (fortran_core/integrate/leapfrog.f90)
+            // legacy output writes INDAT, whose integrator line is SPHysics' (2 is its Verlet)
+            if (lc.spec.output.format != OutputFormat::Hdf5)
+                throw InputError(where, "legacy output (INDAT, PART) has no line for the leapfrog",
+                                 "output.format = \"hdf5\", or numerics.integrator = \"predictor_corrector\"",
+                                 "a legacy output format");
             if (!(lc.spec.params.bulk_viscosity > 0))
                 throw InputError(where, "the leapfrog needs the bulk viscosity, which damps the sound waves "
                                         "its prediction amplifies",

@@ -48,7 +48,7 @@ const Param kParams[] = {
      .legacy = "`Kernel: 1=gaussian, 2=quadratic; 3=cubic; 5=Wendland`"},
     {.key = "numerics.integrator", .attr = "integrator", .type = K::String,
      .member = member<&SimParams::integrator>(), .choices = names<Integrator>(),
-     .allowed = "leapfrog: without boundary particles, with numerics.bulk_viscosity > 0",
+     .allowed = "leapfrog: without boundary particles, with numerics.bulk_viscosity > 0, HDF5 output only",
      .doc = "time integration: predictor_corrector (SPHysics', two evaluations of the rates per step) or "
             "leapfrog (kick-drift-kick, one evaluation per step; fortran_core/integrate/leapfrog.f90)",
      .legacy = "`Time-stepping algorithm` (1)"},
