@@ -261,9 +261,6 @@ void write_indat(const fs::path& path, const SimParams& p, std::size_t np, std::
     std::string s;
     const auto i = [&](long v) { s += list_int(v) + "\n"; };
     const auto r = [&](double v) { s += list_real(v) + "\n"; };
-    if (p.integrator != Integrator::PredictorCorrector)   // SPHysics' 2 is its Verlet, not this
-        throw InputError(path.string(), "INDAT has no line for numerics.integrator = \"leapfrog\"",
-                         "numerics.integrator = \"predictor_corrector\" for legacy output", "\"leapfrog\"");
     i(static_cast<int>(p.kernel));
     i(static_cast<int>(p.integrator));
     i(static_cast<int>(p.density_filter));
