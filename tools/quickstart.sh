@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a fresh machine: install, build, and run one of the laminar round water jets
 # that Mansour & Chigier (1994) measured (d0 = 1.194 mm, U = 1.2545 m/s, no imposed
-# disturbance) in the axisymmetric mode, with the round-jet study's numerics at c0 = 12 m/s
-# and cfl 0.25 and the leapfrog (one evaluation of the rates per step; cases/round_jet/README.md)
+# disturbance) in the axisymmetric mode, with the round-jet study's quiet numerics (--quiet-jets:
+# c0 = 12 m/s, cfl 0.25, the leapfrog and the rest; tools/round_jet_study.py run --help)
 # at a coarse d0/dx = 6 and a short window (0.4 L/U from 1.5 L/U), then print its breakup
 # length beside the measurement and the theory, and its main drops beside Rayleigh's. About
 # 1.5-2.5 minutes on two cores once built (the first build of the driver, about 2.5 minutes more). Output goes to
@@ -12,8 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh
 bash tools/build.sh sphjet   # the driver alone (tools/test.sh builds the tests)
-study=(--root runs/quickstart --eps 0 --axis-pair rings_fit --quiet-exit --artificial-alpha 0.02
-       --reconstruct --c0 12 --cfl 0.25 --leapfrog --sink 15 --d0-over-dx 6 --window 0.4)
+study=(--root runs/quickstart --eps 0 --quiet-jets --d0-over-dx 6 --window 0.4)
 /usr/bin/python3 tools/round_jet_study.py run "${study[@]}" --only mc_u1.2545
 echo
 /usr/bin/python3 tools/round_jet_study.py report "${study[@]}" --only mc_u1.2545 --brief \

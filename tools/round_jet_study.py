@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -50,7 +50,10 @@ jet"); K = 0.25 with --c0 12 takes 0.79 of the steps, its forced jets within 3% 
 16 m/s and 0.2, as its table was made. --leapfrog (needs --quiet-exit's bulk viscosity) sets
 numerics.integrator = "leapfrog" (suffix _lf): one evaluation of the rates per step instead of
 two, about half the cost; the forced jets within 1.3% and the unforced ones within 2.5% of the
-predictor-corrector's ("One evaluation per step: the leapfrog").
+predictor-corrector's ("One evaluation per step: the leapfrog"). --quiet-jets stands for the
+quiet round jets' numerics, the quick start's and the validation's: --axis-pair rings_fit
+--quiet-exit --artificial-alpha 0.02 --reconstruct --c0 12 --cfl 0.25 --leapfrog --sink 15 (the
+same study directory as those flags; one of them given with another value is refused).
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -96,6 +99,7 @@ run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_
 the window), and beside where that fitted envelope reaches a (its own delta0 and growth); its
 main drops beside Rayleigh's.
 """
+import argparse
 import contextlib
 import csv
 import io
@@ -153,6 +157,12 @@ BOX_L_FACTOR = 1.6
 INTACT_SKIP_MAX, BOX_END_D0 = 0.05, 1.0
 REFILL_NOZZLE = 3.0   # d0 of a refilling nozzle (--quiet-exit): the plug reaches far beyond 2h upstream
 QUIET_BULK_VISCOSITY = 0.5   # --quiet-exit's numerics.bulk_viscosity (cases/round_jet/README.md)
+# --quiet-jets: the options (attribute, value, flag) of the quiet round jets' numerics, as the
+# quick start and the validation run them (cases/round_jet/README.md, "One evaluation per step")
+QUIET_JETS = (("axis_pair", "rings_fit", "--axis-pair"), ("quiet_exit", True, "--quiet-exit"),
+              ("artificial_alpha", 0.02, "--artificial-alpha"), ("reconstruct", True, "--reconstruct"),
+              ("c0", 12.0, "--c0"), ("cfl", 0.25, "--cfl"), ("leapfrog", True, "--leapfrog"),
+              ("sink", 15.0, "--sink"))
 
 
 # ---------------------------------------------------------------- physics
@@ -422,8 +432,27 @@ def plan(opts):
 SET_NAMES = ("mc", "paper")
 
 
+def flag_text(flag, value):
+    """-> a flag with its value as the command line gives it ('--leapfrog', '--c0 12')."""
+    return flag if value is True else f"{flag} {value:g}" if isinstance(value, float) else f"{flag} {value}"
+
+
+def is_quiet_jets(opts):
+    """-> whether opts hold every option of QUIET_JETS at its value."""
+    return all(getattr(opts, attr) == value for attr, value, _flag in QUIET_JETS)
+
+
 def study_flags(opts):
-    """-> the command-line flags that give opts' study (as study_dir names it)."""
+    """-> the command-line flags that give opts' study (as study_dir names it); --quiet-jets for
+    the options it stands for."""
+    if is_quiet_jets(opts):
+        plain = argparse.Namespace(**vars(opts))
+        for attr, _value, _flag in QUIET_JETS:
+            setattr(plain, attr, False if attr in ("quiet_exit", "reconstruct", "leapfrog")
+                    else 0.0 if attr == "artificial_alpha" else None)
+        flags = study_flags(plain)
+        return flags.replace(f" --d0-over-dx {opts.d0_over_dx:g}",
+                             f" --d0-over-dx {opts.d0_over_dx:g} --quiet-jets", 1)
     return (f" --eps {opts.eps:g} --d0-over-dx {opts.d0_over_dx:g}"
             + ("" if opts.size_c is None else f" --size-c {opts.size_c:g}")
             + ("" if opts.remove_h is None else f" --remove-drops-below-h {opts.remove_h:g}")
@@ -780,6 +809,10 @@ def parse(argv=None):
                             "that refills (nozzle.refill) and domain.split_axis_rings in every run (needs a "
                             "rings --axis-pair)")
         add_numerics_arguments(p)
+        p.add_argument("--quiet-jets", action="store_true",
+                       help="the quiet round jets' numerics in one flag: "
+                            + " ".join(flag_text(flag, value) for _a, value, flag in QUIET_JETS)
+                            + " (the study directory is theirs)")
         p.add_argument("--sink", type=float, default=None, metavar="M",
                        help="remove the drops wholly farther than M d0 past the jet's end at the checks "
                             "(breakup.remove_drops_beyond_d0; default: none, the box's end is the only sink)")
@@ -806,6 +839,12 @@ def parse(argv=None):
                            help="print each run in a few lines (its length beside the measurement and "
                                 "the theory, its drops beside Rayleigh's) instead of the table")
     args = ap.parse_args(argv)
+    if args.quiet_jets:
+        for attr, value, flag in QUIET_JETS:
+            given = getattr(args, attr)
+            if given not in (None, False, 0.0, value):
+                ap.error(f"--quiet-jets sets {flag_text(flag, value)}; found {flag_text(flag, given)}")
+            setattr(args, attr, value)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
     if args.remove_h is not None and not args.remove_h > 0:

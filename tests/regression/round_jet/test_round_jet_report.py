@@ -250,6 +250,21 @@ def main():
               and "fluid.c0=4" in lines[1] and "fluid.c0=12" not in lines[1], f"--c0: {p.stdout}")
         check(rjs.study_flags(rjs.parse(["report", "--c0", "12"])) == " --eps 0.01 --d0-over-dx 10 --c0 12",
               "the report's run command with --c0")
+        # --quiet-jets: the quiet numerics' eight options in one flag, the same directory as the
+        # options given one by one; an option it sets given otherwise is refused; the report's run
+        # command says --quiet-jets
+        long_form = ["--axis-pair", "rings_fit", "--quiet-exit", "--artificial-alpha", "0.02", "--reconstruct",
+                     "--c0", "12", "--cfl", "0.25", "--leapfrog", "--sink", "15"]
+        outs = [subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--eps", "0",
+                                "--only", "mc_u0.7814"] + form, capture_output=True, text=True).stdout
+                for form in (long_form, ["--quiet-jets"], ["--quiet-jets", "--c0", "12"])]
+        check(outs[0] == outs[1] == outs[2] and "eps0_n10_rings_fit_quiet_alpha0.02_rec_c012_cfl0.25_lf_sink15" in outs[1]
+              and "numerics.integrator=leapfrog" in outs[1], f"--quiet-jets: {outs}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-jets", "--c0", "16"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--quiet-jets sets --c0 12; found --c0 16" in p.stderr,
+              f"--quiet-jets --c0 16: exit {p.returncode} {p.stderr}")
+        check(rjs.study_flags(rjs.parse(["report", "--eps", "0", "--window", "0.5", "--own-window"] + long_form))
+              == " --eps 0 --d0-over-dx 10 --quiet-jets --window 0.5 --own-window", "the report's run command, quiet")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",

@@ -7,8 +7,7 @@ gravity is absolutely unstable), d0/dx = 10, no imposed disturbance, with the qu
 alpha 0.02 with the reconstruction, the sink 15 d0 past the jet's end and each run's window
 from its own length (0.5 of its own L/U):
 
-    round_jet_study.py run --eps 0 --axis-pair rings_fit --quiet-exit --artificial-alpha 0.02 \\
-        --reconstruct --c0 12 --cfl 0.25 --leapfrog --sink 15 --window 0.5 --own-window \\
+    round_jet_study.py run --eps 0 --quiet-jets --window 0.5 --own-window \\
         --only mc_u0.7814 mc_u1.0179 mc_u1.2545 mc_u1.5699 --parallel 2 --threads 1
 
 About 1.5 h of one core (0.8 h on two; 5466 s of one core at 5e46a49), resumable (a killed
@@ -38,9 +37,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from check_round_jet_study import drop_stale_runs, number, run_and_report  # noqa: E402  (the same directory)
 
-STUDY = ["--eps", "0", "--d0-over-dx", "10", "--axis-pair", "rings_fit", "--quiet-exit",
-         "--artificial-alpha", "0.02", "--reconstruct", "--c0", "12", "--cfl", "0.25", "--leapfrog", "--sink", "15",
-         "--window", "0.5", "--own-window"]
+STUDY = ["--eps", "0", "--d0-over-dx", "10", "--quiet-jets", "--window", "0.5", "--own-window"]
 RUNS = ["mc_u0.7814", "mc_u1.0179", "mc_u1.2545", "mc_u1.5699"]
 C_MIN = 10.0          # the noise floor's target: C = ln(a/delta0) >= 10
 EXIT_MEAN_TOL = 0.05  # the exit pressure's mean within 5% of sigma/a
