@@ -12,6 +12,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -181,11 +182,8 @@ struct SavedSoFar {
 struct RunStart {
     CaseSpec spec;
     ParticleSet particles;
-    RunState resumed;  // with the core's neighbour-list positions and wall geometry below
-    std::vector<double> list_x, list_z;
-    std::vector<double> drho_dt;  // the last density rates: the bulk viscosity's lagged divergence
-    std::vector<std::vector<double>> rates;  // the leapfrog's kept rates: ax, az, ar, xsph_u, xsph_w
-    std::vector<std::vector<double>> wall;
+    RunState resumed;  // with the core's state that the checkpoint kept (Solver::kept_state)
+    std::vector<CheckpointArray> kept;
     std::optional<bool> legacy_clock;  // the checkpoint's output clock, where it says
 };
 
@@ -201,14 +199,7 @@ RunStart start_from_checkpoint(const fs::path& dir) {
     s.particles = std::move(cp.particles);
     s.resumed = cp.state;
     s.legacy_clock = cp.legacy_clock;
-    if (const auto* lx = cp.array("list_x")) s.list_x = *lx;
-    if (const auto* lz = cp.array("list_z")) s.list_z = *lz;
-    if (const auto* ar = cp.array("drho_dt")) s.drho_dt = *ar;
-    if (cp.array("rate_ax") != nullptr)
-        for (const char* name : {"rate_ax", "rate_az", "drho_dt", "xsph_u", "xsph_w"})
-            s.rates.push_back(cp.array(name) ? *cp.array(name) : std::vector<double>{});
-    for (const char* name : {"wall_nx", "wall_nz", "wall_dback", "wall_dfwd"})
-        s.wall.push_back(cp.array(name) ? *cp.array(name) : std::vector<double>{});
+    s.kept = std::move(cp.extra);
     return s;
 }
 
@@ -242,15 +233,14 @@ RunStart start_fresh(const RunOptions& opts) {
 }
 
 // The core's state as the checkpoint left it: a resumed run lists the pairs as the first
-// run did (bitwise resume) and uses its repulsive-wall geometry.
+// run did (bitwise resume), starts from its kept rates and uses its repulsive-wall geometry.
 void restore_core_state(Solver& solver, const RunStart& start) {
     solver.state() = start.resumed;
-    solver.set_list_positions(start.list_x, start.list_z);
-    solver.set_density_rates(start.drho_dt);
-    if (!start.rates.empty())
-        solver.set_kept_rates({&start.rates[0], &start.rates[1], &start.rates[2], &start.rates[3], &start.rates[4]});
-    if (start.wall.size() == 4)
-        solver.set_wall_geometry({&start.wall[0], &start.wall[1], &start.wall[2], &start.wall[3]});
+    solver.restore_kept_state([&start](std::string_view name) -> const std::vector<double>* {
+        for (const CheckpointArray& a : start.kept)
+            if (a.name == name) return &a.values;
+        return nullptr;
+    });
 }
 
 // The log's first lines: version, command, the case and its size, and where the run starts.
@@ -331,24 +321,11 @@ public:
         saved_.output = st.n_outputs, saved_.output_time = t;
     }
 
-    // The state, the core's neighbour-list build positions (a resumed run lists the pairs as
-    // this run did: bitwise resume) and the repulsive-wall geometry as the run uses it.
+    // The state and the core's state beyond the particles (Solver::kept_state: a resumed run
+    // goes on bitwise).
     void checkpoint() {
         const RunState& st = solver_.state();
-        std::vector<ExtraField> kept{{"list_x", solver_.list_x(), "m"},
-                                     {"list_z", solver_.list_z(), "m"}};
-        // the bulk viscosity's divergence comes from the last density rates; the leapfrog
-        // starts each step from the last step's rates (a checkpoint without them, or taken
-        // where they are not kept, has the resumed run evaluate them first)
-        const bool rates = solver_.rates_kept();
-        if (prm_.bulk_viscosity > 0 || rates) kept.push_back({"drho_dt", solver_.ar(), "kg/m^3/s"});
-        if (rates) {
-            kept.push_back({"rate_ax", solver_.ax(), "m/s^2"});
-            kept.push_back({"rate_az", solver_.az(), "m/s^2"});
-            kept.push_back({"xsph_u", solver_.xsph_u(), "m/s"});
-            kept.push_back({"xsph_w", solver_.xsph_w(), "m/s"});
-        }
-        for (ExtraField& f : solver_.wall_geometry()) kept.push_back(std::move(f));
+        const std::vector<ExtraField> kept = solver_.kept_state();
         write_checkpoint(dir_, solver_.particles(), st, prm_, kept, opts_.legacy_clock);
         saved_.checkpoint = true, saved_.checkpoint_step = st.step,
         saved_.checkpoint_time = st.time;

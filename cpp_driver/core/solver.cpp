@@ -363,41 +363,43 @@ double Solver::rates_of_edited_state() {
     return compute_rates();
 }
 
-void Solver::set_list_positions(const std::vector<double>& x, const std::vector<double>& z) {
-    if (x.size() != list_x_.size() || z.size() != list_z_.size()) return;
-    std::copy(x.begin(), x.end(), list_x_.begin());
-    std::copy(z.begin(), z.end(), list_z_.begin());
+std::vector<ExtraField> Solver::kept_state() const {
+    std::vector<ExtraField> f{{"list_x", list_x_, "m"}, {"list_z", list_z_, "m"}};
+    if (params_.bulk_viscosity > 0 || rates_kept_) f.push_back({"drho_dt", ar_, "kg/m^3/s"});
+    if (rates_kept_) {
+        f.push_back({"rate_ax", ax_, "m/s^2"});
+        f.push_back({"rate_az", az_, "m/s^2"});
+        f.push_back({"xsph_u", xu_, "m/s"});
+        f.push_back({"xsph_w", xw_, "m/s"});
+    }
+    if (!wall_nx_.empty()) {
+        f.push_back({"wall_nx", wall_nx_, "1"});
+        f.push_back({"wall_nz", wall_nz_, "1"});
+        f.push_back({"wall_dback", wall_db_, "m"});
+        f.push_back({"wall_dfwd", wall_df_, "m"});
+    }
+    return f;
 }
 
-void Solver::set_density_rates(const std::vector<double>& drho_dt) {
-    if (drho_dt.size() == ar_.size()) std::copy(drho_dt.begin(), drho_dt.end(), ar_.begin());
-}
-
-void Solver::set_kept_rates(const std::vector<const std::vector<double>*>& ax_az_ar_xu_xw) {
-    std::vector<double>* dst[] = {&ax_, &az_, &ar_, &xu_, &xw_};
-    rates_kept_ = false;
-    if (ax_az_ar_xu_xw.size() != 5) return;
-    for (std::size_t k = 0; k < 5; ++k)
-        if (ax_az_ar_xu_xw[k] == nullptr || ax_az_ar_xu_xw[k]->size() != dst[k]->size()) return;
-    for (std::size_t k = 0; k < 5; ++k) std::copy(ax_az_ar_xu_xw[k]->begin(), ax_az_ar_xu_xw[k]->end(), dst[k]->begin());
-    rates_kept_ = true;
-}
-
-std::vector<ExtraField> Solver::wall_geometry() const {
-    if (wall_nx_.empty()) return {};
-    return {{"wall_nx", wall_nx_, "1"},
-            {"wall_nz", wall_nz_, "1"},
-            {"wall_dback", wall_db_, "m"},
-            {"wall_dfwd", wall_df_, "m"}};
-}
-
-void Solver::set_wall_geometry(const std::vector<const std::vector<double>*>& nx_nz_db_df) {
-    std::vector<double>* dst[] = {&wall_nx_, &wall_nz_, &wall_db_, &wall_df_};
-    if (wall_nx_.empty() || nx_nz_db_df.size() != 4) return;
-    for (std::size_t k = 0; k < 4; ++k)
-        if (nx_nz_db_df[k] == nullptr || nx_nz_db_df[k]->size() != dst[k]->size()) return;
-    for (std::size_t k = 0; k < 4; ++k)
-        std::copy(nx_nz_db_df[k]->begin(), nx_nz_db_df[k]->end(), dst[k]->begin());
+void Solver::restore_kept_state(const std::function<const std::vector<double>*(std::string_view)>& find) {
+    using Part = std::vector<std::pair<const char*, std::vector<double>*>>;
+    // a part is restored whole, or not at all
+    auto restore = [&find](const Part& part) {
+        for (const auto& [name, dst] : part) {
+            const std::vector<double>* src = find(name);
+            if (src == nullptr || src->size() != dst->size()) return false;
+        }
+        for (const auto& [name, dst] : part) {
+            const std::vector<double>* src = find(name);
+            std::copy(src->begin(), src->end(), dst->begin());
+        }
+        return true;
+    };
+    restore({{"list_x", &list_x_}, {"list_z", &list_z_}});
+    restore({{"drho_dt", &ar_}});
+    rates_kept_ = restore({{"rate_ax", &ax_}, {"rate_az", &az_}, {"drho_dt", &ar_}, {"xsph_u", &xu_}, {"xsph_w", &xw_}});
+    if (!wall_nx_.empty())
+        restore({{"wall_nx", &wall_nx_}, {"wall_nz", &wall_nz_}, {"wall_dback", &wall_db_}, {"wall_dfwd", &wall_df_}});
 }
 
 void Solver::set_threads(int n) { sph_set_threads(n); }

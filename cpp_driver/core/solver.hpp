@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -93,27 +95,24 @@ public:
     [[nodiscard]] const std::vector<double>& st_nx() const { return st_nx_; }
     [[nodiscard]] const std::vector<double>& st_nz() const { return st_nz_; }
     [[nodiscard]] const std::vector<double>& curvature() const { return kappa_; }
-    // Positions at the core's last neighbour-list build (NaN: none yet). A checkpoint keeps
-    // them, so that a resumed run lists the pairs in the same order (bitwise resume).
-    [[nodiscard]] const std::vector<double>& list_x() const { return list_x_; }
-    [[nodiscard]] const std::vector<double>& list_z() const { return list_z_; }
-    // Restores them from a checkpoint; arrays of another length are ignored (the core then
-    // lists the pairs at the current positions).
-    void set_list_positions(const std::vector<double>& x, const std::vector<double>& z);
-    // The density rates of the last evaluation, as a checkpoint kept them (the bulk viscosity
-    // uses them in the next one); ignored unless one per particle.
-    void set_density_rates(const std::vector<double>& drho_dt);
-    // numerics.integrator = "leapfrog": whether ax, az, ar and the XSPH correction hold the
-    // rates of the state as it is (the last step's end), which a checkpoint keeps; set them
-    // (arrays of another length leave the rates to be evaluated at the next step's start).
-    [[nodiscard]] bool rates_kept() const { return rates_kept_; }
-    void set_kept_rates(const std::vector<const std::vector<double>*>& ax_az_ar_xu_xw);
-    // Repulsive-wall geometry (unit normal, spacing to the wall neighbours; empty for other
-    // boundaries). sph_prepare computes it from the positions at construction: a moving gate
-    // would give it again from moved positions, which round differently, so a checkpoint
-    // keeps it and a resumed run restores it (bitwise resume).
-    [[nodiscard]] std::vector<ExtraField> wall_geometry() const;
-    void set_wall_geometry(const std::vector<const std::vector<double>*>& nx_nz_db_df);
+    // The core's state beyond the particles that a checkpoint keeps, so that a resumed run
+    // steps as the first one would have gone on (bitwise resume), as named fields:
+    // - list_x, list_z: the positions at the core's last neighbour-list build (NaN: none yet),
+    //   so that the resumed run lists the pairs in the same order;
+    // - drho_dt: the density rates of the last evaluation, where the bulk viscosity uses them
+    //   in the next one or the leapfrog keeps its rates;
+    // - rate_ax, rate_az, xsph_u, xsph_w (with drho_dt): numerics.integrator = "leapfrog", the
+    //   rates of the state as it is (the last step's end), where they are kept;
+    // - wall_nx, wall_nz, wall_dback, wall_dfwd: the repulsive-wall geometry (unit normal,
+    //   spacing to the wall neighbours), which sph_prepare computes from the positions at
+    //   construction: a moving gate would give it again from moved positions, which round
+    //   differently.
+    [[nodiscard]] std::vector<ExtraField> kept_state() const;
+    // Restores what kept_state() gave, from a checkpoint's arrays (find: the array of that
+    // name, or nullptr). A part with an array missing or of another length is left to the
+    // core: the pairs listed at the current positions, the leapfrog's rates evaluated at the
+    // next step's start, the wall geometry as sph_prepare gave it.
+    void restore_kept_state(const std::function<const std::vector<double>*(std::string_view)>& find);
     [[nodiscard]] RunState& state() { return state_; }
     [[nodiscard]] const RunState& state() const { return state_; }
     [[nodiscard]] const SimParams& params() const { return params_; }
