@@ -92,7 +92,8 @@ L / d0 = C x + b with its R^2 to each, over every speed and over the convectivel
 ones alone (We_d >= 2 pi: the speeds where a jet without gravity can stand). The paper's eq 37
 is the same form with radius groups (We = We_d / 2, Oh = Oh_d sqrt 2) and C = 13.
 
-`run` is resumable (tools/study_runs.py). `report` reads what exists; missing runs are listed.
+`run` is resumable (tools/study_runs.py) and starts the costliest runs first (L_ref^2 / U), so
+that runs made side by side (--parallel) end together. `report` reads what exists; missing runs are listed.
 `report --brief` prints each run in a few lines instead of the table: its length beside the
 measured one, eq 37 and Weber's law with the measurements' C, beside Weber's length with the
 run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_noise.py over
@@ -262,6 +263,15 @@ def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False):
             f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
             f"breakup.check_every={every:.4g}", f"time.out={(20 * every if own else t_end / 20):.4g}"] + \
         (["nozzle.refill=true"] if refill else [])
+
+
+def expected_cost(info):
+    """-> a run's cost up to a factor (info as plan's): its particles grow with its length and its
+    steps with its time, L_ref / U, so L_ref^2 / U. In the quiet study (--quiet-jets, c0 12 m/s)
+    the twelve convective runs took 997-1821 s of one core, the eight absolutely unstable ones,
+    shorter than measured, 85-1322 s (cases/round_jet/README.md); `run` starts the costliest
+    first."""
+    return info["L_ref"] ** 2 / info["U"]
 
 
 def own_check_every(l_ref, u):
@@ -505,6 +515,8 @@ def cmd_run(args):
                + unsteady(ow))
         return end, why
 
+    # the costliest first, so that runs made side by side (--parallel) end together
+    todo.sort(key=lambda r: -expected_cost(r[3]))
     return run_all([(name, sets) for _s, name, sets, _i in todo], sdir, case, args.sphjet,
                    args.threads, args.tmax, args.dry_run, "round_jet_study.py run", title, REPO, args.parallel,
                    more_time if args.own_window and args.tmax is None else None)

@@ -245,9 +245,13 @@ def main():
         # --c0 12: the measured jets' sound speed, in a directory of its own; the paper's jets keep 4 m/s
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--c0", "12",
                             "--only", "mc_u0.7814", "paper_u0.2"], capture_output=True, text=True)
-        lines = [ln for ln in p.stdout.splitlines() if " run " in ln and "--out" in ln]
+        # (the costlier run first: the paper's round jet, then the measured one)
+        lines = sorted((ln for ln in p.stdout.splitlines() if " run " in ln and "--out" in ln),
+                       key=lambda ln: "paper_u0.2" in ln)
         check(len(lines) == 2 and "fluid.c0=12" in lines[0] and "eps0.01_n10_c012" in lines[0]
               and "fluid.c0=4" in lines[1] and "fluid.c0=12" not in lines[1], f"--c0: {p.stdout}")
+        check(p.stdout.index("paper_u0.2: starting") < p.stdout.index("mc_u0.7814: starting"),
+              f"the costliest run (L_ref^2 / U) first: {p.stdout}")
         check(rjs.study_flags(rjs.parse(["report", "--c0", "12"])) == " --eps 0.01 --d0-over-dx 10 --c0 12",
               "the report's run command with --c0")
         # --quiet-jets: the quiet numerics' eight options in one flag, the same directory as the
