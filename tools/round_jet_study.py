@@ -100,7 +100,6 @@ run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_
 the window), and beside where that fitted envelope reaches a (its own delta0 and growth); its
 main drops beside Rayleigh's.
 """
-import argparse
 import contextlib
 import csv
 import io
@@ -455,15 +454,7 @@ def is_quiet_jets(opts):
 def study_flags(opts):
     """-> the command-line flags that give opts' study (as study_dir names it); --quiet-jets for
     the options it stands for."""
-    if is_quiet_jets(opts):
-        plain = argparse.Namespace(**vars(opts))
-        for attr, _value, _flag in QUIET_JETS:
-            setattr(plain, attr, False if attr in ("quiet_exit", "reconstruct", "leapfrog")
-                    else 0.0 if attr == "artificial_alpha" else None)
-        flags = study_flags(plain)
-        return flags.replace(f" --d0-over-dx {opts.d0_over_dx:g}",
-                             f" --d0-over-dx {opts.d0_over_dx:g} --quiet-jets", 1)
-    return (f" --eps {opts.eps:g} --d0-over-dx {opts.d0_over_dx:g}"
+    flags = (f" --eps {opts.eps:g} --d0-over-dx {opts.d0_over_dx:g}"
             + ("" if opts.size_c is None else f" --size-c {opts.size_c:g}")
             + ("" if opts.remove_h is None else f" --remove-drops-below-h {opts.remove_h:g}")
             + ("" if opts.axis_pair is None else f" --axis-pair {opts.axis_pair}")
@@ -471,6 +462,11 @@ def study_flags(opts):
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
             + (" --own-window" if opts.own_window else ""))
+    if is_quiet_jets(opts):
+        for _attr, value, flag in QUIET_JETS:
+            flags = flags.replace(" " + flag_text(flag, value), "", 1)
+        flags = flags.replace(f" --d0-over-dx {opts.d0_over_dx:g}", f" --d0-over-dx {opts.d0_over_dx:g} --quiet-jets", 1)
+    return flags
 
 
 def study_dir(opts):
