@@ -30,7 +30,7 @@ module leapfrog
   use rates, only: compute_rates
   use time_step, only: cfl_scan_t, cfl_add, cfl_time_step
   use state_checks, only: check_domain, fold_into_domain
-  use predictor_corrector, only: eos_one, moving_fluid
+  use predictor_corrector, only: eos_one, moving_fluid, plug_step
   use nozzle_drive, only: in_driven_nozzle
   implicit none
   private
@@ -133,14 +133,7 @@ contains
     st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gravity%gz)
     st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
     if (prm%nozzle%u > 0.0_rp) then
-      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) then
-        st%u(i) = prm%nozzle%u * prm%nozzle%ex
-        st%w(i) = prm%nozzle%u * prm%nozzle%ez
-        st%uo(i) = st%u(i)
-        st%wo(i) = st%w(i)
-        st%x(i) = st%xo(i) + dt * st%u(i)
-        st%z(i) = st%zo(i) + dt * st%w(i)
-      end if
+      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) call plug_step(prm, st, i, dt)
     end if
     call eos_one(prm, st, i)
   end subroutine half_kick

@@ -25,7 +25,7 @@ module predictor_corrector
   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
   private
-  public :: pc_step, update_eos, eos_one, moving_fluid
+  public :: pc_step, update_eos, eos_one, moving_fluid, plug_step
 
   !> The particle loops of a step (in_team): which = PREDICT or CORRECT. They also make the
   !> time step's scan of the stage's rates (time_step.f90), into scan(which).
@@ -373,7 +373,8 @@ contains
   end subroutine move_gate
 
   !> A fluid particle whose start-of-step position lies in a driven nozzle (nozzle_drive),
-  !> after half_steps: it moves rigidly with the plug velocity instead, r = r^n + dt2 u_plug,
+  !> after half_steps (or the leapfrog's kicks, with its whole step as dt2): it moves rigidly
+  !> with the plug velocity instead, r = r^n + dt2 u_plug,
   !> u = u_plug (and u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its
   !> density still follows continuity (half_steps).
   subroutine plug_step(prm, st, i, dt2)
