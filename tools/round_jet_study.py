@@ -403,7 +403,8 @@ def plan(opts):
     pair), or "rings_own": the rings pair with surface_tension.rings_curvature = "own", or
     "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0, cfl: the damping,
-    the measured jets' sound speed and the Courant number (study_runs.numerics_sets)."""
+    the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
+    starting column's length in L_ref (None: none)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -418,6 +419,10 @@ def plan(opts):
         runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window, own) + ["fluid.c0=4"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER),
                       "own": own, "W": window}))
+    if opts.column is not None:
+        # the jet already out at the start, opts.column x its L_ref long (nozzle.column_over_d0)
+        runs = [(st, name, sets + [f"nozzle.column_over_d0={opts.column * info['L_ref'] / info['d0']:.6g}"], info)
+                for st, name, sets, info in runs]
     extra = [f"nozzle.disturbance={eps:g}"]
     if remove_h is not None:
         extra.append(f"breakup.remove_drops_below_h={remove_h:g}")
@@ -461,7 +466,8 @@ def study_flags(opts):
             + (" --quiet-exit" if opts.quiet_exit else "") + numerics_flags(opts)
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
-            + (" --own-window" if opts.own_window else ""))
+            + (" --own-window" if opts.own_window else "")
+            + ("" if opts.column is None else f" --column {opts.column:g}"))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -477,7 +483,7 @@ def study_dir(opts):
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
             + numerics_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
-            + ("_own" if opts.own_window else ""))
+            + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -833,6 +839,10 @@ def parse(argv=None):
                             f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it, an unsteady "
                             f"one for at most {OWN_LONGEST:g} L / U (needs "
                             f"--quiet-exit's refilling nozzle; suffix _own)")
+        p.add_argument("--column", type=float, default=None, metavar="F",
+                       help="start each run with its jet already out: a column of the nozzle's rings F x "
+                            "its L_ref long past the orifice, moving at U (nozzle.column_over_d0; default: "
+                            "none, the jet starts at the orifice; suffix _colF)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -861,6 +871,9 @@ def parse(argv=None):
         ap.error(f"--size-c {args.size_c}: expected a positive number")
     if not args.window > 0:
         ap.error(f"--window {args.window}: expected a positive number of L_ref / U")
+    if args.column is not None and not 0 < args.column < BOX_L_FACTOR:
+        ap.error(f"--column {args.column}: expected 0 < F < {BOX_L_FACTOR:g} (the box reaches "
+                 f"{BOX_L_FACTOR:g} L_ref + 10 d0 below the orifice)")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.own_window and not args.quiet_exit:

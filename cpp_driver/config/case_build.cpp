@@ -459,6 +459,10 @@ void read_jet(const Ctx& ctx, const Section& top, CaseSpec& spec, const Box& box
              "the breakup axis leaves the domain at once",
              "at least 2 d0 = " + num(2 * nz.d0) + " m of axis from the orifice to the box edge along the jet",
              num(room) + " m");
+    if (nz.column() > room + tol)
+        fail(*s.num("column_over_d0"), "the starting column leaves the box",
+             "at most " + num(room / nz.d0) + " (the box's edge is " + num(room) +
+                 " m from the orifice along the jet)");
     spec.nozzle = nz;
     p.drive_u = nz.u0;
     p.drive_x0 = nz.x0, p.drive_z0 = nz.z0, p.drive_ex = nz.ex, p.drive_ez = nz.ez;

@@ -7,7 +7,8 @@
 // axis), the plug's particles sit at
 //   l = -d0/2 + (j + 1/2) d0/N,  s = -(k + 1/2) ds,   j < N, k < M,
 // so the jet leaves symmetric about the axis and exactly d0 wide (a simple lattice; the
-// case's BCC points are not used in the nozzle). Walls (NozzleSpec::walls): a line on each
+// case's BCC points are not used in the nozzle). A starting column (nozzle.column_over_d0)
+// continues the lattice past the orifice, s = +(k + 1/2) ds, with the plug's velocity and density. Walls (NozzleSpec::walls): a line on each
 // side at l = +-(d0/2 + d0/(2N)), one spacing outside the outer fluid rows as the box walls
 // are, with points s = -k ds, k = k0 .. M.
 // Dynamic boundaries add a second, staggered layer half a spacing further out and half a
@@ -43,7 +44,7 @@ struct NozzleWall {
 };
 
 struct NozzleLayout {
-    std::vector<NozzlePoint> fluid;  // the plug
+    std::vector<NozzlePoint> fluid;  // the plug, then the starting column (NozzleSpec::column_over_d0)
     std::vector<NozzleWall> walls;   // empty without walls
     double spacing_across = 0;       // d0 / N
     double spacing_along = 0;        // ds

@@ -380,6 +380,11 @@ const Param kParams[] = {
      .doc = "a row of plug enters at the nozzle's back each time the plug has moved one spacing, so that the nozzle "
             "keeps its length",
      .legacy = "(none)"},
+    {.key = "nozzle.column_over_d0", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::column_over_d0>(),
+     .range = kNonNegative, .def = "0 (none)", .allowed = "the column inside the box",
+     .doc = "a jet already out at the start: a column of the plug's rows this long / D0 past the orifice, moving "
+            "at u0 at the plug's density (free fluid)",
+     .legacy = "(none)"},
     {.key = "nozzle.disturbance", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::disturbance>(),
      .range = between(0, 1, false, true), .def = "0 (none)", .doc = "plug speed u0 (1 + disturbance sin(omega t))",
      .legacy = "(none)", .hand = kEcho},

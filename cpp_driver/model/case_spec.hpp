@@ -110,7 +110,12 @@ struct NozzleSpec {
     // The nozzle stays length() long: a row of plug enters at its back each time the plug has
     // moved one spacing (geometry/nozzle.hpp, nozzle_refill_rows). false: it runs dry.
     bool refill = false;
+    // A jet already out at the start: a column of the plug's lattice this long / d0 past the
+    // orifice, moving at u0 at the plug's density (free fluid, not driven). 0: none, the jet
+    // starts at the orifice.
+    double column_over_d0 = 0;
     [[nodiscard]] double length() const { return length_over_d0 * d0; }
+    [[nodiscard]] double column() const { return column_over_d0 * d0; }
     [[nodiscard]] double disturbance_omega() const { return u0 * disturbance_ka / (0.5 * d0); }
 };
 

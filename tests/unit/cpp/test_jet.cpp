@@ -201,6 +201,67 @@ TEST(NozzleLayout, RoundPipeHasRingsOnOneSide) {
     EXPECT_THROW((void)nozzle_layout(nz, 0.001, 0.001, false, 0.0026, true), std::invalid_argument);
 }
 
+// nozzle.column_over_d0: the plug's lattice continued past the orifice, the column's rows at
+// s = (k + 1/2) ds after the plug's; the generator gives them the plug's velocity and density.
+TEST(NozzleLayout, StartingColumnContinuesThePlugsLattice) {
+    NozzleSpec nz = down_nozzle();
+    nz.x0 = 0.0;
+    nz.column_over_d0 = 2.5;  // 25 rows of 5 rings at ds = 1 mm
+    const NozzleLayout lay = nozzle_layout(nz, 0.001, 0.001, false, 0.0026, true);
+    ASSERT_EQ(lay.fluid.size(), 5u * (150u + 25u));
+    for (std::size_t i = 0; i < lay.fluid.size(); ++i) {
+        const std::size_t row = i / 5, ring = i % 5;
+        const double s = row < 150 ? -(static_cast<double>(row) + 0.5) * 0.001
+                                   : (static_cast<double>(row - 150) + 0.5) * 0.001;
+        EXPECT_NEAR(lay.fluid[i].z, nz.z0 - s, 1e-12);  // down: s = z0 - z
+        EXPECT_NEAR(lay.fluid[i].x, (static_cast<double>(ring) + 0.5) * 0.001, 1e-12);
+    }
+}
+
+TEST(NozzleGenerator, StartingColumnMovesWithThePlug) {
+    const CaseSpec spec = parse_modern_case(R"([numerics]
+lattice = "sc"
+[domain]
+geometry = "axisymmetric"
+lx = 0.004
+lz = 0.03
+wall_left = false
+wall_right = false
+wall_bottom = false
+wall_top = false
+[fluid]
+c0 = 12.0
+[surface_tension]
+sigma = 0.072
+[gravity]
+gz = 0.0
+[nozzle]
+x0 = 0.0
+z0 = 0.025
+d0 = 0.002
+length_over_d0 = 1
+column_over_d0 = 3
+u0 = 0.8
+walls = false
+[resolution]
+dx = 0.0002
+h_over_dx = 2.0
+)",
+                                            "column.toml");
+    const InitialState init = generate(spec);
+    const ParticleSet& ps = init.particles;
+    ASSERT_EQ(ps.n_fluid(), 5u * (10u + 30u));
+    std::size_t out = 0;
+    for (std::size_t i = ps.nb; i < ps.size(); ++i) {
+        EXPECT_EQ(ps.u[i], 0.0);
+        EXPECT_EQ(ps.w[i], -0.8);
+        EXPECT_EQ(ps.rho[i], ps.rho[ps.nb]);  // the plug's density (the Laplace pressure's)
+        if (ps.z[i] < 0.025) ++out;
+    }
+    EXPECT_EQ(out, 5u * 30u);
+    EXPECT_GT(ps.p[ps.nb], 0.0);
+}
+
 // nozzle.refill: once the plug has moved one spacing, one row enters at its back: the back
 // row's positions one spacing upstream, its velocities and masses, at the plug's built density
 // and pressure (plug_state: the round jet's Laplace pressure 2 sigma / d0), not the back row's,

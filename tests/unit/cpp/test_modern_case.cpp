@@ -660,6 +660,11 @@ const BadCase kBad[] = {
      {"nozzle", "the breakup axis leaves the domain", "at least 2 d0 = 0.04", "found 0.03 m"}},
     {"NozzleAxisLeavesDomainRight", "", "[nozzle]\nx0 = 0.49\nz0 = 0.25\naxis = \"right\"\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n",
      {"nozzle.axis", "the breakup axis leaves the domain", "found 0.01"}},
+    // z0 = 0.1, down: 0.1 m = 5 d0 of box below the orifice for the starting column
+    {"NozzleColumnLeavesBox", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\ncolumn_over_d0 = 6\n",
+     {"nozzle.column_over_d0", "the starting column leaves the box", "at most 5", "found 6"}},
+    {"NozzleColumnNegative", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\ncolumn_over_d0 = -1\n",
+     {"nozzle.column_over_d0", "must not be negative", "found -1"}},
     {"NozzleUnknownAxis", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\naxis = \"sideways\"\nd0 = 0.02\nu0 = 0.25\n",
      {"nozzle.axis", "unknown value", "\"down\""}},
     {"BreakupWithoutNozzle", "", "[breakup]\nstop_after = 0.1\n", {"breakup", "needs a jet", "[nozzle]"}},
