@@ -18,7 +18,8 @@ module sphjet_capi
   use list_rebuild, only: gather_sorted
   use traversal, only: pair_list_t, build_row_pairs, PAIRS_ALL
   use rates, only: compute_rates
-  use predictor_corrector, only: pc_step, update_eos
+  use predictor_corrector, only: pc_step
+  use fluid_update, only: update_eos
   use leapfrog, only: lf_step
   use filter_loops, only: apply_density_filter
   use state_checks, only: check_finite, rings_to_split

@@ -30,8 +30,8 @@ module leapfrog
   use rates, only: compute_rates
   use time_step, only: cfl_scan_t, cfl_add, cfl_time_step
   use state_checks, only: check_domain, fold_into_domain
-  use predictor_corrector, only: eos_one, moving_fluid, plug_step
-  use nozzle_drive, only: in_driven_nozzle
+  use fluid_update, only: eos_one, moving_fluid
+  use nozzle_drive, only: in_driven_nozzle, plug_step
   implicit none
   private
   public :: lf_step

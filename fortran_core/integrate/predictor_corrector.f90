@@ -8,10 +8,11 @@
 !> The step for the next call is min of the CFL steps of both stages; note that SPHysics
 !> then advances its clock by that new step, not by the one just taken (this fork advances
 !> by the step taken; the driver keeps the legacy clock too, for comparisons).
-!> A driven nozzle (sphjet's jets, nozzle_drive) moves the fluid inside it as a rigid plug.
+!> A driven nozzle (sphjet's jets, nozzle_drive) moves the fluid inside it as a rigid plug
+!> (nozzle_drive's plug_step).
 module predictor_corrector
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use sphjet_kinds, only: rp, ip, i8, KIND_FLUID, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, &
+  use sphjet_kinds, only: rp, ip, i8, KIND_MOVING_BOUNDARY, BC_DYNAMIC, BC_REPULSIVE, &
                           SPH_OK
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
@@ -20,12 +21,13 @@ module predictor_corrector
   use rates, only: compute_rates, rates_keep_pairs
   use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
   use eos_tait, only: tait_pressure, tait_sound_speed
+  use fluid_update, only: update_eos, moving_fluid, moves
   use state_checks, only: check_domain, fold_into_domain
-  use nozzle_drive, only: in_driven_nozzle
+  use nozzle_drive, only: in_driven_nozzle, plug_step
   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
   private
-  public :: pc_step, update_eos, eos_one, moving_fluid, plug_step
+  public :: pc_step
 
   !> The particle loops of a step (in_team): which = PREDICT or CORRECT. They also make the
   !> time step's scan of the stage's rates (time_step.f90), into scan(which).
@@ -40,41 +42,6 @@ module predictor_corrector
   end type step_work_t
 
 contains
-
-  !> p and c from rho for particles first..last.
-  subroutine update_eos(prm, st, first, last)
-    type(sph_params_t), intent(in) :: prm
-    type(state_t), intent(inout) :: st
-    integer, intent(in) :: first, last
-    integer :: i
-    !$omp parallel do schedule(static)
-    do i = first, last
-      call eos_one(prm, st, i)
-    end do
-    !$omp end parallel do
-  end subroutine update_eos
-
-  !> p and c of particle i from its density.
-  subroutine eos_one(prm, st, i)
-    type(sph_params_t), intent(in) :: prm
-    type(state_t), intent(inout) :: st
-    integer, intent(in) :: i
-    st%p(i) = tait_pressure(st%rho(i), prm%eos%rho0, prm%eos%b, prm%eos%gamma)
-    st%c(i) = tait_sound_speed(st%rho(i), prm%eos%rho0, prm%eos%c0)
-  end subroutine eos_one
-
-  !> Whether particle i is fluid still in the domain (the particles the integrator advances).
-  pure logical function moving_fluid(st, i)
-    type(state_t), intent(in) :: st
-    integer, intent(in) :: i
-    moving_fluid = moves(st%active(i), st%kind(i))
-  end function moving_fluid
-
-  !> The same from a particle's active flag and kind.
-  pure elemental logical function moves(active, kind)
-    integer(ip), intent(in) :: active, kind
-    moves = active /= 0 .and. kind == KIND_FLUID
-  end function moves
 
   subroutine pc_step(prm, kern, st, s, info, status)
     type(sph_params_t), intent(in) :: prm
@@ -371,25 +338,5 @@ contains
       end if
     end do
   end subroutine move_gate
-
-  !> A fluid particle whose start-of-step position lies in a driven nozzle (nozzle_drive),
-  !> after half_steps (or the leapfrog's kicks, with its whole step as dt2): it moves rigidly
-  !> with the plug velocity instead, r = r^n + dt2 u_plug,
-  !> u = u_plug (and u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its
-  !> density still follows continuity (half_steps).
-  subroutine plug_step(prm, st, i, dt2)
-    type(sph_params_t), intent(in) :: prm
-    type(state_t), intent(inout) :: st
-    integer, intent(in) :: i
-    real(rp), intent(in) :: dt2
-    st%u(i) = prm%nozzle%u * prm%nozzle%ex
-    st%w(i) = prm%nozzle%u * prm%nozzle%ez
-    st%x(i) = st%xo(i) + dt2 * st%u(i)
-    st%z(i) = st%zo(i) + dt2 * st%w(i)
-    ! The corrector's u = 2 u^{n+1/2} - u^n must give the plug's velocity also for a
-    ! particle that entered the plug with another one.
-    st%uo(i) = st%u(i)
-    st%wo(i) = st%w(i)
-  end subroutine plug_step
 
 end module predictor_corrector
