@@ -6,7 +6,7 @@ origin; the groups are the diameter ones; missing runs are listed; `run --dry-ru
 as its docstring says; `report --only --brief` prints the chosen run in lines (its theory line
 checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
-one that keeps growing).
+one that keeps growing); `--column` sizes each run's starting column from its L_ref.
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -269,6 +269,16 @@ def main():
               f"--quiet-jets --c0 16: exit {p.returncode} {p.stderr}")
         check(rjs.study_flags(rjs.parse(["report", "--eps", "0", "--window", "0.5", "--own-window"] + long_form))
               == " --eps 0 --d0-over-dx 10 --quiet-jets --window 0.5 --own-window", "the report's run command, quiet")
+        # --column 0.5: each run starts with a column half its L_ref long (0.7814 m/s: 67.52 / 2 =
+        # 33.76 d0), in a directory of its own; 0 and beyond the box (1.6 L_ref) refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--column", "0.5",
+                            "--only", "mc_u0.7814"], capture_output=True, text=True)
+        check("nozzle.column_over_d0=33.76 " in p.stdout and "eps0.01_n10_col0.5" in p.stdout, f"--column: {p.stdout}")
+        for bad in ("0", "1.6"):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--column", bad], capture_output=True, text=True)
+            check(p.returncode == 2 and "--column" in p.stderr, f"--column {bad}: exit {p.returncode}")
+        check(rjs.study_flags(rjs.parse(["report", "--column", "0.5"])) == " --eps 0.01 --d0-over-dx 10 --column 0.5",
+              "the report's run command with --column")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
