@@ -29,15 +29,15 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     NozzleLayout out;
     out.spacing_across = dl;
     out.spacing_along = ds;
-    out.fluid.reserve(static_cast<std::size_t>(n_across * (m_along + std::lround(nz.column() / ds))));
+    // The starting column's rows (nozzle.column_over_d0), past the orifice on the plug's lattice.
+    const long c_along = std::lround(nz.column() / ds);
+    out.fluid.reserve(static_cast<std::size_t>(n_across * (m_along + c_along)));
     // l of the first column: the edge of the orifice (planar) or the axis (axisymmetric).
     // The axis's direction CCW(e) is +x for a jet going up and -x going down: the rings
     // stand on the side r = x >= 0.
     const double side_r = axisymmetric ? (lx > 0 ? 1.0 : -1.0) : 1.0;
     const double l_first = axisymmetric ? 0.0 : -0.5 * nz.d0;
-    // The plug, and the starting column (if any) on the same lattice, continuing it past the
-    // orifice: rows k < 0 at s = (|k| - 1/2) ds.
-    const long c_along = std::lround(nz.column() / ds);
+    // The plug's rows at s = -(k + 1/2) ds, then the column's at s = +(k + 1/2) ds.
     for (long k = 0; k < m_along; ++k)
         for (long j = 0; j < n_across; ++j) {
             const double l = l_first + (static_cast<double>(j) + 0.5) * dl;

@@ -8,9 +8,9 @@
 //   l = -d0/2 + (j + 1/2) d0/N,  s = -(k + 1/2) ds,   j < N, k < M,
 // so the jet leaves symmetric about the axis and exactly d0 wide (a simple lattice; the
 // case's BCC points are not used in the nozzle). A starting column (nozzle.column_over_d0)
-// continues the lattice past the orifice, s = +(k + 1/2) ds, with the plug's velocity and density. Walls (NozzleSpec::walls): a line on each
-// side at l = +-(d0/2 + d0/(2N)), one spacing outside the outer fluid rows as the box walls
-// are, with points s = -k ds, k = k0 .. M.
+// continues the lattice past the orifice, s = +(k + 1/2) ds, with the plug's velocity and
+// density. Walls (NozzleSpec::walls): a line on each side at l = +-(d0/2 + d0/(2N)), one
+// spacing outside the outer fluid rows as the box walls are, with points s = -k ds, k = k0 .. M.
 // Dynamic boundaries add a second, staggered layer half a spacing further out and half a
 // spacing upstream, as the box walls have.
 // Axisymmetric (a round jet; the axis is x = 0, along z): the pipe's half r >= 0 only, with
