@@ -37,17 +37,13 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     // stand on the side r = x >= 0.
     const double side_r = axisymmetric ? (lx > 0 ? 1.0 : -1.0) : 1.0;
     const double l_first = axisymmetric ? 0.0 : -0.5 * nz.d0;
+    const auto row = [&](double s) {
+        for (long j = 0; j < n_across; ++j)
+            out.fluid.push_back(at(s, side_r * (l_first + (static_cast<double>(j) + 0.5) * dl)));
+    };
     // The plug's rows at s = -(k + 1/2) ds, then the column's at s = +(k + 1/2) ds.
-    for (long k = 0; k < m_along; ++k)
-        for (long j = 0; j < n_across; ++j) {
-            const double l = l_first + (static_cast<double>(j) + 0.5) * dl;
-            out.fluid.push_back(at(-(static_cast<double>(k) + 0.5) * ds, side_r * l));
-        }
-    for (long k = 0; k < c_along; ++k)
-        for (long j = 0; j < n_across; ++j) {
-            const double l = l_first + (static_cast<double>(j) + 0.5) * dl;
-            out.fluid.push_back(at((static_cast<double>(k) + 0.5) * ds, side_r * l));
-        }
+    for (long k = 0; k < m_along; ++k) row(-(static_cast<double>(k) + 0.5) * ds);
+    for (long k = 0; k < c_along; ++k) row((static_cast<double>(k) + 0.5) * ds);
     if (!nz.walls) return out;
 
     const double off = 0.5 * nz.d0 + 0.5 * dl;
