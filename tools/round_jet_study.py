@@ -289,8 +289,8 @@ def own_window(rows, u, d0, window, slack=0.0):
     least-squares line over its mean, or None), parts (parts_off's departure, when the window is
     judged), need (the end [s] the window needs:
     OWN_MORE L_j / U past the last sample's time while it drifts; without a start, the end that
-    a window of the recent length would need, at least OWN_GROWTH times the last sample's
-    time)."""
+    a window of the recent length would need (each length at most the U t issued by then), at
+    least OWN_GROWTH times the last sample's time)."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
     tail_sum = 0.0
     sums = []
@@ -310,7 +310,10 @@ def own_window(rows, u, d0, window, slack=0.0):
                 if (abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error) or out["parts"]:
                     out["need"] = float(rows[-1]["time"]) + OWN_MORE * tau
             return out
-    recent = [l for _t, l in broken[-10:]]
+    # a length counts up to the fluid issued since the start, U t: the rest of a longer jet is
+    # the starting column's (--column), not the jet's own (a jet started at the orifice was at
+    # most 0.92 U t long in the study's runs)
+    recent = [min(l, u * t / d0) for t, l in broken[-10:]]
     longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
     t_last = float(rows[-1]["time"]) if rows else 0.0
     return {"start": None, "L": None, "drift": None,

@@ -321,6 +321,13 @@ def main():
         # (more than 1.25 times 0.13 s, the least a run is made longer by)
         ow = rjs.own_window(grow[:126], u, d0, 0.5)
         check(ow["start"] is None and abs(ow["need"] - 2.25 * tau) < 1e-12, f"own window not yet: {ow}")
+        # a starting column (--column) 68 d0 long, intact over its first 4 ms: its lengths count
+        # only up to the U t issued by then (at most 2.6 d0), so the run is sized as a 10 d0 jet,
+        # 2.25 x 10 d0 / U = 0.03438 s, and not as a 68 d0 one (0.2338 s)
+        column = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": "68"} for k in range(3, 9)]
+        ow = rjs.own_window(column, u, d0, 0.5)
+        check(ow["start"] is None and abs(ow["need"] - 2.25 * 10 * d0 / u) < 1e-12,
+              f"own window of a starting column: {ow}")
         # a jet that grows at 0.45 U throughout passes the start's test (from the first sample at
         # t >= 0.65 T, T = 0.2 s its end: 0.13 s) and reaches its need (0.13 + 0.5 tau, tau =
         # 0.45 (0.13 + 0.2) / 2 s = 0.07425 s); but its window's line rises by 0.07 / 0.165 = 42% of
