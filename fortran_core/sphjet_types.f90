@@ -22,6 +22,7 @@ module sphjet_types
     real(c_double) :: xsph_eps = 0.5_rp      !< XSPH epsilon
     real(c_double) :: density_diffusion = 0.0_rp !< delta of the density diffusion; 0 = off
     real(c_double) :: bulk_viscosity = 0.0_rp    !< beta of the bulk viscosity beta rho0 c0 h; 0 = off
+    real(c_double) :: shifting = 0.0_rp      !< A of the shifting velocity -A h (c0/10) grad C; 0 = off
   end type sph_numerics_t
 
   !> Time-step control (C struct sph_time_step_t).

@@ -43,6 +43,12 @@ LoadedCase load_case(const fs::path& path, const std::vector<std::string>& overr
                                  "\"predictor_corrector\"",
                                  "numerics.bulk_viscosity = 0");
         }
+        if (lc.spec.params.shifting > 0 && !(lc.spec.params.sigma > 0))
+            throw InputError(path.string() + ": numerics.shifting",
+                             "shifting finds the free surface with the surface tension's passes, "
+                             "and a case without surface tension has none",
+                             "surface_tension.sigma > 0, or numerics.shifting = 0",
+                             "surface_tension.sigma = 0");
         return lc;
     }
     if (!overrides.empty())

@@ -36,6 +36,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.numerics.xsph_eps = p.xsph_eps;
     c.numerics.density_diffusion = p.density_diffusion;
     c.numerics.bulk_viscosity = p.bulk_viscosity;
+    c.numerics.shifting = p.shifting;
 
     c.time_step.variable_dt = p.variable_dt ? 1 : 0;
     c.time_step.cfl = p.cfl;

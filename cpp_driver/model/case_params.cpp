@@ -89,6 +89,13 @@ const Param kParams[] = {
      .doc = "beta of a bulk viscosity zeta = beta rho0 c0 h: the momentum equation's pressure is p - zeta div v "
             "(div v = -drho/dt / rho of the last evaluation); damps sound waves, not divergence-free flow",
      .legacy = "(none)", .h5_optional = true},
+    {.key = "numerics.shifting", .attr = "shifting", .type = K::Float, .unit = "1",
+     .member = member<&SimParams::shifting>(), .range = between(0, 100),
+     .allowed = "0 = off; needs surface tension (surface_tension.sigma > 0), whose passes find the free surface",
+     .doc = "particle shifting (Lind et al. 2012): each fluid particle drifts with the velocity "
+            "-A h (c0/10) grad C (C = sum_b V_b W_ab, the kernel's sum) added to its XSPH velocity; where the "
+            "surface cuts its kernel (colour below 0.97) only its part along the surface",
+     .legacy = "(none)", .h5_optional = true},
     {.key = "numerics.tensile_correction", .attr = "tensile_correction", .type = K::String,
      .member = member<&SimParams::tensile_correction>(), .choices = kTensile,
      .allowed = "auto: on for gaussian and cubic_spline, as legacy",

@@ -160,6 +160,9 @@ struct SimParams {
     double density_diffusion = 0.0;
     // Bulk viscosity zeta = beta rho0 c0 h in the momentum equation (rates.f90): its beta; 0 = off.
     double bulk_viscosity = 0.0;
+    // Particle shifting (Lind et al. 2012; surface_tension_loops.f90): the A of the shifting
+    // velocity -A h (c0/10) grad C, tangential at the free surface; 0 = off.
+    double shifting = 0.0;
     // Tensile-instability correction (Monaghan 2000): legacy SPHysics turns it on for the
     // Gaussian and cubic-spline kernels and off for the others. -1 = as legacy, 0 off, 1 on.
     int tensile_correction = -1;

@@ -110,6 +110,7 @@ contains
       .and. any(prm%surface_tension%curvature == [CURVATURE_NORMALS, CURVATURE_SURFACE_FIT]) &
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
+      .and. prm%numerics%shifting >= 0.0_rp &
       .and. any(prm%viscosity%reconstruct == [0, 1]) &
       .and. any(prm%numerics%integrator == [INTEGRATOR_PC, INTEGRATOR_LEAPFROG])
     ! a period must hold the images of both ends apart (two kernel supports)

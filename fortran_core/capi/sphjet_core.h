@@ -37,6 +37,7 @@ typedef struct sph_numerics_t {
     double xsph_eps;          /* XSPH epsilon */
     double density_diffusion; /* delta of the density diffusion (delta-SPH); 0 = off */
     double bulk_viscosity;    /* beta of the bulk viscosity zeta = beta rho0 c0 h; 0 = off */
+    double shifting;          /* A of the shifting velocity -A h (c0/10) grad C; 0 = off */
 } sph_numerics_t;
 
 typedef struct sph_time_step_t {

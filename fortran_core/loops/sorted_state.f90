@@ -41,6 +41,10 @@ module sorted_state
     !> The rings pair's truncation vector (loops/axisymmetric_loops.f90, ring_rates), set with
     !> the rates and read by the CSF force of the same evaluation
     real(rp), allocatable :: axi_dx(:), axi_dz(:)
+    !> The shifting velocity of each slot (numerics.shifting; surface_tension_loops.f90),
+    !> shift(1:2, k), set with the rates and added to the XSPH velocity by the scatter;
+    !> allocated only where shifting is on
+    real(rp), allocatable :: shift(:, :)
     ! per-particle inputs of the rates loop (loops/rates.f90): tensile R and repulsive-wall
     ! geometry, kept here so that an evaluation allocates (and page-faults) nothing
     real(rp), allocatable :: tr(:), wnx(:), wnz(:), wdb(:), wdf(:)
@@ -201,6 +205,8 @@ contains
     integer :: i
     call scatter_slots(s%n, s%grid%order, st%n, xsph_eps, s%rate, st%ax, st%az, st%ar, &
                        st%xsph_u, st%xsph_w)
+    ! the same static share of the slots as scatter_slots' (no barrier needed between them)
+    if (allocated(s%shift)) call add_shift(s%n, s%grid%order, st%n, s%shift, st%xsph_u, st%xsph_w)
     !$omp do schedule(static)
     do i = 1, st%n
       if (st%active(i) /= 0) cycle
@@ -233,6 +239,23 @@ contains
     end do
     !$omp end do nowait
   end subroutine scatter_slots
+
+  !> The shifting velocity of the real slots added to their particles' XSPH velocity; by every
+  !> thread of a parallel region, the slots shared as in scatter_slots; no wait at the end.
+  subroutine add_shift(n, order, n_state, shift, xu, xw)
+    integer, intent(in) :: n, order(*), n_state
+    real(rp), intent(in) :: shift(2, *)
+    real(rp), intent(inout) :: xu(*), xw(*)
+    integer :: k, i
+    !$omp do schedule(static)
+    do k = 1, n
+      i = order(k)
+      if (i > n_state) cycle
+      xu(i) = xu(i) + shift(1, k)
+      xw(i) = xw(i) + shift(2, k)
+    end do
+    !$omp end do nowait
+  end subroutine add_shift
 
   !> One pair list per thread (at least omp_get_max_threads()), kept in the work space from
   !> sweep to sweep.

@@ -1007,6 +1007,20 @@ TEST(ModernCase, BulkViscosity) {
     }
 }
 
+// numerics.shifting (cases/CASE_FORMAT.md): off by default; read, written back and read again;
+// below 0 or above 100 refused, naming the key and the range.
+TEST(ModernCase, Shifting) {
+    EXPECT_EQ(parse_modern_case(kMinimal, "case.toml", {}).params.shifting, 0.0);
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", {"numerics.shifting=0.03"});
+    EXPECT_EQ(s.params.shifting, 0.03);
+    expect_round_trip(s);
+    for (const char* bad : {"numerics.shifting=-0.1", "numerics.shifting=101"}) {
+        const std::string e = error_of(kMinimal, {bad});
+        EXPECT_NE(e.find("numerics.shifting"), std::string::npos) << e;
+        EXPECT_NE(e.find("[0, 100]"), std::string::npos) << e;
+    }
+}
+
 // numerics.artificial_alpha (cases/CASE_FORMAT.md): off by default; with laminar viscosity read,
 // written back and read again; with the artificial viscosity (the default model) refused, naming
 // the key and numerics.alpha; out of [0, 1] refused, naming the key and the range.
