@@ -94,7 +94,8 @@ const Param kParams[] = {
      .allowed = "0 = off; needs surface tension (surface_tension.sigma > 0), whose passes find the free surface",
      .doc = "particle shifting (Lind et al. 2012): each fluid particle drifts with the velocity "
             "-A h (c0/10) grad C (C = sum_b V_b W_ab, the kernel's sum) added to its XSPH velocity; where the "
-            "surface cuts its kernel (colour below 0.97) only its part along the surface",
+            "surface cuts its kernel (colour below 0.97) only its part along the surface; axisymmetric: "
+            "rings closer to the axis than h/2 only along the axis",
      .legacy = "(none)", .h5_optional = true},
     {.key = "numerics.tensile_correction", .attr = "tensile_correction", .type = K::String,
      .member = member<&SimParams::tensile_correction>(), .choices = kTensile,
