@@ -313,24 +313,19 @@ contains
     !$omp end parallel do
   end subroutine surface_mean_force
 
-  !> Particle shifting (numerics.shifting = A; Lind et al. 2012, in the velocity form of Sun et
-  !> al. 2017): every fluid slot drifts with u_s = -A h (c0/10) grad C added to its XSPH
-  !> velocity (sorted_state.f90, add_shift), where grad C = sum_b V_b grad_a W_ab is the
-  !> kernel's truncation vector, the free-surface delta of the CSF force halved (wk%ng rows
-  !> NG_GX, NG_GZ: the planar sum is grad C itself, the axisymmetric delta is complete,
-  !> 2 grad C with the rings' weights). Inside a whole support grad C vanishes on any even
-  !> arrangement; a particle nearer some neighbours than others moves away from them. Where the
-  !> surface cuts the kernel (the colour, axisymmetric: the mode's colour c2, below
-  !> SHIFT_WHOLE) grad C points into the liquid, so only its part normal to the colour's
-  !> gradient is kept: the surface is not pushed out. At d0/dx 10 with h = 2 dx that is every
-  !> ring of a jet but the axis's. Axisymmetric: a ring closer to the axis than h/2 (the
-  !> nozzle's innermost, at dx/2) shifts along the axis only; with its radial shift the truncation
-  !> vector moved it out to 0.6-0.9 dx within a few d0 of a round jet's orifice, a disturbance
-  !> that lowered the jet's floor C = ln(a/delta0) from 17.2 to 9.5 (cases/round_jet/README.md,
-  !> "Gravity along the jet"). No Taylor correction of the density or velocity for the
-  !> shift. The velocity scale
-  !> c0/10 makes the shift per step A (c0 dt / h) h^2 / 10 grad C, about 0.025 A h^2 grad C at the
-  !> jets' step of a quarter h / c0.
+  !> Particle shifting (numerics.shifting = A; Lind et al. 2012, Sun et al.'s velocity form):
+  !> each fluid slot drifts with u_s = -A h (c0/10) grad C added to its XSPH velocity
+  !> (sorted_state.f90, add_shift), grad C = sum_b V_b grad_a W_ab the kernel's truncation
+  !> vector: the CSF free-surface delta (wk%ng NG_GX, NG_GZ), planar grad C itself, axisymmetric
+  !> 2 grad C with the rings' weights. It vanishes inside a whole support on an even
+  !> arrangement and moves a particle away from its nearer neighbours. Where the surface cuts the
+  !> kernel (colour, axisymmetric c2, below SHIFT_WHOLE) only its part normal to the colour's
+  !> gradient is kept, so the surface is not pushed out: on a flat surface at h = 2 dx the two
+  !> outer rows (colour 0.69, 0.93); the third (0.997) keeps a small outward shift. A ring closer
+  !> to the axis than h/2 shifts along the axis only: radially, the nozzle's innermost ring went
+  !> from dx/2 to 0.6-0.9 dx and the round jet's floor C from 17.2 to 9.5
+  !> (cases/round_jet/README.md, "Gravity along the jet"). No Taylor correction of density or
+  !> velocity. Per step the shift is A (c0 dt / h) h^2 grad C / 10, 0.025 A h^2 grad C at dt = h/(4 c0).
   subroutine shifting_velocity(prm, st, s, wk, axi)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(in) :: st
