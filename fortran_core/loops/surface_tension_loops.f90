@@ -316,16 +316,15 @@ contains
   !> Particle shifting (numerics.shifting = A; Lind et al. 2012, Sun et al.'s velocity form):
   !> each fluid slot drifts with u_s = -A h (c0/10) grad C added to its XSPH velocity
   !> (sorted_state.f90, add_shift), grad C = sum_b V_b grad_a W_ab the kernel's truncation
-  !> vector: the CSF free-surface delta (wk%ng NG_GX, NG_GZ), planar grad C itself, axisymmetric
-  !> 2 grad C with the rings' weights. It vanishes inside a whole support on an even
-  !> arrangement and moves a particle away from its nearer neighbours. Where the surface cuts the
+  !> vector: the CSF free-surface delta (wk%ng NG_GX, NG_GZ; axisymmetric 2 grad C with the rings'
+  !> weights), zero inside a whole support on an even arrangement. Where the surface cuts the
   !> kernel (colour, axisymmetric c2, below SHIFT_WHOLE) only its part normal to the colour's
   !> gradient is kept, so the surface is not pushed out: on a flat surface at h = 2 dx the two
   !> outer rows (colour 0.69, 0.93); the third (0.997) keeps a small outward shift. A ring closer
   !> to the axis than h/2 shifts along the axis only: radially, the nozzle's innermost ring went
   !> from dx/2 to 0.6-0.9 dx and the round jet's floor C from 17.2 to 9.5
-  !> (cases/round_jet/README.md, "Gravity along the jet"). No Taylor correction of density or
-  !> velocity. Per step the shift is A (c0 dt / h) h^2 grad C / 10, 0.025 A h^2 grad C at dt = h/(4 c0).
+  !> (cases/round_jet/README.md, "Gravity along the jet"). No Taylor correction; per step the
+  !> shift is A (c0 dt / h) h^2 grad C / 10.
   subroutine shifting_velocity(prm, st, s, wk, axi)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(in) :: st
@@ -333,7 +332,7 @@ contains
     type(csf_work_t), intent(in) :: wk
     logical, intent(in) :: axi
     integer :: n, k
-    real(rp) :: d, gx, gz, gn, nn, nx, nz
+    real(rp) :: d, gx, gz, gn, nn, nx, nz, colour
     real(rp), parameter :: SHIFT_WHOLE = 0.97_rp
     n = s%n
     if (allocated(s%shift)) then
@@ -341,7 +340,7 @@ contains
     end if
     if (.not. allocated(s%shift)) allocate(s%shift(2, n + n / 4 + 16))
     d = prm%numerics%shifting * prm%numerics%h * 0.1_rp * prm%eos%c0 * merge(0.5_rp, 1.0_rp, axi)
-    !$omp parallel do schedule(static) private(gx, gz, gn, nn, nx, nz)
+    !$omp parallel do schedule(static) private(gx, gz, gn, nn, nx, nz, colour)
     do k = 1, n
       if (.not. s%fluid(k) .or. s%grid%order(k) > st%n) then
         s%shift(1:2, k) = 0.0_rp
@@ -349,8 +348,13 @@ contains
       end if
       gx = wk%ng(NG_GX, k)
       gz = wk%ng(NG_GZ, k)
-      ! the kernel cut by the surface: the colour's gradient direction, the part along it removed
-      if (merge(wk%c2(k), wk%c(k), axi) < SHIFT_WHOLE) then
+      ! a kernel cut by the surface: no part along the colour's gradient (c2: axisymmetric only)
+      if (axi) then
+        colour = wk%c2(k)
+      else
+        colour = wk%c(k)
+      end if
+      if (colour < SHIFT_WHOLE) then
         nn = hypot(wk%ng(NG_NX, k), wk%ng(NG_NZ, k))
         if (nn > 0.0_rp) then
           nx = wk%ng(NG_NX, k) / nn
@@ -360,7 +364,6 @@ contains
           gz = gz - gn * nz
         end if
       end if
-      ! the innermost rings shift along the axis only (above)
       if (axi .and. abs(s%x(k)) < 0.5_rp * prm%numerics%h) gx = 0.0_rp
       s%shift(1, k) = -d * gx
       s%shift(2, k) = -d * gz
