@@ -190,7 +190,7 @@ contains
     if (prm%numerics%density_diffusion > 0.0_rp) call density_diffusion_rates(prm, kern, s)
 
     ! back to particle order (inactive particles get zero rates)
-    call scatter_rates(s, st, prm%numerics%xsph_eps)
+    call scatter_rates(s, st, prm%numerics%xsph_eps, prm%numerics%shifting > 0.0_rp)
   end subroutine compute_rates
 
   !> The pairs of one row task in two passes over chunks of CHUNK pairs (the chunk's columns

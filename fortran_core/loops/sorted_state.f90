@@ -43,7 +43,7 @@ module sorted_state
     real(rp), allocatable :: axi_dx(:), axi_dz(:)
     !> The shifting velocity of each slot (numerics.shifting; surface_tension_loops.f90),
     !> shift(1:2, k), set with the rates and added to the XSPH velocity by the scatter;
-    !> allocated only where shifting is on
+    !> allocated by shifting's first use
     real(rp), allocatable :: shift(:, :)
     ! per-particle inputs of the rates loop (loops/rates.f90): tensile R and repulsive-wall
     ! geometry, kept here so that an evaluation allocates (and page-faults) nothing
@@ -91,6 +91,7 @@ module sorted_state
     type(state_t), pointer :: st => null()
     logical :: images = .false.
     real(rp) :: xsph_eps = 0.0_rp
+    logical :: shifted = .false.
   contains
     procedure :: run => sorted_run
   end type sorted_work_t
@@ -117,7 +118,7 @@ contains
     case (GATHER)
       call gather_all(self%st, self%s, self%images)
     case default
-      call scatter_all(self%s, self%st, self%xsph_eps)
+      call scatter_all(self%s, self%st, self%xsph_eps, self%shifted)
     end select
   end subroutine sorted_run
 
@@ -181,32 +182,36 @@ contains
   end subroutine clear_sums
 
   !> The accumulated rates of the sorted slots back to particle order: st%ax, az, ar and
-  !> xsph_eps times the XSPH sums; inactive particles get zero rates. The sorted slots are
+  !> xsph_eps times the XSPH sums, plus s%shift where shifted (numerics.shifting, set by the
+  !> surface tension's passes of the same evaluation); inactive particles get zero rates. The sorted slots are
   !> exactly the active particles, so the two loops write disjoint entries and need no
   !> barrier between them (nowait). Image slots are not scattered: their sums are discarded.
-  subroutine scatter_rates(s, st, xsph_eps)
+  subroutine scatter_rates(s, st, xsph_eps, shifted)
     type(sorted_t), intent(in), target :: s
     type(state_t), intent(inout), target :: st
     real(rp), intent(in) :: xsph_eps
+    logical, intent(in) :: shifted
     type(sorted_work_t) :: work
     work%s => s
     work%st => st
     work%xsph_eps = xsph_eps
+    work%shifted = shifted
     call in_team(work, SCATTER)
   end subroutine scatter_rates
 
   !> The loops of scatter_rates (in_team's SCATTER): every thread its static share of the
   !> slots, a slot's five sums (side by side in rate) back to particle order in one pass;
   !> inactive particles get zeros. Image slots (grid%order(k) > st%n) are skipped.
-  subroutine scatter_all(s, st, xsph_eps)
+  subroutine scatter_all(s, st, xsph_eps, shifted)
     type(sorted_t), intent(in) :: s
     type(state_t), intent(inout) :: st
     real(rp), intent(in) :: xsph_eps
+    logical, intent(in) :: shifted
     integer :: i
     call scatter_slots(s%n, s%grid%order, st%n, xsph_eps, s%rate, st%ax, st%az, st%ar, &
                        st%xsph_u, st%xsph_w)
     ! the same static share of the slots as scatter_slots' (no barrier needed between them)
-    if (allocated(s%shift)) call add_shift(s%n, s%grid%order, st%n, s%shift, st%xsph_u, st%xsph_w)
+    if (shifted) call add_shift(s%n, s%grid%order, st%n, s%shift, st%xsph_u, st%xsph_w)
     !$omp do schedule(static)
     do i = 1, st%n
       if (st%active(i) /= 0) cycle

@@ -110,3 +110,17 @@ TEST(CoreShifting, AxisRingsShiftAlongTheAxisOnly) {
     EXPECT_LT(ps.xw[moved], 0.0);
     for (int k = 0; k < nz; ++k) EXPECT_EQ(ps.xu[k], 0.0) << "axis ring, row " << k;
 }
+
+// The core refuses shifting without surface tension, whose passes set its velocity.
+TEST(CoreShifting, RefusedWithoutSurfaceTension) {
+    const double dx = 0.001;
+    auto prm = column_params(dx, 1.3 * dx, 20, 1.0);
+    prm.surface_tension.sigma = 0;
+    auto ps = slab(12, 20, dx);
+    auto arr = ps.bind();
+    EXPECT_NE(sph_prepare(&prm, &arr), SPH_OK);
+    void* ws = sph_workspace_create();
+    double vmax = 0;
+    EXPECT_NE(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
+    sph_workspace_destroy(ws);
+}
