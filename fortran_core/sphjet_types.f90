@@ -86,6 +86,10 @@ module sphjet_types
     real(c_double) :: x0 = 0.0_rp, z0 = 0.0_rp  !< orifice centre [m]
     real(c_double) :: ex = 0.0_rp, ez = -1.0_rp !< unit jet axis (flow direction)
     real(c_double) :: half_width = 0.0_rp    !< plug half-width across the axis [m]
+    real(c_double) :: profile_a = 0.0_rp     !< parabolic exit profile's wall distance [m]; 0 = rigid plug
+    real(c_double) :: profile_k = 0.0_rp     !< its centre speed / u (the lattice's flux equals u's)
+    real(c_double) :: profile_lmax = 0.0_rp  !< the outer line's distance: farther fluid moves with it [m]
+    real(c_double) :: profile_rho = 0.0_rp   !< the density a profiled plug holds [kg/m^3]
   end type sph_nozzle_t
 
   !> Planar or axisymmetric, periodicity, and the axisymmetric pair (C struct sph_geometry_t).

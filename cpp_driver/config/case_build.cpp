@@ -7,6 +7,7 @@
 #include "config/case_derived.hpp"
 #include "config/case_toml.hpp"
 #include "config/modern_case.hpp"
+#include "geometry/nozzle.hpp"
 #include "model/case_params.hpp"
 
 namespace sphjet::casefile {
@@ -469,6 +470,13 @@ void read_jet(const Ctx& ctx, const Section& top, CaseSpec& spec, const Box& box
     // Half a spacing beyond the outer fluid rows, so that every plug particle is driven
     // and the walls (a spacing out) are not.
     p.drive_half_width = 0.5 * nz.d0 + 0.25 * std::max(p.dx, p.dz);
+    if (nz.profile == NozzleProfile::Parabolic) {
+        p.drive_profile_a = 0.5 * nz.d0;
+        const bool axi = p.geometry == Geometry::Axisymmetric;
+        p.drive_profile_k = nozzle_profile_k(nz, p.dx, p.dz, axi);
+        p.drive_profile_lmax = 0.5 * nz.d0 - 0.5 * nozzle_layout(nz, p.dx, p.dz, false, 0.0, axi).spacing_across;
+        p.drive_profile_rho = plug_state(p, nz).rho;
+    }
     p.drive_eps = nz.disturbance;
     p.drive_omega = nz.disturbance > 0 ? nz.disturbance_omega() : 0.0;
     p.domain_box = true;

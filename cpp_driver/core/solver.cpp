@@ -82,6 +82,10 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.nozzle.ex = p.drive_ex;
     c.nozzle.ez = p.drive_ez;
     c.nozzle.half_width = p.drive_half_width;
+    c.nozzle.profile_a = p.drive_profile_a;
+    c.nozzle.profile_k = p.drive_profile_k;
+    c.nozzle.profile_lmax = p.drive_profile_lmax;
+    c.nozzle.profile_rho = p.drive_profile_rho;
 
     c.geometry.kind = static_cast<int>(p.geometry);
     c.geometry.periodic_z = p.periodic_z ? 1 : 0;

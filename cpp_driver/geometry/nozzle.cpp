@@ -66,6 +66,20 @@ NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dyna
     return out;
 }
 
+double nozzle_profile_k(const NozzleSpec& nz, double dx, double dz, bool axisymmetric) {
+    const NozzleLayout lay = nozzle_layout(nz, dx, dz, false, 0.0, axisymmetric);
+    const double a = 0.5 * nz.d0;
+    const long n_across = std::lround((axisymmetric ? a : nz.d0) / lay.spacing_across);
+    double flux = 0, shaped = 0;
+    for (long j = 0; j < n_across; ++j) {
+        const double l = std::abs((axisymmetric ? 0.0 : -a) + (static_cast<double>(j) + 0.5) * lay.spacing_across);
+        const double w = axisymmetric ? l : 1.0;
+        flux += w;
+        shaped += w * (1.0 - (l / a) * (l / a));
+    }
+    return flux / shaped;
+}
+
 PlugState plug_state(const SimParams& prm, const NozzleSpec& nz) {
     const double rho = prm.geometry == Geometry::Axisymmetric ? tait_density(prm, 2 * prm.sigma / nz.d0) : prm.rho0;
     return {rho, tait_pressure(prm, rho)};
@@ -76,27 +90,51 @@ ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, doubl
     const double ds = nz.ex == 0.0 ? dz : dx;
     const double s_back = -(static_cast<double>(std::max(1L, std::lround(nz.length() / ds))) - 0.5) * ds;
     const auto axial = [&](std::size_t i) { return (ps.x[i] - nz.x0) * nz.ex + (ps.z[i] - nz.z0) * nz.ez; };
+    const double dl = nz.ex == 0.0 ? dx : dz;
+    // The line (lattice column) of a plug particle: its signed distance from the axis in half
+    // spacings across (the lattice's lines are two apart, whether they sit on integers or not).
+    const auto line = [&](std::size_t i) {
+        return std::lround(2.0 * ((ps.x[i] - nz.x0) * nz.ez - (ps.z[i] - nz.z0) * nz.ex) / dl);
+    };
     std::vector<std::size_t> plug;
-    double s_min = 0;
+    std::vector<std::pair<long, double>> s_min;  // each line's hindmost s
+    const auto line_min = [&](long c) -> double* {
+        for (auto& [line_c, s] : s_min)
+            if (line_c == c) return &s;
+        return nullptr;
+    };
     for (std::size_t i = ps.nb; i < ps.size(); ++i) {
         if (ps.kind[i] != static_cast<int>(ParticleKind::Fluid) || (!ps.active.empty() && ps.active[i] == 0)) continue;
         const double s = axial(i);
         const double l = std::abs((ps.x[i] - nz.x0) * nz.ez - (ps.z[i] - nz.z0) * nz.ex);
         if (!(s < 0.0) || l > half_width) continue;
-        if (plug.empty() || s < s_min) s_min = s;
+        if (double* m = line_min(line(i))) {
+            *m = std::min(*m, s);
+        } else {
+            s_min.emplace_back(line(i), s);
+        }
         plug.push_back(i);
     }
     ParticleSet rows;
     if (plug.empty()) return rows;
-    // The back row: every plug particle within a quarter spacing of the most upstream one.
+    // Each line's back: its plug particles within a quarter spacing of its most upstream one,
+    // for the lines that reach back to within two spacings of where the back row was built
+    // (fluid that came back into the strip near the orifice is not a line of the plug).
     std::vector<std::size_t> back;
-    for (const std::size_t i : plug)
-        if (axial(i) < s_min + 0.25 * ds) back.push_back(i);
-    for (int k = 1; s_min - k * ds >= s_back - 1e-6 * ds; ++k)
+    for (const std::size_t i : plug) {
+        const double m = *line_min(line(i));
+        if (m < s_back + 2.0 * ds && axial(i) < m + 0.25 * ds) back.push_back(i);
+    }
+    for (int k = 1;; ++k) {
+        bool any = false;
         for (const std::size_t i : back) {
+            if (!(*line_min(line(i)) - k * ds >= s_back - 1e-6 * ds)) continue;
+            any = true;
             (void)rows.push(ps.x[i] - k * ds * nz.ex, ps.z[i] - k * ds * nz.ez, ps.u[i], ps.w[i], built.rho,
                             built.p, ps.m[i], ParticleKind::Fluid);
         }
+        if (!any) break;
+    }
     return rows;
 }
 

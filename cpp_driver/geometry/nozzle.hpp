@@ -64,14 +64,23 @@ struct PlugState {
 // nozzle.refill: the rows to add after a step so that the plug reaches back to where its
 // back row was built, s = -(M - 1/2) ds. The plug is the active fluid with s < 0 within
 // half_width of the axis (the core's driven strip, fortran_core/integrate/nozzle_drive.f90);
-// its back row moves rigidly, so each new row is a copy of its positions, velocity and mass
-// one spacing ds further back, as many as fit, at the density and pressure of `built` (the
+// each line of it along the axis (its particles at one distance from the axis, the lattice's
+// column) moves rigidly, so each new particle is a copy of a line's hindmost one's position,
+// velocity and mass one spacing ds further back, as many as fit (with a plug every line's
+// hindmost is in one back row; with a parabolic profile the lines move at their own speeds),
+// at the density and pressure of `built` (the
 // plug as built: a rigid plug's density does not change by itself, but fluid passing beside
 // it, such as a ring of start-up debris flying upstream, changes the rows it passes, and a
 // copy of the back row's density would carry such a change into every later row). Empty when
 // none is due. ps must be the particles of the case nz built.
 [[nodiscard]] ParticleSet nozzle_refill_rows(const NozzleSpec& nz, double dx, double dz, double half_width,
                                              const PlugState& built, const ParticleSet& ps);
+
+// nozzle.profile = "parabolic": the centre speed / u0, k, that gives the plug's lattice the flux of a
+// plug at u0: sum w_j = k sum w_j (1 - l_j^2 / (d0/2)^2) over the particles across (at l_j from the
+// axis; w_j = l_j for the rings of a round nozzle, 1 for a sheet's rows). Continuous: 2 round, 1.5
+// planar; on 5 rings 1.96.
+[[nodiscard]] double nozzle_profile_k(const NozzleSpec& nz, double dx, double dz, bool axisymmetric);
 
 [[nodiscard]] NozzleLayout nozzle_layout(const NozzleSpec& nz, double dx, double dz, bool dynamic, double recess,
                                          bool axisymmetric = false);

@@ -388,6 +388,13 @@ const Param kParams[] = {
      .doc = "a row of plug enters at the nozzle's back each time the plug has moved one spacing, so that the nozzle "
             "keeps its length",
      .legacy = "(none)"},
+    {.key = "nozzle.profile", .type = K::String, .member = member<&NozzleSpec::profile>(),
+     .choices = names<NozzleProfile>(), .def = "`\"plug\"`",
+     .doc = "the plug's speed across the orifice: uniform, or a tube's fully developed laminar flow, u0 k (1 - "
+            "l^2 / (d0/2)^2) at distance l from the axis with the plug's flux (k about 2 round, 1.5 planar), each line "
+            "refilling on its own and the plug holding its built density; measured louder than the plug at d0/dx 10 "
+            "(cases/round_jet/README.md)",
+     .legacy = "(none)", .echo = "exit profile: {choices}"},
     {.key = "nozzle.column_over_d0", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::column_over_d0>(),
      .range = kNonNegative, .def = "0 (none)", .allowed = "the column inside the box",
      .doc = "a jet already out at the start: a column of the plug's rows this long / D0 past the orifice, moving "
@@ -505,6 +512,15 @@ const Param kParams[] = {
      .h5_optional = true},
     {.attr = "drive_half_width", .unit = "m", .member = member<&SimParams::drive_half_width>(),
      .doc = "driven half width: d0 / 2 + max(dx, dz) / 4", .h5_optional = true},
+    {.attr = "drive_profile_a", .unit = "m", .member = member<&SimParams::drive_profile_a>(),
+     .doc = "nozzle.profile = \"parabolic\": d0 / 2; 0: a plug", .h5_optional = true},
+    {.attr = "drive_profile_k", .unit = "1", .member = member<&SimParams::drive_profile_k>(),
+     .doc = "the parabolic profile's centre speed / u0 on the nozzle's lattice (about 2 round, 1.5 planar)",
+     .h5_optional = true},
+    {.attr = "drive_profile_lmax", .unit = "m", .member = member<&SimParams::drive_profile_lmax>(),
+     .doc = "the plug's outer line's distance from the axis; fluid farther out moves with it", .h5_optional = true},
+    {.attr = "drive_profile_rho", .unit = "kg/m^3", .member = member<&SimParams::drive_profile_rho>(),
+     .doc = "the density a profiled plug holds (the plug's as built)", .h5_optional = true},
     {.attr = "drive_eps", .unit = "1", .member = member<&SimParams::drive_eps>(), .doc = "nozzle.disturbance",
      .h5_optional = true},
     {.attr = "drive_omega", .unit = "rad/s", .member = member<&SimParams::drive_omega>(),

@@ -103,6 +103,9 @@ struct NozzleSpec {
     double length_over_d0 = 15; // nozzle length upstream of the orifice / d0 (the paper's aspect ratio)
     double u0 = 0;              // jet speed [m/s]
     bool walls = true;
+    // The speed across the orifice: a rigid plug at u0, or parabolic with the same flux (the
+    // core's plug_step; SimParams::drive_profile_a).
+    NozzleProfile profile = NozzleProfile::Plug;
     // An imposed disturbance: the plug speed is u0 (1 + disturbance sin(omega t)), omega =
     // u0 k with k = disturbance_ka / (d0 / 2): a wave of that k leaves the orifice. 0: none.
     double disturbance = 0;

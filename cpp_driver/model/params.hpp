@@ -34,6 +34,9 @@ enum class AxisPair : int { SmoothedRadius = 0, Rings = 1 };
 // sph_params_t::surface_tension.rings_curvature): their neighbours' weighted mean (the default;
 // holds a drop's pole) or each row's own (longer round jets; cases/round_jet/README.md).
 enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
+// The driven nozzle's exit profile (NozzleSpec::profile): a rigid plug at u0, or a tube's fully
+// developed laminar flow, parabolic across it with the plug's flux (SimParams::drive_profile_a).
+enum class NozzleProfile : int { Plug = 0, Parabolic = 1 };
 // Whose unit normals enter the free-surface curvature's sums (core:
 // sph_params_t::surface_tension.curvature_normals; surface_tension.delta = "pressure_consistent"):
 // every particle that passes the normal filter (the default), or only those within h of the surface
@@ -105,6 +108,11 @@ template <>
 struct EnumNames<RingsCurvature> {
     static constexpr NameTable<RingsCurvature, 2> list{
         {{"neighbour_mean", RingsCurvature::NeighbourMean}, {"own", RingsCurvature::Own}}};
+};
+template <>
+struct EnumNames<NozzleProfile> {
+    static constexpr NameTable<NozzleProfile, 2> list{
+        {{"plug", NozzleProfile::Plug}, {"parabolic", NozzleProfile::Parabolic}}};
 };
 template <>
 struct EnumNames<CurvatureNormals> {
@@ -209,6 +217,15 @@ struct SimParams {
     double drive_x0 = 0.0, drive_z0 = 0.0;    // orifice centre [m]
     double drive_ex = 0.0, drive_ez = -1.0;   // jet axis (unit)
     double drive_half_width = 0.0;            // [m]
+    // A parabolic exit profile (NozzleSpec::profile): a plug particle at distance l from the axis
+    // moves at drive_u drive_profile_k (1 - l^2 / drive_profile_a^2), drive_profile_a = d0 / 2
+    // (d0 / 2); drive_profile_k makes the lattice's flux drive_u's (nozzle_profile_k); fluid
+    // farther than drive_profile_lmax (the outer line) moves with that line, and the plug holds
+    // the density drive_profile_rho (plug_state's). 0: a plug.
+    double drive_profile_a = 0.0;             // [m]
+    double drive_profile_k = 0.0;             // [1]
+    double drive_profile_lmax = 0.0;          // [m]
+    double drive_profile_rho = 0.0;           // [kg/m^3]
     // The plug speed may carry an imposed disturbance (NozzleSpec::disturbance): over the step
     // that starts at time t it is drive_u (1 + drive_eps sin(drive_omega t)).
     double drive_eps = 0.0;                   // relative amplitude

@@ -111,10 +111,15 @@ contains
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
       .and. prm%numerics%shifting >= 0.0_rp &
+      .and. prm%nozzle%profile_a >= 0.0_rp &
       .and. any(prm%viscosity%reconstruct == [0, 1]) &
       .and. any(prm%numerics%integrator == [INTEGRATOR_PC, INTEGRATOR_LEAPFROG])
     ! shifting's velocity is set by the surface tension's passes (surface_tension_loops.f90)
     if (prm%numerics%shifting > 0.0_rp) params_ok = params_ok .and. prm%surface_tension%sigma > 0.0_rp
+    ! a parabolic exit profile: a centre speed, and an outer line inside the tube
+    if (prm%nozzle%profile_a > 0.0_rp) params_ok = params_ok .and. prm%nozzle%profile_k > 0.0_rp &
+      .and. prm%nozzle%profile_lmax >= 0.0_rp .and. prm%nozzle%profile_lmax < prm%nozzle%profile_a &
+      .and. prm%nozzle%profile_rho > 0.0_rp
     ! a period must hold the images of both ends apart (two kernel supports)
     if (prm%geometry%periodic_z /= 0) params_ok = params_ok .and. &
       prm%domain%zmax - prm%domain%zmin > 4.0_rp * prm%numerics%h

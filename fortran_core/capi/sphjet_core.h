@@ -98,6 +98,10 @@ typedef struct sph_nozzle_t {
     double ex;                /* unit jet axis (flow direction) */
     double ez;
     double half_width;        /* plug half-width across the axis [m] */
+    double profile_a;         /* parabolic exit profile's wall distance [m]; 0 = rigid plug */
+    double profile_k;         /* its centre speed / u (the lattice's flux equals u's) */
+    double profile_lmax;      /* the outer line's distance: farther fluid moves with it [m] */
+    double profile_rho;       /* the density a profiled plug holds [kg/m^3] */
 } sph_nozzle_t;
 
 typedef struct sph_geometry_t {

@@ -5,7 +5,14 @@
 !>   s = (r - r0) . e < 0   and   |(r - r0) x e| <= half_width,
 !> r0 the orifice centre, e the unit jet axis (flow direction). The test has no memory: fluid
 !> that comes back upstream into that strip is driven again (with the plug's velocity, see
-!> plug_step below); keep other fluid regions out of it.
+!> plug_step below); keep other fluid regions out of it. With a parabolic exit profile
+!> (profile_a > 0, a tube's fully developed laminar flow) the speed along the axis depends on
+!> the distance l = |(r - r0) x e| from it, u k (1 - l^2 / a^2), a = profile_a, k = profile_k
+!> chosen by the driver so that the lattice's flux is u's. Fluid farther out than the plug's
+!> outer line (l > profile_lmax, fluid that spread at the lip) moves with that line: at zero speed
+!> it would stay at the lip for good, a wall of its own. A profiled plug holds the density it was
+!> built with (profile_rho): its lines slide past one another, and continuity over the sheared
+!> lattice gave its pressure a standard deviation of 80 sigma/a (0.58 m/s round jet, d0/dx 10).
 module nozzle_drive
   use sphjet_kinds, only: rp
   use sphjet_types, only: sph_params_t, state_t
@@ -27,16 +34,26 @@ contains
 
   !> A fluid particle whose start-of-step position lies in a driven nozzle (in_driven_nozzle),
   !> after the predictor-corrector's half_steps (or the leapfrog's kicks, with its whole step as
-  !> dt2): it moves rigidly with the plug velocity instead, r = r^n + dt2 u_plug, u = u_plug
-  !> (and u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its density still
-  !> follows continuity.
+  !> dt2): it moves with the plug velocity instead, r = r^n + dt2 u_plug, u = u_plug (and
+  !> u^n := u_plug, so that the corrector's extrapolation keeps u_plug); its density still
+  !> follows continuity. u_plug is the plug speed along the axis, or with a parabolic profile
+  !> the profile's speed at the particle's start-of-step distance from the axis (and then the
+  !> density is profile_rho).
   subroutine plug_step(prm, st, i, dt2)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer, intent(in) :: i
     real(rp), intent(in) :: dt2
-    st%u(i) = prm%nozzle%u * prm%nozzle%ex
-    st%w(i) = prm%nozzle%u * prm%nozzle%ez
+    real(rp) :: speed, l
+    speed = prm%nozzle%u
+    if (prm%nozzle%profile_a > 0.0_rp) then
+      l = min(abs((st%xo(i) - prm%nozzle%x0) * prm%nozzle%ez - (st%zo(i) - prm%nozzle%z0) * prm%nozzle%ex), &
+              prm%nozzle%profile_lmax) / prm%nozzle%profile_a
+      speed = speed * prm%nozzle%profile_k * (1.0_rp - l * l)
+      st%rho(i) = prm%nozzle%profile_rho
+    end if
+    st%u(i) = speed * prm%nozzle%ex
+    st%w(i) = speed * prm%nozzle%ez
     st%x(i) = st%xo(i) + dt2 * st%u(i)
     st%z(i) = st%zo(i) + dt2 * st%w(i)
     ! The corrector's u = 2 u^{n+1/2} - u^n must give the plug's velocity also for a

@@ -304,6 +304,43 @@ TEST(NozzleRefill, NewRowsCopyTheBackRowAtTheBuiltDensity) {
     }
 }
 
+// nozzle.profile = "parabolic": k makes the lattice's flux the plug's. On 5 rings at r/a = 0.1,
+// 0.3, .., 0.9, sum r = 2.5 and sum r (1 - r^2) = 1.275 (k = 1.9608); on a sheet's 10 rows at
+// l/a = +-0.1, .., +-0.9, sum 1 = 10 and sum (1 - l^2) = 6.7 (k = 1.4925). Continuous: 2 and 1.5.
+TEST(NozzleProfile, ParabolicKeepsTheLatticesFlux) {
+    NozzleSpec nz = down_nozzle(0.002);
+    nz.x0 = 0.0;
+    EXPECT_NEAR(nozzle_profile_k(nz, 0.0002, 0.0002, true), 2.5 / 1.275, 1e-12);
+    nz.x0 = 0.01;
+    EXPECT_NEAR(nozzle_profile_k(nz, 0.0002, 0.0002, false), 10.0 / 6.7, 1e-12);
+}
+
+// With a parabolic profile each line of the plug moves at its own speed, so each line refills
+// on its own: the lines that moved a spacing get one particle at the built position, the
+// others none; a ring of fluid that came back into the strip near the orifice is not a line.
+TEST(NozzleRefill, EachLineRefillsOnItsOwn) {
+    NozzleSpec nz = down_nozzle(0.002);
+    nz.x0 = 0.0;
+    nz.length_over_d0 = 2;  // 20 rows of 5 rings at ds = dl = 0.2 mm
+    SimParams prm;
+    prm.geometry = Geometry::Axisymmetric;
+    prm.rho0 = 1000, prm.gamma = 7, prm.B = 1000 * 16.0 * 16.0 / 7, prm.sigma = 0.072;
+    const PlugState built = plug_state(prm, nz);
+    const double ds = 0.0002;
+    const NozzleLayout lay = nozzle_layout(nz, ds, ds, false, 0.0, true);
+    ParticleSet ps;
+    for (const NozzlePoint& q : lay.fluid) ps.push(q.x, q.z, 0, -1, built.rho, built.p, 1, ParticleKind::Fluid);
+    // the two inner lines have moved 1.3 and 1.0 spacings, the three outer 0.6
+    for (std::size_t i = 0; i < ps.size(); ++i) ps.z[i] -= (ps.x[i] < ds ? 1.3 : ps.x[i] < 2 * ds ? 1.0 : 0.6) * ds;
+    ps.push(1.0 * ds, nz.z0 + 0.2 * ds, 0, 0.3, 990, 0, 1, ParticleKind::Fluid);  // back into the strip, between lines
+    const ParticleSet rows = nozzle_refill_rows(nz, ds, ds, 0.0011, built, ps);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_NEAR(rows.x[0], 0.5 * ds, 1e-12);
+    EXPECT_NEAR(rows.z[0], nz.z0 + 19.2 * ds, 1e-12);  // 19.5 - 1.3 + 1
+    EXPECT_NEAR(rows.x[1], 1.5 * ds, 1e-12);
+    EXPECT_NEAR(rows.z[1], nz.z0 + 19.5 * ds, 1e-12);
+}
+
 // A round jet: a rigid plug of rings gives u_flux = u0 (flux over pi d0^2 / 4); a sphere-sized
 // cluster of rings gives the diameter of the sphere of its volume; the neck is the thinnest
 // slice of the jet, not its rounded tip.
