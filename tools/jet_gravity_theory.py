@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""Weber's linear growth along a round jet that gravity speeds up and thins: what ln(a/delta0)
+each measured breakup length of cases/round_jet/mansour_chigier_1994.csv asks for, with and
+without gravity along the jet, and the length a given ln(a/delta0) gives.
+
+Usage:
+  /usr/bin/python3 tools/jet_gravity_theory.py [--g 9.81] [--c C]
+
+A jet leaving at U with radius a0, falling along its axis, moves at U(z) = sqrt(U^2 + 2 g z)
+with radius a(z) = a0 sqrt(U / U(z)) (mass flux kept, the pressure and the air left out).
+Taking the local growth (the WKB picture of a slowly varying jet), a disturbance grows by
+exp(N(z)) with
+  N(z) = int_0^z omega_max(a(s), Oh(s)) / U(s) ds,
+omega_max Weber's fastest temporal rate (tools/axisymmetric.py, weber_omega) at the local radius
+and Ohnesorge number. The jet breaks where N = ln(a/delta0) = C, so each measured length L gives
+C = N(L); without gravity N(L) = omega_max(a0) L / U. A uniform jet's temporal rate carried at U
+is Weber's law's picture (L/d0 = C sqrt(We_d)(1 + 3 Oh_d) up to the constant of omega_max).
+Absolute instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not
+in this local picture; where the jet speeds up past it, the convective part is what this
+integrates. With --c C it also prints the lengths that C gives with and without gravity.
+"""
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from axisymmetric import weber_omega  # noqa: E402
+from round_jet_study import D0_MC, MU, RHO, SIGMA, read_mc  # noqa: E402
+
+GRID = 1200        # points along the jet, 0 .. 2 L_max: N by the trapezoid rule (1e-6 relative)
+L_MAX_D0 = 400.0   # the longest jet it integrates [d0]
+
+
+def omega_max(a):
+    """Weber's fastest growth rate [1/s] of a water column of radius a [m]: golden-section
+    search over ka in [0.3, 0.99] (one maximum there)."""
+    oh = MU / math.sqrt(RHO * SIGMA * a)  # on the radius, as weber_omega takes it
+    lo, hi = 0.3, 0.99
+    r = (math.sqrt(5.0) - 1.0) / 2.0
+    x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
+    f1, f2 = weber_omega(x1, oh), weber_omega(x2, oh)
+    while hi - lo > 1e-7:
+        if f1 < f2:
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + r * (hi - lo)
+            f2 = weber_omega(x2, oh)
+        else:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - r * (hi - lo)
+            f1 = weber_omega(x1, oh)
+    return max(f1, f2) * math.sqrt(SIGMA / (RHO * a ** 3))
+
+
+class Jet:
+    """N(z) of one jet (speed u [m/s], radius a0 [m], gravity g [m/s^2] along it) on a grid."""
+
+    def __init__(self, u, a0, g):
+        self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
+        self.n = [0.0]
+        prev = None
+        for i in range(GRID):
+            uz = math.sqrt(u * u + 2.0 * g * i * self.dz)
+            rate = omega_max(a0 * math.sqrt(u / uz)) / uz
+            if prev is not None:
+                self.n.append(self.n[-1] + 0.5 * (prev + rate) * self.dz)
+            prev = rate
+
+    def exponent(self, z):
+        """N(z) [1], linear between grid points."""
+        i = min(int(z / self.dz), GRID - 2)
+        t = z / self.dz - i
+        return (1.0 - t) * self.n[i] + t * self.n[i + 1]
+
+    def length(self, c):
+        """The z [m] at which N reaches c (None beyond the grid)."""
+        for i in range(GRID - 1):
+            if self.n[i + 1] >= c:
+                return (i + (c - self.n[i]) / (self.n[i + 1] - self.n[i])) * self.dz
+        return None
+
+
+def table(g, c=None):
+    a0 = 0.5 * D0_MC
+    head = "| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity |"
+    sep = "|---|---|---|---|---|"
+    if c is not None:
+        head += f" L/d0 at C = {c:g} without / with gravity |"
+        sep += "---|"
+    lines = [head, sep]
+    cs0, csg = [], []
+    for u, l_d0 in read_mc():
+        we = RHO * u * u * D0_MC / SIGMA
+        flat, falling = Jet(u, a0, 0.0), Jet(u, a0, g)
+        c0 = flat.exponent(l_d0 * D0_MC)
+        cg = falling.exponent(l_d0 * D0_MC)
+        cs0.append(c0)
+        csg.append(cg)
+        row = f"| {u:.4f} | {we:.2f} | {l_d0:.2f} | {c0:.2f} | {cg:.2f} |"
+        if c is not None:
+            row += f" {flat.length(c) / D0_MC:.1f} / {falling.length(c) / D0_MC:.1f} |"
+        lines.append(row)
+
+    def spread(cs):
+        m = sum(cs) / len(cs)
+        sd = math.sqrt(sum((x - m) ** 2 for x in cs) / len(cs))
+        return f"mean {m:.2f}, std {sd:.2f}, {min(cs):.2f}-{max(cs):.2f}"
+
+    lines.append("")
+    lines.append(f"C = ln(a/delta0) the measured lengths ask for (g = {g:g} m/s^2 along the jet):")
+    lines.append(f"  without gravity: {spread(cs0)}")
+    lines.append(f"  with gravity:    {spread(csg)}")
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--g", type=float, default=9.81, help="gravity along the jet [m/s^2] (default 9.81)")
+    ap.add_argument("--c", type=float, default=None, help="also print the lengths this ln(a/delta0) gives")
+    args = ap.parse_args(argv)
+    if not args.g >= 0:
+        ap.error(f"--g {args.g}: expected >= 0 (along the jet)")
+    if args.c is not None and not args.c > 0:
+        ap.error(f"--c {args.c}: expected a positive number")
+    print(table(args.g, args.c))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
