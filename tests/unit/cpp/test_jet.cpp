@@ -262,17 +262,27 @@ h_over_dx = 2.0
     EXPECT_GT(ps.p[ps.nb], 0.0);
 }
 
+// The refill tests' round nozzle: d0 = 2 mm, 2 d0 long (20 rows of 5 rings at ds = dl = 0.2 mm),
+// water at c0 = 16 m/s with surface tension.
+struct RoundRefillCase {
+    NozzleSpec nz;
+    SimParams prm;
+};
+RoundRefillCase round_refill_case() {
+    RoundRefillCase c{down_nozzle(0.002), {}};
+    c.nz.x0 = 0.0;
+    c.nz.length_over_d0 = 2;
+    c.prm.geometry = Geometry::Axisymmetric;
+    c.prm.rho0 = 1000, c.prm.gamma = 7, c.prm.B = 1000 * 16.0 * 16.0 / 7, c.prm.sigma = 0.072;
+    return c;
+}
+
 // nozzle.refill: once the plug has moved one spacing, one row enters at its back: the back
 // row's positions one spacing upstream, its velocities and masses, at the plug's built density
 // and pressure (plug_state: the round jet's Laplace pressure 2 sigma / d0), not the back row's,
 // which fluid passing beside the plug can have changed.
 TEST(NozzleRefill, NewRowsCopyTheBackRowAtTheBuiltDensity) {
-    NozzleSpec nz = down_nozzle(0.002);
-    nz.x0 = 0.0;
-    nz.length_over_d0 = 2;  // 20 rows of 5 rings at ds = dl = 0.2 mm
-    SimParams prm;
-    prm.geometry = Geometry::Axisymmetric;
-    prm.rho0 = 1000, prm.gamma = 7, prm.B = 1000 * 16.0 * 16.0 / 7, prm.sigma = 0.072;
+    const auto [nz, prm] = round_refill_case();
     const PlugState built = plug_state(prm, nz);
     const double p_lap = 2 * 0.072 / 0.002;
     EXPECT_NEAR(built.p, p_lap, 1e-9 * p_lap);
@@ -319,12 +329,7 @@ TEST(NozzleProfile, ParabolicKeepsTheLatticesFlux) {
 // on its own: the lines that moved a spacing get one particle at the built position, the
 // others none; a ring of fluid that came back into the strip near the orifice is not a line.
 TEST(NozzleRefill, EachLineRefillsOnItsOwn) {
-    NozzleSpec nz = down_nozzle(0.002);
-    nz.x0 = 0.0;
-    nz.length_over_d0 = 2;  // 20 rows of 5 rings at ds = dl = 0.2 mm
-    SimParams prm;
-    prm.geometry = Geometry::Axisymmetric;
-    prm.rho0 = 1000, prm.gamma = 7, prm.B = 1000 * 16.0 * 16.0 / 7, prm.sigma = 0.072;
+    const auto [nz, prm] = round_refill_case();
     const PlugState built = plug_state(prm, nz);
     const double ds = 0.0002;
     const NozzleLayout lay = nozzle_layout(nz, ds, ds, false, 0.0, true);
