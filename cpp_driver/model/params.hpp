@@ -218,8 +218,8 @@ struct SimParams {
     double drive_ex = 0.0, drive_ez = -1.0;   // jet axis (unit)
     double drive_half_width = 0.0;            // [m]
     // A parabolic exit profile (NozzleSpec::profile): a plug particle at distance l from the axis
-    // moves at drive_u drive_profile_k (1 - l^2 / drive_profile_a^2), drive_profile_a = d0 / 2
-    // (d0 / 2); drive_profile_k makes the lattice's flux drive_u's (nozzle_profile_k); fluid
+    // moves at drive_u drive_profile_k (1 - l^2 / drive_profile_a^2), drive_profile_a = d0 / 2;
+    // drive_profile_k makes the lattice's flux drive_u's (nozzle_profile_k); fluid
     // farther than drive_profile_lmax (the outer line) moves with that line, and the plug holds
     // the density drive_profile_rho (plug_state's). 0: a plug.
     double drive_profile_a = 0.0;             // [m]
