@@ -51,6 +51,7 @@ contains
               prm%nozzle%profile_lmax) / prm%nozzle%profile_a
       speed = speed * prm%nozzle%profile_k * (1.0_rp - l * l)
       st%rho(i) = prm%nozzle%profile_rho
+      st%rhoo(i) = prm%nozzle%profile_rho   ! as uo below: the corrector's 2 rho - rho^n keeps it
     end if
     st%u(i) = speed * prm%nozzle%ex
     st%w(i) = speed * prm%nozzle%ez

@@ -38,16 +38,29 @@ struct CoreParticles {
     }
 };
 
+// The statuses of sph_prepare and sph_compute_rates on ps with prm, on a workspace of its own
+// (the rates of ps set where they succeed), and the sweep's largest approach rate.
+struct RatesCall {
+    int prepare = SPH_OK, rates = SPH_OK;
+    double vmax = 0;
+};
+inline RatesCall call_rates(CoreParticles& ps, sph_params_t prm) {
+    RatesCall c;
+    auto arr = ps.bind();
+    c.prepare = sph_prepare(&prm, &arr);
+    void* ws = sph_workspace_create();
+    c.rates = sph_compute_rates(ws, &prm, &arr, &c.vmax);
+    sph_workspace_destroy(ws);
+    return c;
+}
+
 // Sets the rates of ps (ax, az, ar, xu, xw) with prm on a workspace of its own (a failed call
 // is a test failure); returns the sweep's largest approach rate.
 inline double compute_rates(CoreParticles& ps, sph_params_t prm) {
-    auto arr = ps.bind();
-    EXPECT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    double vmax = 0;
-    EXPECT_EQ(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
-    sph_workspace_destroy(ws);
-    return vmax;
+    const RatesCall c = call_rates(ps, prm);
+    EXPECT_EQ(c.prepare, SPH_OK);
+    EXPECT_EQ(c.rates, SPH_OK);
+    return c.vmax;
 }
 
 // The offsets of a square lattice of spacing dx within 3 spacings in x and z, the origin left

@@ -6,6 +6,7 @@
 // strip with another velocity (the corrector's extrapolation 2 u^{n+1/2} - u^n must not give
 // 2 u0 - u^n); particles outside the strip follow their forces (gravity here); drive_u = 0
 // drives nothing.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -103,6 +104,58 @@ TEST(CoreNozzleDrive, NoDriveWhenUIsZero) {
                 b.ps.w[resting], b.ps.w[moving] + 0.25);
     EXPECT_NEAR(b.ps.w[resting], 0.0, 1e-2);
     EXPECT_NEAR(b.ps.w[moving], -0.25, 3e-3);
+}
+
+// A parabolic profile (profile_a > 0): a driven particle at distance l from the axis moves at
+// u0 k (1 - l^2 / a^2), l capped at profile_lmax (so the column beside the strip's edge line, at
+// l = 2.5 mm, and the one at the edge line itself move alike), and holds the density profile_rho
+// whatever continuity says. Here a = 3 mm, k = 2, lmax = 2.5 mm: speeds 2 u0 (1 - (l/3)^2) for
+// l = 0.5, 1.5, 2.5 mm; exact to one multiply-add as the plug's. Planar is enough: the profile
+// reads only l (the axisymmetric rings are the same code).
+TEST(CoreNozzleDrive, ParabolicProfileDrivesEachLineAtItsSpeed) {
+    const double u0 = 0.25, dt = 1e-5, a = 0.003, k = 2.0, rho_plug = 1003.0;
+    Block b = block(u0, 0.0);
+    const std::vector<double> x0 = b.ps.x, z0 = b.ps.z;
+    auto arr = b.ps.bind();
+    auto prm = drive_params(u0);
+    prm.nozzle.profile_a = a;
+    prm.nozzle.profile_k = k;
+    prm.nozzle.profile_lmax = 0.0025;
+    prm.nozzle.profile_rho = rho_plug;
+    ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
+    void* ws = sph_workspace_create();
+    sph_step_info_t info{};
+    info.dt = dt;
+    ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
+    sph_workspace_destroy(ws);
+    int driven = 0;
+    for (std::size_t i = 0; i < b.ps.x.size(); ++i) {
+        if (!b.in_strip[i]) continue;
+        const double l = std::min(std::abs(x0[i]), 0.0025) / a;
+        const double speed = u0 * k * (1.0 - l * l);
+        EXPECT_EQ(b.ps.x[i], x0[i]) << i;
+        EXPECT_NEAR(b.ps.w[i], -speed, 1e-15) << i;
+        EXPECT_NEAR(b.ps.z[i], z0[i] - speed * dt, 1e-18) << i;
+        EXPECT_EQ(b.ps.rho[i], rho_plug) << i;
+        ++driven;
+    }
+    EXPECT_EQ(driven, 30);
+}
+
+// The core refuses a profile it cannot drive: no centre speed, an outer line beyond the tube, or
+// no density to hold.
+TEST(CoreNozzleDrive, ParabolicProfileNeedsItsParameters) {
+    Block b = block(0.25, 0.0);
+    auto arr = b.ps.bind();
+    auto good = drive_params(0.25);
+    good.nozzle.profile_a = 0.003, good.nozzle.profile_k = 2.0, good.nozzle.profile_lmax = 0.0025;
+    good.nozzle.profile_rho = 1000.0;
+    EXPECT_EQ(sph_prepare(&good, &arr), SPH_OK);
+    auto no_k = good, wide = good, no_rho = good;
+    no_k.nozzle.profile_k = 0.0;
+    wide.nozzle.profile_lmax = 0.003;
+    no_rho.nozzle.profile_rho = 0.0;
+    for (const auto* bad : {&no_k, &wide, &no_rho}) EXPECT_NE(sph_prepare(bad, &arr), SPH_OK);
 }
 
 }  // namespace

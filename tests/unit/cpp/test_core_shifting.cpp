@@ -12,7 +12,9 @@
 
 #include "core_fixture.hpp"
 
+using sphjet_test::call_rates;
 using sphjet_test::CoreParticles;
+using sphjet_test::RatesCall;
 
 namespace {
 
@@ -117,10 +119,7 @@ TEST(CoreShifting, RefusedWithoutSurfaceTension) {
     auto prm = column_params(dx, 1.3 * dx, 20, 1.0);
     prm.surface_tension.sigma = 0;
     auto ps = slab(12, 20, dx);
-    auto arr = ps.bind();
-    EXPECT_NE(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    double vmax = 0;
-    EXPECT_NE(sph_compute_rates(ws, &prm, &arr, &vmax), SPH_OK);
-    sph_workspace_destroy(ws);
+    const RatesCall c = call_rates(ps, prm);
+    EXPECT_NE(c.prepare, SPH_OK);
+    EXPECT_NE(c.rates, SPH_OK);
 }
