@@ -56,18 +56,24 @@ sph_params_t drive_params(double u0) {
     return p;
 }
 
-TEST(CoreNozzleDrive, PlugMovesRigidlyAtU0) {
-    const double u0 = 0.25, dt = 1e-5;
-    Block b = block(u0, 0.0);
-    const std::vector<double> x0 = b.ps.x, z0 = b.ps.z;
+// One step of b with prm and a fixed dt through the C header (prepare, step), on a workspace of
+// its own.
+void step_block(Block& b, const sph_params_t& prm, double dt) {
     auto arr = b.ps.bind();
-    const auto prm = drive_params(u0);
     ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
     void* ws = sph_workspace_create();
     sph_step_info_t info{};
     info.dt = dt;
-    ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
+    const int status = sph_step(ws, &prm, &arr, &info);
     sph_workspace_destroy(ws);
+    ASSERT_EQ(status, SPH_OK);
+}
+
+TEST(CoreNozzleDrive, PlugMovesRigidlyAtU0) {
+    const double u0 = 0.25, dt = 1e-5;
+    Block b = block(u0, 0.0);
+    const std::vector<double> x0 = b.ps.x, z0 = b.ps.z;
+    ASSERT_NO_FATAL_FAILURE(step_block(b, drive_params(u0), dt));
     for (std::size_t i = 0; i < b.ps.x.size(); ++i) {
         if (b.in_strip[i]) {
             EXPECT_EQ(b.ps.x[i], x0[i]) << i;
@@ -84,15 +90,9 @@ TEST(CoreNozzleDrive, PlugMovesRigidlyAtU0) {
 
 TEST(CoreNozzleDrive, NoDriveWhenUIsZero) {
     Block b = block(0.25, 0.0);
-    auto arr = b.ps.bind();
     auto prm = drive_params(0.25);
     prm.nozzle.u = 0.0;
-    ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    sph_step_info_t info{};
-    info.dt = 1e-5;
-    ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
-    sph_workspace_destroy(ws);
+    ASSERT_NO_FATAL_FAILURE(step_block(b, prm, 1e-5));
     // Nothing is driven: the particle that entered at rest is not dragged to -u0, and the
     // strip's particles moving at -u0 are not held at drive_u = 0; only the forces of one
     // step act (the pair forces between the resting particle and its neighbours moving at
@@ -116,18 +116,12 @@ TEST(CoreNozzleDrive, ParabolicProfileDrivesEachLineAtItsSpeed) {
     const double u0 = 0.25, dt = 1e-5, a = 0.003, k = 2.0, rho_plug = 1003.0;
     Block b = block(u0, 0.0);
     const std::vector<double> x0 = b.ps.x, z0 = b.ps.z;
-    auto arr = b.ps.bind();
     auto prm = drive_params(u0);
     prm.nozzle.profile_a = a;
     prm.nozzle.profile_k = k;
     prm.nozzle.profile_lmax = 0.0025;
     prm.nozzle.profile_rho = rho_plug;
-    ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
-    void* ws = sph_workspace_create();
-    sph_step_info_t info{};
-    info.dt = dt;
-    ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
-    sph_workspace_destroy(ws);
+    ASSERT_NO_FATAL_FAILURE(step_block(b, prm, dt));
     int driven = 0;
     for (std::size_t i = 0; i < b.ps.x.size(); ++i) {
         if (!b.in_strip[i]) continue;
