@@ -2,7 +2,7 @@
 """The disturbance of a jet along its length, from a run's jet.csv and jet_surface.csv
 (cases/CASE_FORMAT.md, [breakup]): where it starts, how fast it grows, and how quiet the exit is.
 
-    /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--to T1] [--plot OUT.png]
+    /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--to T1] [--rows] [--plot OUT.png]
 
 The samples read are those from T to T1 (default: the run's last), so that two runs can be read
 over the same times while one of them goes on.
@@ -30,6 +30,10 @@ over the same times while one of them goes on.
   case.toml, the axis order of each slice as well: its particles within 0.6 dx of the axis (the
   nozzle builds the innermost rings at dx/2) over the count of the nozzle's lattice stretched
   with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order.
+- rows (--rows; a round jet with resolution.dx): along the intact jet, each ring row's mean
+  pressure over the local Laplace pressure sigma/a_s (a_s the slice's own radius, the rows
+  counted across it), medians over the snapshots: a column at rest holds a fixed pattern (the
+  lattice's), and a lattice that deforms as the jet stretches shows it in its rows first.
 - at (--at S ...): the envelope at those distances (the nearest slice), so that the same
   places can be compared over successive stretches of time (--from, --to).
 - start-up front (the samples before T): at each one the first slice past 1 d0 where r_s departs
@@ -218,19 +222,24 @@ def dominant_wave(surface, s0, s1):
 
 
 def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf):
-    """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None)] over the intact
-    jet of every snapshot at t0 <= t <= t1; None without snapshots. axis_dx (a round jet's particle
-    spacing dx) adds the axis order: the particles within 0.6 dx of the axis (the rings nearest
-    it, at dx/2 as built) over the count of an ordered lattice stretched with the flow, 2 (d0/dx)
-    u0 / |mean axial velocity| in a 2 d0 slice; it is 1 while the rows hold the nozzle's order
-    and falls where they leave the axis."""
+    """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None, rows or None)]
+    over the intact jet of every snapshot at t0 <= t <= t1; None without snapshots. axis_dx (a
+    round jet's particle spacing dx) adds the axis order: the particles within 0.6 dx of the axis
+    (the rings nearest it, at dx/2 as built) over the count of an ordered lattice stretched with
+    the flow, 2 (d0/dx) u0 / |mean axial velocity| in a 2 d0 slice; it is 1 while the rows hold
+    the nozzle's order and falls where they leave the axis. It adds the rows as well: (the
+    slice's radius a_s / a, [each row's mean pressure / (sigma/a_s)]), medians over the
+    snapshots. The nozzle's n = a/dx rows sit at (j + 1/2) dx; a slice's rows are counted on its
+    own radius, a_s = its outermost particle's radius x a / (a - dx/2), so that a jet thinning
+    as it stretches keeps them apart: row j holds the radii [j, j + 1) a_s / n."""
     names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
     if not names:
         return None
     import h5py
     import numpy as np
     times = [float(r["time"]) for r in jet]
-    per, order = {}, {}
+    per, order, rows = {}, {}, {}
+    n_rows = max(1, round(0.5 * d0 / axis_dx)) if axis_dx else 0
     for n in names:
         with h5py.File(os.path.join(run, n), "r") as f:
             t = float(f.attrs["time"])
@@ -254,14 +263,29 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
                 if speed > 0:
                     ordered = 2.0 * (d0 / axis_dx) * u0 / speed
                     order.setdefault(b, []).append(float(np.sum(m & (r < 0.6 * axis_dx))) / ordered)
-    return [(2.0 * b, median(v), median(order[b]) if b in order else None) for b, v in sorted(per.items())]
+                if axis_dx:
+                    a_s = float(np.max(r[m])) * 0.5 * d0 / (0.5 * d0 - 0.5 * axis_dx)
+                    j = np.minimum((r[m] / a_s * n_rows).astype(int), n_rows - 1)
+                    unit = p_unit * 0.5 * d0 / a_s   # sigma / a_s
+                    rows.setdefault(b, []).append(
+                        [a_s / (0.5 * d0)] + [float(np.mean(p[m][j == i])) / unit if np.any(j == i)
+                                              else math.nan for i in range(n_rows)])
+
+    def med_rows(b):
+        if b not in rows:
+            return None
+        cols = [median([v[i] for v in rows[b] if not math.isnan(v[i])]) for i in range(n_rows + 1)]
+        return cols[0], cols[1:]
+    return [(2.0 * b, median(v), median(order[b]) if b in order else None, med_rows(b))
+            for b, v in sorted(per.items())]
 
 
-def analyse(run, t0=None, wave=None, t1=None, at=()):
+def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
     """Prints the measures of the run directory `run` over its samples at t0 <= t <= t1 (t0 None:
     twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
-    read. at: distances s/d0 at which to print the envelope (the nearest slice). NoiseError for
+    read. at: distances s/d0 at which to print the envelope (the nearest slice). show_rows: print
+    the rows' pressures along the jet (noise_along; round jets). NoiseError for
     a run without the files or samples it needs."""
     try:
         c = read_case(run)
@@ -372,15 +396,27 @@ def analyse(run, t0=None, wave=None, t1=None, at=()):
     prof = (noise_along(run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0, t1)
             if sig > 0 else None)
     if prof:
-        quiet = next((s0 for s0, v, _o in prof if v > 0.25), prof[-1][0] + 2.0)
+        quiet = next((s0 for s0, v, _o, _r in prof if v > 0.25), prof[-1][0] + 2.0)
         print("pressure std / (sigma/a) along the intact jet (2 d0 slices, median over snapshots): "
-              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _o in prof))
-        orders = [(s0, o) for s0, _v, o in prof if o is not None]
+              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _o, _r in prof))
+        orders = [(s0, o) for s0, _v, o, _r in prof if o is not None]
         if orders:
             print("axis order along the intact jet (rings within 0.6 dx of the axis over an ordered lattice "
                   "stretched with the flow, 2 d0 slices, median over snapshots): "
                   + ", ".join(f"{s0:.0f}:{o:.2f}" for s0, o in orders))
             summary["axis_order_min"] = min(o for _s, o in orders)
+        if show_rows:
+            spreads = []
+            for s0, _v, _o, rw in prof:
+                if rw is None:
+                    continue
+                a_s, ps = rw
+                print(f"rows at s = {s0:.0f}-{s0 + 2:.0f} d0: a_s/a = {a_s:.3f}, mean p / (sigma/a_s) from the axis "
+                      "out: " + " ".join(f"{v:.3f}" for v in ps))
+                if not any(math.isnan(v) for v in ps):
+                    spreads.append(max(ps) - min(ps))
+            if spreads:
+                summary["rows_spread_max"] = max(spreads)
         print(f"quiet (p std <= sigma/(4a)) to s = {quiet:.0f} d0, {l_mean - quiet:.1f} d0 above the "
               f"breakup (L {l_mean:.1f} d0)")
         summary.update({"quiet_to_over_d0": quiet, "noisy_reach_over_d0": l_mean - quiet})
@@ -435,6 +471,10 @@ def main(argv=None):
     ap.add_argument("--at", nargs="+", type=float, default=[], metavar="S",
                     help="print the envelope A/a at these distances from the orifice [d0] (SUMMARY A_at_S): "
                          "read over successive stretches of time, whether the disturbance at a place is steady")
+    ap.add_argument("--rows", action="store_true",
+                    help="print each ring row's mean pressure over the local Laplace pressure along the intact jet "
+                         "(2 d0 slices, medians over the snapshots; SUMMARY rows_spread_max: the largest spread "
+                         "between a slice's rows)")
     ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
     args = ap.parse_args(argv)
@@ -443,7 +483,7 @@ def main(argv=None):
     if args.wave is not None and not 0.0 <= args.wave[0] < args.wave[1]:
         ap.error(f"--wave S0 S1 needs 0 <= S0 < S1 (d0), got {args.wave[0]:g} {args.wave[1]:g}")
     try:
-        got = analyse(args.run, args.t0, args.wave, args.t1, args.at)
+        got = analyse(args.run, args.t0, args.wave, args.t1, args.at, args.rows)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

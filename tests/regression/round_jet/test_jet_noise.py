@@ -33,6 +33,10 @@ on 0.1 d0 slices: the front must be found at the first slice past s_f in each sa
 fitted speed must be 300 d0/s within 1% (the slices round each position by less than 0.1 d0,
 over a 9 d0 travel), with no front found in the samples at or after the cut time.
 
+With `--rows` on a five-row lattice that thins to 0.9 of its radius, each row's pressure a
+known multiple of the local Laplace pressure: the printed rows must be those multiples
+(check_rows).
+
 With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
 before `--from` refused with a message naming both.
 
@@ -171,6 +175,41 @@ def check_to(d):
     return failures
 
 
+def check_rows():
+    """--rows on a five-row lattice (the nozzle's rings at (j + 1/2) dx, dz = dx) that thins to 0.9 of
+    its radius from s = 6 d0 on, each row's pressure (1 + j/10) sigma/a_s (a_s the local radius):
+    every 2 d0 slice must print a_s/a 1.000 or 0.900 and the rows 1.000 1.100 1.200 1.300 1.400
+    (exact by construction, to the three digits printed), rows_spread_max 0.4 (1e-5). A list of
+    failures."""
+    import h5py
+    import numpy as np
+    failures = []
+    with tempfile.TemporaryDirectory() as d:
+        write_run(d)
+        s = np.repeat(np.arange(0.05, 12.0, 0.1), 5)
+        j = np.tile(np.arange(5), len(s) // 5)
+        f = np.where(s < 6.0, 1.0, 0.9)
+        for n in range(3):
+            with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as h:
+                h.attrs["time"] = 0.01 + 100 * n * 1e-4
+                g = h.create_group("particles")
+                g["z"] = 0.11 - s * D0
+                g["x"] = (j + 0.5) * DX * f
+                g["w"] = np.full(len(s), -U0)
+                g["p"] = (1 + 0.1 * j) * SIGMA / (A * f)
+                g["active"] = np.ones(len(s), dtype=np.int32)
+                g["kind"] = np.full(len(s), 2, dtype=np.int32)
+        out = subprocess.run([PY, TOOL, d, "--from", "0", "--rows"], capture_output=True, text=True)
+        got = re.findall(r"^rows at s = (\d+)-\d+ d0: a_s/a = ([0-9.]+), .*: (.*)$", out.stdout, re.M)
+        want = [(str(s0), "1.000" if s0 < 6 else "0.900", "1.000 1.100 1.200 1.300 1.400") for s0 in range(0, 12, 2)]
+        if got != want:
+            failures.append(f"--rows printed {got}, built {want}")
+        val = summary(out.stdout) or {}
+        if not abs(val.get("rows_spread_max", 0) - 0.4) < 4e-6:
+            failures.append(f"rows_spread_max {val.get('rows_spread_max')}, built 0.4")
+    return failures
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -236,6 +275,7 @@ def main():
             failures.append(f"noise profile {prof}, built 0.05 to 8 d0 and 2 to 12 d0 in six 2 d0 slices")
         failures += check_to(d)
     failures += check_front()
+    failures += check_rows()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
