@@ -32,8 +32,10 @@ over the same times while one of them goes on.
   with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order.
 - rows (--rows; a round jet with resolution.dx): along the intact jet, each ring row's mean
   pressure over the local Laplace pressure sigma/a_s (a_s the slice's own radius, the rows
-  counted across it), medians over the snapshots: a column at rest holds a fixed pattern (the
-  lattice's), and a lattice that deforms as the jet stretches shows it in its rows first.
+  counted across it) and its mean radius over the local row spacing a_s/n (j + 1/2 for the
+  nozzle's lattice, n = a/dx rows), medians over the snapshots: a column at rest holds a fixed
+  pattern (the lattice's), and a lattice that deforms as the jet stretches shows it in its rows
+  first.
 - at (--at S ...): the envelope at those distances (the nearest slice), so that the same
   places can be compared over successive stretches of time (--from, --to).
 - start-up front (the samples before T): at each one the first slice past 1 d0 where r_s departs
@@ -228,8 +230,8 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
     (the rings nearest it, at dx/2 as built) over the count of an ordered lattice stretched with
     the flow, 2 (d0/dx) u0 / |mean axial velocity| in a 2 d0 slice; it is 1 while the rows hold
     the nozzle's order and falls where they leave the axis. It adds the rows as well: (the
-    slice's radius a_s / a, [each row's mean pressure / (sigma/a_s)]), medians over the
-    snapshots. The nozzle's n = a/dx rows sit at (j + 1/2) dx; a slice's rows are counted on its
+    slice's radius a_s / a, [each row's mean pressure / (sigma/a_s)], [each row's mean radius /
+    (a_s/n)]), medians over the snapshots. The nozzle's n = a/dx rows sit at (j + 1/2) dx; a slice's rows are counted on its
     own radius, a_s = its outermost particle's radius x a / (a - dx/2), so that a jet thinning
     as it stretches keeps them apart: row j holds the radii [j, j + 1) a_s / n."""
     names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
@@ -267,15 +269,18 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
                     a_s = float(np.max(r[m])) * 0.5 * d0 / (0.5 * d0 - 0.5 * axis_dx)
                     j = np.minimum((r[m] / a_s * n_rows).astype(int), n_rows - 1)
                     unit = p_unit * 0.5 * d0 / a_s   # sigma / a_s
+                    spacing = a_s / n_rows
                     rows.setdefault(b, []).append(
-                        [a_s / (0.5 * d0)] + [float(np.mean(p[m][j == i])) / unit if np.any(j == i)
-                                              else math.nan for i in range(n_rows)])
+                        [a_s / (0.5 * d0)]
+                        + [float(np.mean(p[m][j == i])) / unit if np.any(j == i) else math.nan for i in range(n_rows)]
+                        + [float(np.mean(r[m][j == i])) / spacing if np.any(j == i) else math.nan
+                           for i in range(n_rows)])
 
     def med_rows(b):
         if b not in rows:
             return None
-        cols = [median([v[i] for v in rows[b] if not math.isnan(v[i])]) for i in range(n_rows + 1)]
-        return cols[0], cols[1:]
+        cols = [median([v[i] for v in rows[b] if not math.isnan(v[i])]) for i in range(2 * n_rows + 1)]
+        return cols[0], cols[1:n_rows + 1], cols[n_rows + 1:]
     return [(2.0 * b, median(v), median(order[b]) if b in order else None, med_rows(b))
             for b, v in sorted(per.items())]
 
@@ -410,9 +415,10 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
             for s0, _v, _o, rw in prof:
                 if rw is None:
                     continue
-                a_s, ps = rw
+                a_s, ps, rs = rw
                 print(f"rows at s = {s0:.0f}-{s0 + 2:.0f} d0: a_s/a = {a_s:.3f}, mean p / (sigma/a_s) from the axis "
-                      "out: " + " ".join(f"{v:.3f}" for v in ps))
+                      "out: " + " ".join(f"{v:.3f}" for v in ps) + "; mean r / (a_s/n): "
+                      + " ".join(f"{v:.3f}" for v in rs))
                 if not any(math.isnan(v) for v in ps):
                     spreads.append(max(ps) - min(ps))
             if spreads:

@@ -34,8 +34,8 @@ fitted speed must be 300 d0/s within 1% (the slices round each position by less 
 over a 9 d0 travel), with no front found in the samples at or after the cut time.
 
 With `--rows` on a five-row lattice that thins to 0.9 of its radius, each row's pressure a
-known multiple of the local Laplace pressure: the printed rows must be those multiples
-(check_rows).
+known multiple of the local Laplace pressure: the printed rows must be those multiples, at
+their built radii (check_rows).
 
 With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
 before `--from` refused with a message naming both.
@@ -178,9 +178,9 @@ def check_to(d):
 def check_rows():
     """--rows on a five-row lattice (the nozzle's rings at (j + 1/2) dx, dz = dx) that thins to 0.9 of
     its radius from s = 6 d0 on, each row's pressure (1 + j/10) sigma/a_s (a_s the local radius):
-    every 2 d0 slice must print a_s/a 1.000 or 0.900 and the rows 1.000 1.100 1.200 1.300 1.400
-    (exact by construction, to the three digits printed), rows_spread_max 0.4 (1e-5). A list of
-    failures."""
+    every 2 d0 slice must print a_s/a 1.000 or 0.900, the rows' pressures 1.000 1.100 1.200 1.300
+    1.400 and their radii over the local row spacing 0.500 1.500 2.500 3.500 4.500 (exact by
+    construction, to the three digits printed), rows_spread_max 0.4 (1e-5). A list of failures."""
     import h5py
     import numpy as np
     failures = []
@@ -200,8 +200,10 @@ def check_rows():
                 g["active"] = np.ones(len(s), dtype=np.int32)
                 g["kind"] = np.full(len(s), 2, dtype=np.int32)
         out = subprocess.run([PY, TOOL, d, "--from", "0", "--rows"], capture_output=True, text=True)
-        got = re.findall(r"^rows at s = (\d+)-\d+ d0: a_s/a = ([0-9.]+), .*: (.*)$", out.stdout, re.M)
-        want = [(str(s0), "1.000" if s0 < 6 else "0.900", "1.000 1.100 1.200 1.300 1.400") for s0 in range(0, 12, 2)]
+        got = re.findall(r"^rows at s = (\d+)-\d+ d0: a_s/a = ([0-9.]+), .*?out: (.*); mean r / \(a_s/n\): (.*)$",
+                         out.stdout, re.M)
+        want = [(str(s0), "1.000" if s0 < 6 else "0.900", "1.000 1.100 1.200 1.300 1.400",
+                 "0.500 1.500 2.500 3.500 4.500") for s0 in range(0, 12, 2)]
         if got != want:
             failures.append(f"--rows printed {got}, built {want}")
         val = summary(out.stdout) or {}
