@@ -231,9 +231,10 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
     the flow, 2 (d0/dx) u0 / |mean axial velocity| in a 2 d0 slice; it is 1 while the rows hold
     the nozzle's order and falls where they leave the axis. It adds the rows as well: (the
     slice's radius a_s / a, [each row's mean pressure / (sigma/a_s)], [each row's mean radius /
-    (a_s/n)]), medians over the snapshots. The nozzle's n = a/dx rows sit at (j + 1/2) dx; a slice's rows are counted on its
-    own radius, a_s = its outermost particle's radius x a / (a - dx/2), so that a jet thinning
-    as it stretches keeps them apart: row j holds the radii [j, j + 1) a_s / n."""
+    (a_s/n)]), medians over the snapshots. The nozzle's n = a/dx rows sit at (j + 1/2) dx; a
+    slice's rows are counted on its own radius, a_s = its outermost particle's radius x a /
+    (a - dx/2), so that a jet thinning as it stretches keeps them apart: row j holds the radii
+    [j, j + 1) a_s / n."""
     names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
     if not names:
         return None
@@ -290,7 +291,7 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
     twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
     read. at: distances s/d0 at which to print the envelope (the nearest slice). show_rows: print
-    the rows' pressures along the jet (noise_along; round jets). NoiseError for
+    the rows' pressures and radii along the jet (noise_along; round jets). NoiseError for
     a run without the files or samples it needs."""
     try:
         c = read_case(run)
@@ -478,9 +479,9 @@ def main(argv=None):
                     help="print the envelope A/a at these distances from the orifice [d0] (SUMMARY A_at_S): "
                          "read over successive stretches of time, whether the disturbance at a place is steady")
     ap.add_argument("--rows", action="store_true",
-                    help="print each ring row's mean pressure over the local Laplace pressure along the intact jet "
-                         "(2 d0 slices, medians over the snapshots; SUMMARY rows_spread_max: the largest spread "
-                         "between a slice's rows)")
+                    help="print each ring row's mean pressure over the local Laplace pressure and its mean radius "
+                         "over the local row spacing along the intact jet (2 d0 slices, medians over the snapshots; "
+                         "SUMMARY rows_spread_max: the largest pressure spread between a slice's rows)")
     ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
     args = ap.parse_args(argv)
