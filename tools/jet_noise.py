@@ -267,15 +267,16 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
                     ordered = 2.0 * (d0 / axis_dx) * u0 / speed
                     order.setdefault(b, []).append(float(np.sum(m & (r < 0.6 * axis_dx))) / ordered)
                 if axis_dx:
-                    a_s = float(np.max(r[m])) * 0.5 * d0 / (0.5 * d0 - 0.5 * axis_dx)
-                    j = np.minimum((r[m] / a_s * n_rows).astype(int), n_rows - 1)
+                    rm, pm = r[m], p[m]
+                    a_s = float(np.max(rm)) * 0.5 * d0 / (0.5 * d0 - 0.5 * axis_dx)
+                    j = np.minimum((rm / a_s * n_rows).astype(int), n_rows - 1)
                     unit = p_unit * 0.5 * d0 / a_s   # sigma / a_s
                     spacing = a_s / n_rows
+                    ins = [j == i for i in range(n_rows)]
                     rows.setdefault(b, []).append(
                         [a_s / (0.5 * d0)]
-                        + [float(np.mean(p[m][j == i])) / unit if np.any(j == i) else math.nan for i in range(n_rows)]
-                        + [float(np.mean(r[m][j == i])) / spacing if np.any(j == i) else math.nan
-                           for i in range(n_rows)])
+                        + [float(np.mean(pm[k])) / unit if np.any(k) else math.nan for k in ins]
+                        + [float(np.mean(rm[k])) / spacing if np.any(k) else math.nan for k in ins])
 
     def med_rows(b):
         if b not in rows:
