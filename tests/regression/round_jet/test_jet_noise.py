@@ -105,11 +105,25 @@ disturbance_ka = {KA}
         f.write("\n".join(surf) + "\n")
 
 
-def write_snapshots(d):
+def write_snapshot(d, n, t, s, x, w, p):
+    """snap_n.h5 in d at time t: active fluid particles at s d0 below the orifice (z0 = 0.11 m)
+    with radius x, axial velocity w and pressure p."""
     import h5py
     import numpy as np
+    with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as f:
+        f.attrs["time"] = t
+        g = f.create_group("particles")
+        g["z"] = 0.11 - s * D0
+        g["x"] = x
+        g["w"] = w
+        g["p"] = p
+        g["active"] = np.ones(len(s), dtype=np.int32)
+        g["kind"] = np.full(len(s), 2, dtype=np.int32)
+
+
+def write_snapshots(d):
+    import numpy as np
     p_unit = SIGMA / A
-    z0 = 0.11
     for n in range(10):
         s = np.arange(-2.0, 14.0, 0.05)  # plug particles, then the jet
         k = np.arange(len(s))
@@ -121,15 +135,7 @@ def write_snapshots(d):
         on_axis = np.where((s >= 4.0) & (s < 14.0), k % 4 == 0, k % 2 == 0)
         x = np.where(on_axis, 0.5 * DX, 1.5 * DX)
         w = np.where(s >= 8.0, -2.0 * U0, -U0)
-        with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as f:
-            f.attrs["time"] = 0.01 + 40 * n * 1e-4
-            g = f.create_group("particles")
-            g["z"] = z0 - s * D0
-            g["x"] = x
-            g["w"] = w
-            g["p"] = p
-            g["active"] = np.ones(len(s), dtype=np.int32)
-            g["kind"] = np.full(len(s), 2, dtype=np.int32)
+        write_snapshot(d, n, 0.01 + 40 * n * 1e-4, s, x, w, p)
 
 
 def check_front():
@@ -181,7 +187,6 @@ def check_rows():
     every 2 d0 slice must print a_s/a 1.000 or 0.900, the rows' pressures 1.000 1.100 1.200 1.300
     1.400 and their radii over the local row spacing 0.500 1.500 2.500 3.500 4.500 (exact by
     construction, to the three digits printed), rows_spread_max 0.4 (1e-5). A list of failures."""
-    import h5py
     import numpy as np
     failures = []
     with tempfile.TemporaryDirectory() as d:
@@ -190,15 +195,8 @@ def check_rows():
         j = np.tile(np.arange(5), len(s) // 5)
         f = np.where(s < 6.0, 1.0, 0.9)
         for n in range(3):
-            with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as h:
-                h.attrs["time"] = 0.01 + 100 * n * 1e-4
-                g = h.create_group("particles")
-                g["z"] = 0.11 - s * D0
-                g["x"] = (j + 0.5) * DX * f
-                g["w"] = np.full(len(s), -U0)
-                g["p"] = (1 + 0.1 * j) * SIGMA / (A * f)
-                g["active"] = np.ones(len(s), dtype=np.int32)
-                g["kind"] = np.full(len(s), 2, dtype=np.int32)
+            write_snapshot(d, n, 0.01 + 100 * n * 1e-4, s, (j + 0.5) * DX * f, np.full(len(s), -U0),
+                           (1 + 0.1 * j) * SIGMA / (A * f))
         out = subprocess.run([PY, TOOL, d, "--from", "0", "--rows"], capture_output=True, text=True)
         got = re.findall(r"^rows at s = (\d+)-\d+ d0: a_s/a = ([0-9.]+), .*?out: (.*); mean r / \(a_s/n\): (.*)$",
                          out.stdout, re.M)
