@@ -29,7 +29,10 @@ over the same times while one of them goes on.
   far up the jet the noise of the breakup reaches. For a round jet with resolution.dx in its
   case.toml, the axis order of each slice as well: its particles within 0.6 dx of the axis (the
   nozzle builds the innermost rings at dx/2) over the count of the nozzle's lattice stretched
-  with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order.
+  with the flow, 2 (d0/dx) u0 / |mean axial velocity|; 1 where the rows keep their order. And
+  the same standard deviation about each ring row's own mean (rows as in --rows), with its own
+  `quiet about the rows' means to`: a lattice of many rings holds a steady row-to-row pattern
+  (about +-0.4 sigma/a at d0/dx 20) that the plain one counts as noise.
 - rows (--rows; a round jet with resolution.dx): along the intact jet, each ring row's mean
   pressure over the local Laplace pressure sigma/a_s (a_s the slice's own radius, the rows
   counted across it) and its mean radius over the local row spacing a_s/n (j + 1/2 for the
@@ -224,7 +227,8 @@ def dominant_wave(surface, s0, s1):
 
 
 def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf):
-    """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None, rows or None)]
+    """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None, rows or None,
+    median p std about the rows' own means / (sigma/a) or None)]
     over the intact jet of every snapshot at t0 <= t <= t1; None without snapshots. axis_dx (a
     round jet's particle spacing dx) adds the axis order: the particles within 0.6 dx of the axis
     (the rings nearest it, at dx/2 as built) over the count of an ordered lattice stretched with
@@ -234,14 +238,16 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
     (a_s/n)]), medians over the snapshots. The nozzle's n = a/dx rows sit at (j + 1/2) dx; a
     slice's rows are counted on its own radius, a_s = its outermost particle's radius x a /
     (a - dx/2), so that a jet thinning as it stretches keeps them apart: row j holds the radii
-    [j, j + 1) a_s / n."""
+    [j, j + 1) a_s / n. The last, pressure std about the rows' means, is the slice's spread with
+    the rows' fixed pattern taken out (each particle's pressure less its row's mean): what is
+    left is noise, where a lattice of many rows holds a steady pattern of its own."""
     names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
     if not names:
         return None
     import h5py
     import numpy as np
     times = [float(r["time"]) for r in jet]
-    per, order, rows = {}, {}, {}
+    per, order, rows, in_rows = {}, {}, {}, {}
     n_rows = max(1, round(0.5 * d0 / axis_dx)) if axis_dx else 0
     for n in names:
         with h5py.File(os.path.join(run, n), "r") as f:
@@ -273,9 +279,11 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
                     unit = p_unit * 0.5 * d0 / a_s   # sigma / a_s
                     spacing = a_s / n_rows
                     ins = [j == i for i in range(n_rows)]
+                    means = np.array([float(np.mean(pm[k])) if np.any(k) else 0.0 for k in ins])
+                    in_rows.setdefault(b, []).append(float(np.sqrt(np.mean((pm - means[j]) ** 2))) / p_unit)
                     rows.setdefault(b, []).append(
                         [a_s / (0.5 * d0)]
-                        + [float(np.mean(pm[k])) / unit if np.any(k) else math.nan for k in ins]
+                        + [m_k / unit if np.any(k) else math.nan for m_k, k in zip(means, ins)]
                         + [float(np.mean(rm[k])) / spacing if np.any(k) else math.nan for k in ins])
 
     def med_rows(b):
@@ -283,8 +291,8 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
             return None
         cols = [median([v[i] for v in rows[b] if not math.isnan(v[i])]) for i in range(2 * n_rows + 1)]
         return cols[0], cols[1:n_rows + 1], cols[n_rows + 1:]
-    return [(2.0 * b, median(v), median(order[b]) if b in order else None, med_rows(b))
-            for b, v in sorted(per.items())]
+    return [(2.0 * b, median(v), median(order[b]) if b in order else None, med_rows(b),
+             median(in_rows[b]) if b in in_rows else None) for b, v in sorted(per.items())]
 
 
 def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
@@ -403,10 +411,10 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
     prof = (noise_along(run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0, t1)
             if sig > 0 else None)
     if prof:
-        quiet = next((s0 for s0, v, _o, _r in prof if v > 0.25), prof[-1][0] + 2.0)
+        quiet = next((s0 for s0, v, _o, _r, _i in prof if v > 0.25), prof[-1][0] + 2.0)
         print("pressure std / (sigma/a) along the intact jet (2 d0 slices, median over snapshots): "
-              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _o, _r in prof))
-        orders = [(s0, o) for s0, _v, o, _r in prof if o is not None]
+              + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _o, _r, _i in prof))
+        orders = [(s0, o) for s0, _v, o, _r, _i in prof if o is not None]
         if orders:
             print("axis order along the intact jet (rings within 0.6 dx of the axis over an ordered lattice "
                   "stretched with the flow, 2 d0 slices, median over snapshots): "
@@ -414,7 +422,7 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
             summary["axis_order_min"] = min(o for _s, o in orders)
         if show_rows:
             spreads = []
-            for s0, _v, _o, rw in prof:
+            for s0, _v, _o, rw, _i in prof:
                 if rw is None:
                     continue
                 a_s, ps, rs = rw
@@ -428,6 +436,14 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
         print(f"quiet (p std <= sigma/(4a)) to s = {quiet:.0f} d0, {l_mean - quiet:.1f} d0 above the "
               f"breakup (L {l_mean:.1f} d0)")
         summary.update({"quiet_to_over_d0": quiet, "noisy_reach_over_d0": l_mean - quiet})
+        in_rows = [(s0, i) for s0, _v, _o, _r, i in prof if i is not None]
+        if in_rows:
+            quiet_in = next((s0 for s0, i in in_rows if i > 0.25), in_rows[-1][0] + 2.0)
+            print("pressure std about the rows' means / (sigma/a) along the intact jet (the rows' pattern taken "
+                  "out): " + ", ".join(f"{s0:.0f}:{i:.3g}" for s0, i in in_rows))
+            print(f"quiet about the rows' means to s = {quiet_in:.0f} d0, {l_mean - quiet_in:.1f} d0 above the "
+                  "breakup")
+            summary.update({"quiet_in_rows_to_over_d0": quiet_in, "noisy_in_rows_reach_over_d0": l_mean - quiet_in})
     elif prof is None:
         print("noise along the jet: no snapshots (snap_*.h5) in the run directory")
     print("SUMMARY " + " ".join(f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v}" for k, v in summary.items()))

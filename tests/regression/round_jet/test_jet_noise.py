@@ -37,6 +37,12 @@ With `--rows` on a five-row lattice that thins to 0.9 of its radius, each row's 
 known multiple of the local Laplace pressure: the printed rows must be those multiples, at
 their built radii (check_rows).
 
+The same lattice at its radius with a row pattern of +-0.4 sigma/a (rows 0, 2, 4 at 1.4 sigma/a,
+rows 1, 3 at 0.6) and, from s = 8 d0 on, +-0.5 sigma/a alternating along each row
+(check_rows_noise): the plain pressure std exceeds sigma/(4a) from the orifice, so `quiet to`
+must read 0 d0; about the rows' means the slices must print 0 up to 8 d0 and 0.5 beyond (within
+5e-4, the three digits printed) and `quiet about the rows' means` 8 d0 (exact by construction).
+
 With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
 before `--from` refused with a message naming both.
 
@@ -210,6 +216,34 @@ def check_rows():
     return failures
 
 
+def check_rows_noise():
+    """The plain and the rows' pressure std on a five-row lattice with a row pattern of +-0.4
+    sigma/a and, from s = 8 d0 on, +-0.5 sigma/a alternating along each row: quiet to 0 d0 plainly,
+    to 8 d0 about the rows' means, the latter's slices 0 and 0.5. A list of failures."""
+    import numpy as np
+    failures = []
+    with tempfile.TemporaryDirectory() as d:
+        write_run(d)
+        s = np.repeat(np.arange(0.05, 12.0, 0.1), 5)
+        j = np.tile(np.arange(5), len(s) // 5)
+        along = np.where(np.arange(len(s)) // 5 % 2 == 0, 1.0, -1.0)   # alternating along each row
+        p = (1 + 0.4 * np.where(j % 2 == 0, 1.0, -1.0) + np.where(s >= 8.0, 0.5 * along, 0.0)) * SIGMA / A
+        for n in range(3):
+            write_snapshot(d, n, 0.01 + 100 * n * 1e-4, s, (j + 0.5) * DX, np.full(len(s), -U0), p)
+        out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
+        val = summary(out.stdout) or {}
+        if val.get("quiet_to_over_d0") != 0.0:
+            failures.append(f"rows' pattern: quiet to s = {val.get('quiet_to_over_d0')} d0, built 0 (std 0.4 from the orifice)")
+        if val.get("quiet_in_rows_to_over_d0") != 8.0:
+            failures.append(f"quiet about the rows' means to s = {val.get('quiet_in_rows_to_over_d0')} d0, built 8")
+        m = re.search(r"^pressure std about the rows' means .*?: (.*)$", out.stdout, re.M)
+        got = dict(kv.split(":") for kv in m.group(1).split(", ")) if m else {}
+        want = {"0": 0.0, "2": 0.0, "4": 0.0, "6": 0.0, "8": 0.5, "10": 0.5}
+        if set(got) != set(want) or any(abs(float(got[k]) - v) > 5e-4 for k, v in want.items()):
+            failures.append(f"std about the rows' means {got}, built {want} (5e-4: the three digits printed)")
+    return failures
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -276,6 +310,7 @@ def main():
         failures += check_to(d)
     failures += check_front()
     failures += check_rows()
+    failures += check_rows_noise()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
