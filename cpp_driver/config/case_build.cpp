@@ -320,6 +320,14 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
                              "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
         p.split_axis_rings = f->value;
     }
+    if (auto f = dom.boolean("renormalise_ring_continuity")) {
+        if (f->value && p.axis_pair != AxisPair::Rings)
+            throw InputError(ctx.where(dom.key_path("renormalise_ring_continuity")),
+                             "domain.renormalise_ring_continuity renormalises the rings pair's continuity",
+                             "domain.axis_pair = \"rings\" with domain.renormalise_ring_continuity = true",
+                             "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
+        p.renormalise_ring_continuity = f->value;
+    }
     // after [domain]: the key belongs to the rings pair's pressure-consistent CSF
     const Section st = top.sub("surface_tension");
     if (auto f = st.string("rings_curvature")) {

@@ -273,6 +273,13 @@ const Param kParams[] = {
      .doc = "after each step a ring heavier than max(2 x the lattice ring at its radius, 2 x the first column's) "
             "becomes two of half its mass, dz/2 either side of it along the axis",
      .legacy = "(none)", .hand = kRead, .h5_optional = true},
+    {.key = "domain.renormalise_ring_continuity", .attr = "renormalise_ring_continuity", .type = K::Bool,
+     .member = member<&SimParams::renormalise_ring_continuity>(), .def = "false",
+     .allowed = "needs `axis_pair = \"rings\"`",
+     .doc = "each ring's density rate from the radial and the axial stretch divided by its own kernel's response "
+            "to each, so that a stretch without a change of volume leaves the density alone where the surface "
+            "cuts the kernel",
+     .legacy = "(none)", .hand = kRead, .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),
      .allowed = "needs `geometry = \"axisymmetric\"`; `\"rings\"` needs h >= 2 dx",

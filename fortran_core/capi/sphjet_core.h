@@ -110,6 +110,7 @@ typedef struct sph_geometry_t {
     int axis_pair;            /* axisymmetric pair: 0 smoothed radius, 1 rings */
     double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
     double ring_mass_per_radius; /* domain.split_axis_rings: 2 pi rho0 dx dz [kg/m]; 0 = off */
+    int renormalise_continuity;  /* rings pair: 1 its continuity renormalised along r and z */
 } sph_geometry_t;
 
 typedef struct sph_gravity_t {

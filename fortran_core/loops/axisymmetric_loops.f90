@@ -13,6 +13,8 @@
 !> With domain.axis_pair = "rings" (prm%geometry%axis_pair = AXIS_PAIR_RINGS) the continuity and the
 !> pressure are the rings pair's instead (ring_rates; physics/axisymmetric.f90), and the
 !> pressure pair's truncation vector, which the CSF force needs, is left in s%axi_dx, s%axi_dz.
+!> With prm%geometry%renormalise_continuity (domain.renormalise_ring_continuity) the rings
+!> pair's density rate is renormalised along r and z (renormalised_rate).
 module axisymmetric_loops
   use sphjet_kinds, only: rp, pi, VISC_LAMINAR, KERNEL_WENDLAND, AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t
@@ -26,6 +28,18 @@ module axisymmetric_loops
   implicit none
   private
   public :: axisymmetric_rates, axis_weights_of
+
+  !> renormalised_rate: the correction is whole where a ring's smaller response is at least
+  !> RESPONSE_WHOLE, none below RESPONSE_NONE, linear between; each factor within
+  !> [1/FACTOR_MAX, FACTOR_MAX]. The jet's rows need factors of 0.88-1.07 (the surface row
+  !> responds 0.51-0.53 radially and 0.62-0.64 axially: h = 2 dx, radial spacing 0.9-1 dx).
+  !> The rate so scaled is not the pressure force's adjoint, and in fragments and drops it fed
+  !> their motion until the density check stopped the falling jets of the round-jet study's
+  !> case (d0/dx 10, gravity): whole at every ring with factors up to 2, the 0.78 m/s jet at
+  !> 43 ms; faded below RESPONSE_WHOLE, at 47 ms (its start-up head) and the 0.58 m/s one at
+  !> 87 ms; with factors within 1.25, the 0.58 m/s one at 78 ms (a ring next to the axis in a
+  !> drop); with none within h/2 of the axis too (renormalised_rate), both ran to 250 ms.
+  real(rp), parameter :: RESPONSE_WHOLE = 0.5_rp, RESPONSE_NONE = 0.35_rp, FACTOR_MAX = 1.25_rp
 
   !> The ring kernel's derivative tables per kernel kind, side by side (ring_kernel_tables),
   !> built on first use.
@@ -53,11 +67,13 @@ module axisymmetric_loops
   end type axi_body_t
 
   !> The rings pair's sweep (ring_pairs), with the ring masses m, the ring volumes vr = m/rho
-  !> and the truncation vector's sums ddx, ddz.
+  !> and the truncation vector's sums ddx, ddz; with renorm also the axial part of the
+  !> continuity cz and the continuity's moments mr, mz (renormalised_rate).
   type, extends(axi_sums_t) :: ring_body_t
     integer :: kind = 0
     real(rp) :: h = 0.0_rp
-    real(rp), allocatable :: m(:), vr(:), ddx(:), ddz(:)
+    logical :: renorm = .false.
+    real(rp), allocatable :: m(:), vr(:), ddx(:), ddz(:), cz(:), mr(:), mz(:)
     logical, allocatable :: real_(:)
   contains
     procedure :: visit => ring_visit
@@ -140,6 +156,10 @@ contains
     body%vr = body%m / s%rho(1:n)
     body%real_ = sign(1.0_rp, s%x(1:n)) > 0.0_rp   ! not an axis image
     allocate(body%ddx(n), body%ddz(n), source=0.0_rp)
+    body%renorm = prm%geometry%renormalise_continuity /= 0
+    ! the renormalisation's sums (size 1, untouched, without it)
+    allocate(body%cz(merge(n, 1, body%renorm)), body%mr(merge(n, 1, body%renorm)), &
+             body%mz(merge(n, 1, body%renorm)), source=0.0_rp)
     body%kind = kern%kind
     body%h = prm%numerics%h
     call body%sweep(kern, kept)
@@ -157,6 +177,9 @@ contains
                               fs, fp)
       self = 2.0_rp * s%x(k) * fp
       s%rate(R_AR, k) = body%cont(k) + body%m(k) * s%u(k) * self
+      if (body%renorm) s%rate(R_AR, k) = renormalised_rate(s%rate(R_AR, k), body%cz(k), &
+                                                           body%mr(k) + body%m(k) * s%x(k) * self, &
+                                                           body%mz(k), s%rho(k), s%x(k) / prm%numerics%h)
       s%axi_dx(k) = body%ddx(k) + body%vr(k) * self
       s%axi_dz(k) = body%ddz(k)
       if (s%fluid(k)) call body%accelerate(prm, k, -(body%pg(k) * body%m(k) * self))
@@ -201,24 +224,29 @@ contains
     call ring_pairs(self%laminar, pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, self%s%x, self%s%u, &
                     self%s%w, self%s%fluid, self%real_, self%h, ring_tab(:, :, :, self%kind), &
                     self%m, self%v, self%vr, self%pg, self%cont, &
-                    self%pax, self%paz, self%dudr, self%dwdr, self%ddx, self%ddz)
+                    self%pax, self%paz, self%dudr, self%dwdr, self%ddx, self%ddz, &
+                    self%renorm, self%cz, self%mr, self%mz)
     red = max(red, 0.0_rp)
   end subroutine ring_visit
 
   !> The rings pair's sums over the pairs of one list: pairs of two rings (no mirror image)
   !> add to the continuity, the pressure and the truncation vector with the ring kernel's
   !> derivatives (dWr/dr_a = 2 (r_a - r_b) Fs + r_b Fp, dWr/dz_a = 2 (z_a - z_b) Fs); fluid
-  !> pairs, images included, to the radial velocity derivatives as axi_pairs.
+  !> pairs, images included, to the radial velocity derivatives as axi_pairs. renorm: the
+  !> continuity's axial part to cz and its moments to mr (its rate for u = r, w = 0) and mz
+  !> (for u = 0, w = z) as well.
   pure subroutine ring_pairs(laminar, np, pa, pb, dx, dz, f, x, u, w, fl, rl, h, tab, m, v, &
-                             vr, pg, cont, pax, paz, dudr, dwdr, ddx, ddz)
+                             vr, pg, cont, pax, paz, dudr, dwdr, ddx, ddz, renorm, cz, mr, mz)
     logical, intent(in) :: laminar
     integer, intent(in) :: np, pa(*), pb(*)
     real(rp), intent(in) :: dx(*), dz(*), f(*), x(*), u(*), w(*), m(*), v(*), vr(*), pg(*), h
     real(rp), intent(in) :: tab(2, RING_NU, RING_NV)
     logical, intent(in) :: fl(*), rl(*)
     real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*), ddx(*), ddz(*)
+    logical, intent(in) :: renorm
+    real(rp), intent(inout) :: cz(*), mr(*), mz(*)
     integer :: k, a, b
-    real(rp) :: q, t, fs, fp, dra, drb, dzz
+    real(rp) :: q, t, fs, fp, dra, drb, dzz, qz, qr
     real(rp), allocatable :: fsk(:), fpk(:)   ! on the heap: a row's pair list may be long
     ! The kernel's derivatives first, in a loop of their own: each reads a cell of the 1 MB
     ! table at a place no earlier pair predicts, and a short loop keeps many of those reads in
@@ -243,6 +271,17 @@ contains
         q = u(a) * dra + u(b) * drb + (w(a) - w(b)) * dzz
         cont(a) = cont(a) + m(b) * q
         cont(b) = cont(b) + m(a) * q
+        if (renorm) then
+          qz = (w(a) - w(b)) * dzz
+          cz(a) = cz(a) + m(b) * qz
+          cz(b) = cz(b) + m(a) * qz
+          qr = x(a) * dra + x(b) * drb
+          mr(a) = mr(a) + m(b) * qr
+          mr(b) = mr(b) + m(a) * qr
+          qz = dz(k) * dzz
+          mz(a) = mz(a) + m(b) * qz
+          mz(b) = mz(b) + m(a) * qz
+        end if
         t = pg(a) + pg(b)
         pax(a) = pax(a) - m(b) * t * dra
         paz(a) = paz(a) - m(b) * t * dzz
@@ -259,6 +298,36 @@ contains
         call add_radial_derivatives(a, b, f(k) * dx(k), u, w, v, dudr, dwdr)
     end do
   end subroutine ring_pairs
+
+  !> The rings pair's density rate c (its radial part c - cz, its axial part cz) renormalised
+  !> along r and z. The ring's own sums give its response to a radial stretch u = r, mr, and
+  !> to an axial one w = z, mz: in the bulk of a lattice -2 rho and -rho; where the surface
+  !> cuts the kernel less, and less radially than axially (the surface row of a five-ring
+  !> column 0.53 and 0.64 of the bulk's, h = 2 dx). So a stretch that keeps the volume, as
+  !> along a falling jet, changed the outer rows' density (the surface row's by -0.11 rho times
+  !> the axial strain), and the rows moved to put it back: the inner rows fell behind the
+  !> jet's contraction, then buckled. Here each part is scaled so that both respond as their
+  !> volume-weighted mean (2 er + ez) / 3 (er, ez the responses over the bulk's): a stretch
+  !> without a change of volume leaves the density alone, a change of volume changes it as
+  !> before. Faded out below a response of RESPONSE_WHOLE (module header), and towards the axis
+  !> from h to h/2 (x_over_h = r/h), none closer: the rings there respond as the bulk's (the
+  !> five-ring column's two inner rows within 0.6%), and in drops they are the ones that move
+  !> fastest.
+  pure function renormalised_rate(c, cz, mr, mz, rho, x_over_h) result(r)
+    real(rp), intent(in) :: c, cz, mr, mz, rho, x_over_h
+    real(rp) :: r, er, ez, eb, fr, fz, lam
+    er = mr / (-2.0_rp * rho)
+    ez = mz / (-rho)
+    r = c
+    if (er <= 0.0_rp .or. ez <= 0.0_rp) return
+    lam = min(1.0_rp, max(0.0_rp, (min(er, ez) - RESPONSE_NONE) / (RESPONSE_WHOLE - RESPONSE_NONE)))
+    lam = lam * min(1.0_rp, max(0.0_rp, 2.0_rp * x_over_h - 1.0_rp))   ! none within h/2 of the axis
+    if (lam <= 0.0_rp) return
+    eb = (2.0_rp * er + ez) / 3.0_rp
+    fr = 1.0_rp + lam * (min(FACTOR_MAX, max(1.0_rp / FACTOR_MAX, eb / er)) - 1.0_rp)
+    fz = 1.0_rp + lam * (min(FACTOR_MAX, max(1.0_rp / FACTOR_MAX, eb / ez)) - 1.0_rp)
+    r = fr * (c - cz) + fz * cz
+  end function renormalised_rate
 
   !> The axis weights 1/g and g'/g of every x (physics/axisymmetric.f90: axis_weights), from
   !> the kernel's tables (built once per kind).

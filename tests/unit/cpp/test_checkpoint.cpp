@@ -128,6 +128,7 @@ SimParams unusual_params() {
     p.periodic_z = true;
     p.axis_pair = AxisPair::Rings;  // not the default
     p.rings_curvature = RingsCurvature::Own;  // not the default
+    p.renormalise_ring_continuity = true;      // not the default
     p.curvature_normals = CurvatureNormals::SurfaceBand;  // not the default
     p.curvature = CurvatureModel::SurfaceFit;  // not the default
     return p;
@@ -185,6 +186,7 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
     EXPECT_EQ(a.periodic_z, b.periodic_z);
     EXPECT_EQ(a.axis_pair, b.axis_pair);
     EXPECT_EQ(a.rings_curvature, b.rings_curvature);
+    EXPECT_EQ(a.renormalise_ring_continuity, b.renormalise_ring_continuity);
     EXPECT_EQ(a.curvature_normals, b.curvature_normals);
     EXPECT_EQ(a.curvature, b.curvature);
 }

@@ -989,6 +989,25 @@ TEST(ModernCase, AxisPair) {
     EXPECT_NE(e.find("\"smoothed_radius\", \"rings\""), std::string::npos) << e;
 }
 
+// domain.renormalise_ring_continuity (cases/CASE_FORMAT.md): off by default; read with the rings
+// pair, written back and read again; refused with the smoothed-radius pair, naming the key and
+// the pair it needs.
+TEST(ModernCase, RenormaliseRingContinuity) {
+    std::vector<std::string> rings = {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                      "numerics.lattice=\"sc\"", "resolution.h_over_dx=2.0",
+                                      "domain.axis_pair=\"rings\""};
+    EXPECT_FALSE(parse_modern_case(kMinimal, "case.toml", rings).params.renormalise_ring_continuity);
+    rings.push_back("domain.renormalise_ring_continuity=true");
+    const CaseSpec s = parse_modern_case(kMinimal, "case.toml", rings);
+    EXPECT_TRUE(s.params.renormalise_ring_continuity);
+    expect_round_trip(s);
+    const std::string e = error_of(kMinimal, {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false",
+                                              "numerics.lattice=\"sc\"", "domain.renormalise_ring_continuity=true"});
+    EXPECT_NE(e.find("domain.renormalise_ring_continuity"), std::string::npos) << e;
+    EXPECT_NE(e.find("domain.axis_pair = \"rings\""), std::string::npos) << e;
+    EXPECT_NE(e.find("smoothed_radius"), std::string::npos) << e;
+}
+
 // numerics.bulk_viscosity (cases/CASE_FORMAT.md): off by default; read, written back and read
 // again, in either geometry; out of [0, 1] refused, naming the key and the range.
 TEST(ModernCase, BulkViscosity) {
