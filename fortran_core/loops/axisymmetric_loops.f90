@@ -35,8 +35,8 @@ module axisymmetric_loops
   !> responds 0.51-0.53 radially and 0.62-0.64 axially: h = 2 dx, radial spacing 0.9-1 dx).
   !> The rate so scaled is not the pressure force's adjoint, and in fragments and drops it fed
   !> their motion until the density check stopped the falling jets of the round-jet study's
-  !> case (d0/dx 10, gravity): whole at every ring with factors up to 2, the 0.78 m/s jet at
-  !> 43 ms; faded below RESPONSE_WHOLE, at 47 ms (its start-up head) and the 0.58 m/s one at
+  !> case (d0/dx 10, gravity): whole at every ring with factors up to 2, the 0.78 m/s jet
+  !> started as a column at 43 ms; faded below RESPONSE_WHOLE, at 47 ms (its start-up head) and the 0.58 m/s one at
   !> 87 ms; with factors within 1.25, the 0.58 m/s one at 78 ms (a ring next to the axis in a
   !> drop); with none within h/2 of the axis too (renormalised_rate), both ran to 250 ms.
   real(rp), parameter :: RESPONSE_WHOLE = 0.5_rp, RESPONSE_NONE = 0.35_rp, FACTOR_MAX = 1.25_rp
