@@ -276,9 +276,9 @@ const Param kParams[] = {
     {.key = "domain.renormalise_ring_continuity", .attr = "renormalise_ring_continuity", .type = K::Bool,
      .member = member<&SimParams::renormalise_ring_continuity>(), .def = "false",
      .allowed = "needs `axis_pair = \"rings\"`",
-     .doc = "each ring's density rate from the radial and the axial stretch divided by its own kernel's response "
-            "to each, so that a stretch without a change of volume leaves the density alone where the surface "
-            "cuts the kernel",
+     .doc = "each ring's density rate from the radial and from the axial stretch scaled to the mean of its own "
+            "kernel's responses to the two, so that a stretch without a change of volume leaves the density alone "
+            "where the surface cuts the kernel",
      .legacy = "(none)", .hand = kRead, .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),

@@ -242,8 +242,8 @@ struct SimParams {
     // Rings too heavy for their radius split in two after each step (case key
     // domain.split_axis_rings; rings pair only; Solver::split_heavy_rings).
     bool split_axis_rings = false;
-    // Its continuity renormalised along r and z (case key domain.renormalise_ring_continuity;
-    // rings pair only; fortran_core/loops/axisymmetric_loops.f90).
+    // The rings pair's continuity renormalised along r and z (case key
+    // domain.renormalise_ring_continuity; fortran_core/loops/axisymmetric_loops.f90).
     bool renormalise_ring_continuity = false;
     // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
