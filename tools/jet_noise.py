@@ -411,7 +411,9 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
     prof = (noise_along(run, c["z0"], d0, p_unit, t0, jet, c["dx"] if c["round"] else None, u0, t1)
             if sig > 0 else None)
     if prof:
-        quiet = next((s0 for s0, v, _o, _r, _i in prof if v > 0.25), prof[-1][0] + 2.0)
+        def quiet_to(slices):   # the first 2 d0 slice above sigma/(4a), or past the last one
+            return next((s0 for s0, v in slices if v > 0.25), slices[-1][0] + 2.0)
+        quiet = quiet_to([(s0, v) for s0, v, _o, _r, _i in prof])
         print("pressure std / (sigma/a) along the intact jet (2 d0 slices, median over snapshots): "
               + ", ".join(f"{s0:.0f}:{v:.3g}" for s0, v, _o, _r, _i in prof))
         orders = [(s0, o) for s0, _v, o, _r, _i in prof if o is not None]
@@ -438,7 +440,7 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
         summary.update({"quiet_to_over_d0": quiet, "noisy_reach_over_d0": l_mean - quiet})
         in_rows = [(s0, i) for s0, _v, _o, _r, i in prof if i is not None]
         if in_rows:
-            quiet_in = next((s0 for s0, i in in_rows if i > 0.25), in_rows[-1][0] + 2.0)
+            quiet_in = quiet_to(in_rows)
             print("pressure std about the rows' means / (sigma/a) along the intact jet (the rows' pattern taken "
                   "out): " + ", ".join(f"{s0:.0f}:{i:.3g}" for s0, i in in_rows))
             print(f"quiet about the rows' means to s = {quiet_in:.0f} d0, {l_mean - quiet_in:.1f} d0 above the "

@@ -36,9 +36,10 @@ module axisymmetric_loops
   !> The rate so scaled is not the pressure force's adjoint, and in fragments and drops it fed
   !> their motion until the density check stopped the falling jets of the round-jet study's
   !> case (d0/dx 10, gravity): whole at every ring with factors up to 2, the 0.78 m/s jet
-  !> started as a column at 43 ms; faded below RESPONSE_WHOLE, at 47 ms (its start-up head) and the 0.58 m/s one at
-  !> 87 ms; with factors within 1.25, the 0.58 m/s one at 78 ms (a ring next to the axis in a
-  !> drop); with none within h/2 of the axis too (renormalised_rate), both ran to 250 ms.
+  !> started as a column at 43 ms; faded below RESPONSE_WHOLE, at 47 ms (its start-up head)
+  !> and the 0.58 m/s one at 87 ms; with factors within 1.25, the 0.58 m/s one at 78 ms (a ring
+  !> next to the axis in a drop); with none within h/2 of the axis too (renormalised_rate),
+  !> both ran to 250 ms.
   real(rp), parameter :: RESPONSE_WHOLE = 0.5_rp, RESPONSE_NONE = 0.35_rp, FACTOR_MAX = 1.25_rp
 
   !> The ring kernel's derivative tables per kernel kind, side by side (ring_kernel_tables),
@@ -246,7 +247,7 @@ contains
     logical, intent(in) :: renorm
     real(rp), intent(inout) :: cz(*), mr(*), mz(*)
     integer :: k, a, b
-    real(rp) :: q, t, fs, fp, dra, drb, dzz, qz, qr
+    real(rp) :: q, t, fs, fp, dra, drb, dzz, qz, qr, qm
     real(rp), allocatable :: fsk(:), fpk(:)   ! on the heap: a row's pair list may be long
     ! The kernel's derivatives first, in a loop of their own: each reads a cell of the 1 MB
     ! table at a place no earlier pair predicts, and a short loop keeps many of those reads in
@@ -275,12 +276,12 @@ contains
           qz = (w(a) - w(b)) * dzz
           cz(a) = cz(a) + m(b) * qz
           cz(b) = cz(b) + m(a) * qz
-          qr = x(a) * dra + x(b) * drb
+          qr = x(a) * dra + x(b) * drb   ! q with u = r, w = 0
           mr(a) = mr(a) + m(b) * qr
           mr(b) = mr(b) + m(a) * qr
-          qz = dz(k) * dzz
-          mz(a) = mz(a) + m(b) * qz
-          mz(b) = mz(b) + m(a) * qz
+          qm = dz(k) * dzz               ! q with u = 0, w = z
+          mz(a) = mz(a) + m(b) * qm
+          mz(b) = mz(b) + m(a) * qm
         end if
         t = pg(a) + pg(b)
         pax(a) = pax(a) - m(b) * t * dra

@@ -187,6 +187,19 @@ def check_to(d):
     return failures
 
 
+def write_lattice(d, radius, pressure):
+    """A synthetic run in d whose three snapshots hold the nozzle's five-row lattice (rings at
+    (j + 1/2) dx, dz = dx, s = 0.05-11.95 d0) moving down at u0: radius(s) scales it,
+    pressure(s, j) sets each ring's p."""
+    import numpy as np
+    write_run(d)
+    s = np.repeat(np.arange(0.05, 12.0, 0.1), 5)
+    j = np.tile(np.arange(5), len(s) // 5)
+    for n in range(3):
+        write_snapshot(d, n, 0.01 + 100 * n * 1e-4, s, (j + 0.5) * DX * radius(s), np.full(len(s), -U0),
+                       pressure(s, j))
+
+
 def check_rows():
     """--rows on a five-row lattice (the nozzle's rings at (j + 1/2) dx, dz = dx) that thins to 0.9 of
     its radius from s = 6 d0 on, each row's pressure (1 + j/10) sigma/a_s (a_s the local radius):
@@ -196,13 +209,9 @@ def check_rows():
     import numpy as np
     failures = []
     with tempfile.TemporaryDirectory() as d:
-        write_run(d)
-        s = np.repeat(np.arange(0.05, 12.0, 0.1), 5)
-        j = np.tile(np.arange(5), len(s) // 5)
-        f = np.where(s < 6.0, 1.0, 0.9)
-        for n in range(3):
-            write_snapshot(d, n, 0.01 + 100 * n * 1e-4, s, (j + 0.5) * DX * f, np.full(len(s), -U0),
-                           (1 + 0.1 * j) * SIGMA / (A * f))
+        def f(s):
+            return np.where(s < 6.0, 1.0, 0.9)
+        write_lattice(d, f, lambda s, j: (1 + 0.1 * j) * SIGMA / (A * f(s)))
         out = subprocess.run([PY, TOOL, d, "--from", "0", "--rows"], capture_output=True, text=True)
         got = re.findall(r"^rows at s = (\d+)-\d+ d0: a_s/a = ([0-9.]+), .*?out: (.*); mean r / \(a_s/n\): (.*)$",
                          out.stdout, re.M)
@@ -223,13 +232,10 @@ def check_rows_noise():
     import numpy as np
     failures = []
     with tempfile.TemporaryDirectory() as d:
-        write_run(d)
-        s = np.repeat(np.arange(0.05, 12.0, 0.1), 5)
-        j = np.tile(np.arange(5), len(s) // 5)
-        along = np.where(np.arange(len(s)) // 5 % 2 == 0, 1.0, -1.0)   # alternating along each row
-        p = (1 + 0.4 * np.where(j % 2 == 0, 1.0, -1.0) + np.where(s >= 8.0, 0.5 * along, 0.0)) * SIGMA / A
-        for n in range(3):
-            write_snapshot(d, n, 0.01 + 100 * n * 1e-4, s, (j + 0.5) * DX, np.full(len(s), -U0), p)
+        def p(s, j):
+            along = np.where(np.arange(len(s)) // 5 % 2 == 0, 1.0, -1.0)   # alternating along each row
+            return (1 + 0.4 * np.where(j % 2 == 0, 1.0, -1.0) + np.where(s >= 8.0, 0.5 * along, 0.0)) * SIGMA / A
+        write_lattice(d, lambda s: 1.0, p)
         out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
         val = summary(out.stdout) or {}
         if val.get("quiet_to_over_d0") != 0.0:

@@ -33,7 +33,7 @@ constexpr double kDx = 1e-4, kRho0 = 1000;
 struct Column {
     CoreParticles ps;
     sph_params_t prm;
-    double dr, dz, k;
+    double dz, k;
 };
 
 // The column with radial spacing s dx and axial dx / s^2 (each ring's meridian area dx^2 / s, as
@@ -42,7 +42,7 @@ struct Column {
 template <class Field>
 Column column(double s, bool renormalise, Field field, double drho = 0) {
     Column c;
-    c.dr = s * kDx;
+    const double dr = s * kDx;
     c.dz = kDx / (s * s);
     c.k = 2 * std::numbers::pi / (kNz * c.dz);
     auto& p = c.prm;
@@ -56,15 +56,15 @@ Column column(double s, bool renormalise, Field field, double drho = 0) {
     p.geometry.kind = 1;
     p.geometry.axis_pair = 1;
     p.geometry.periodic_z = 1;
-    p.geometry.axis_m1 = 2 * std::numbers::pi * kRho0 * c.dr * c.dr * c.dz;
+    p.geometry.axis_m1 = 2 * std::numbers::pi * kRho0 * dr * dr * c.dz;
     p.geometry.renormalise_continuity = renormalise ? 1 : 0;
     p.domain.zmin = 0;
     p.domain.zmax = kNz * c.dz;
     for (int i = 0; i < kRows; ++i)
         for (int j = 0; j < kNz; ++j) {
-            const double r = (i + 0.5) * c.dr, z = (j + 0.5) * c.dz;
+            const double r = (i + 0.5) * dr, z = (j + 0.5) * c.dz;
             const auto [u, w] = field(r, z, c.k);
-            c.ps.add(r, z, u, w, kRho0 * (1 + drho * i), 2 * std::numbers::pi * r * kRho0 * c.dr * c.dz, 2);
+            c.ps.add(r, z, u, w, kRho0 * (1 + drho * i), 2 * std::numbers::pi * r * kRho0 * dr * c.dz, 2);
         }
     sphjet_test::compute_rates(c.ps, c.prm);
     return c;
