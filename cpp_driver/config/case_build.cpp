@@ -312,22 +312,19 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
                              "resolution.h_over_dx >= 2 with domain.axis_pair = \"rings\"",
                              "h = " + num(p.h / p.dx) + " dx");
     }
-    if (auto f = dom.boolean("split_axis_rings")) {
-        if (f->value && p.axis_pair != AxisPair::Rings)
-            throw InputError(ctx.where(dom.key_path("split_axis_rings")),
-                             "domain.split_axis_rings splits the rings of the rings pair",
-                             "domain.axis_pair = \"rings\" with domain.split_axis_rings = true",
-                             "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
-        p.split_axis_rings = f->value;
-    }
-    if (auto f = dom.boolean("renormalise_ring_continuity")) {
-        if (f->value && p.axis_pair != AxisPair::Rings)
-            throw InputError(ctx.where(dom.key_path("renormalise_ring_continuity")),
-                             "domain.renormalise_ring_continuity renormalises the rings pair's continuity",
-                             "domain.axis_pair = \"rings\" with domain.renormalise_ring_continuity = true",
-                             "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
-        p.renormalise_ring_continuity = f->value;
-    }
+    // the rings pair's own switches: true is refused with any other pair
+    auto rings_switch = [&](const char* key, const std::string& what, bool& member) {
+        if (auto f = dom.boolean(key)) {
+            if (f->value && p.axis_pair != AxisPair::Rings)
+                throw InputError(ctx.where(dom.key_path(key)), "domain." + std::string(key) + " " + what,
+                                 "domain.axis_pair = \"rings\" with domain." + std::string(key) + " = true",
+                                 "domain.axis_pair = \"" + to_string(p.axis_pair) + "\"");
+            member = f->value;
+        }
+    };
+    rings_switch("split_axis_rings", "splits the rings of the rings pair", p.split_axis_rings);
+    rings_switch("renormalise_ring_continuity", "renormalises the rings pair's continuity",
+                 p.renormalise_ring_continuity);
     // after [domain]: the key belongs to the rings pair's pressure-consistent CSF
     const Section st = top.sub("surface_tension");
     if (auto f = st.string("rings_curvature")) {
