@@ -146,20 +146,52 @@ void JetMonitor::neck(const std::vector<double>& s, const std::vector<double>& l
     if (!(end > 0)) return;
     const auto slices = static_cast<std::size_t>(std::floor(end / ds_)) + 1;
     std::vector<double> reach(slices, -1.0);  // largest |l| per slice; < 0: none there
+    std::vector<double> at(slices, 0.0);      // s of that particle
     for (std::size_t k = 0; k < s.size(); ++k) {
         if (labels[k] != jet || s[k] > end) continue;
         const auto i = static_cast<std::size_t>(s[k] / ds_);
-        reach[i] = std::max(reach[i], l[k]);
+        if (l[k] > reach[i]) reach[i] = l[k], at[i] = s[k];
     }
-    // The surface profile: the largest reach over the slice and its two neighbours. A slice one
-    // spacing wide holds one row of rings or two, or none of the outer ring's when the rows are
-    // a little stretched (the radius then reads one ring short); three slices always hold one.
+    // The surface profile: the straight lines through the slices' widest rings, read at the
+    // slices' centres. A slice one spacing wide holds one row of rings or two, or none of the
+    // outer ring's when the rows are a little stretched: its widest ring is then an inner one,
+    // a ring spacing below the line through its neighbours, and is passed over (below the line
+    // by more than half a spacing, again until none is: a surface bends that much between two
+    // rings only where it pinches on the particles' scale). Through the rings themselves the
+    // profile of a tapering jet is smooth; a largest radius per slice would step by the taper
+    // over a spacing as the rows move through the slices, and read that as a disturbance.
+    std::vector<std::size_t> keep;
+    for (std::size_t i = 0; i < slices; ++i)
+        if (reach[i] >= 0) keep.push_back(i);
+    for (bool dropped = true; dropped && keep.size() > 2;) {
+        dropped = false;
+        std::vector<std::size_t> kept{keep.front()};
+        for (std::size_t j = 1; j + 1 < keep.size(); ++j) {
+            const std::size_t a = kept.back(), i = keep[j], b = keep[j + 1];  // at[a] < at[i] < at[b]
+            const double line = reach[a] + (reach[b] - reach[a]) * (at[i] - at[a]) / (at[b] - at[a]);
+            if (reach[i] < line - 0.5 * ds_) {
+                dropped = true;
+                continue;
+            }
+            kept.push_back(i);
+        }
+        kept.push_back(keep.back());
+        keep = std::move(kept);
+    }
     r.surface.assign(slices, std::numeric_limits<double>::quiet_NaN());
+    std::size_t j = 0;  // keep[j] is the last kept slice at or before the centre
     for (std::size_t i = 0; i < slices; ++i) {
-        double widest = reach[i];
-        if (i > 0) widest = std::max(widest, reach[i - 1]);
-        if (i + 1 < slices) widest = std::max(widest, reach[i + 1]);
-        if (widest >= 0) r.surface[i] = widest + 0.5 * ds_;
+        const bool near = reach[i] >= 0 || (i > 0 && reach[i - 1] >= 0) || (i + 1 < slices && reach[i + 1] >= 0);
+        if (!near || keep.empty()) continue;  // a gap the link bridged across
+        const double c = (static_cast<double>(i) + 0.5) * ds_;
+        while (j + 1 < keep.size() && at[keep[j + 1]] <= c) ++j;
+        const std::size_t a = keep[j];
+        double widest = reach[a];
+        if (at[a] <= c && j + 1 < keep.size()) {
+            const std::size_t b = keep[j + 1];
+            widest += (reach[b] - reach[a]) * (c - at[a]) / (at[b] - at[a]);
+        }
+        r.surface[i] = widest + 0.5 * ds_;
     }
     for (std::size_t i = 0; i < slices; ++i) {
         if (reach[i] < 0) continue;  // an empty slice: a gap the link bridged across

@@ -30,9 +30,9 @@
 //     |l| of its particles plus ds / 2 (the particle's half-spacing: the plug gives d0 / 2
 //     at the orifice). The neck is the thinnest slice: its radius and where it is. The
 //     surface profile r_s(s), from which the disturbance's growth along the jet is read
-//     (tools/jet_noise.py), takes per slice the largest |l| over it and its two neighbours,
-//     plus ds / 2: a single slice misses the outer ring wherever the rows are a little
-//     stretched and would read one ring short.
+//     (tools/jet_noise.py), is the straight lines through the slices' widest rings, read at
+//     the slices' centres, plus ds / 2; a slice whose widest ring lies more than ds / 2 below
+//     the line through its neighbours holds no outer ring (stretched rows) and is passed over.
 //   - exit noise: over the jet's own particles within 2 d0 of the orifice (0 <= s < 2 d0),
 //     the mean and standard deviation of the pressure and the rms of the velocity across the
 //     axis (radial for a round jet). A quiet jet holds p = sigma/a there (round; a = d0/2)

@@ -404,7 +404,7 @@ TEST(JetMonitor, RoundJetFluxDropsAndNeck) {
 
 // The disturbance record of a round jet: a column of 5 rings whose surface ring sits at
 // r_s(s) = a + A sin(k s) (the other rings on the lattice) gives that radius, plus half a
-// spacing, in the surface profile (the largest over three slices; to round-off), and the exit noise is the
+// spacing, in the surface profile (the line through the outer rings; to round-off), and the exit noise is the
 // mean and spread of the pressures put within 2 d0 of the orifice (alternating p0 +- dp:
 // mean p0, standard deviation dp) and the rms of the radial velocities there.
 TEST(JetMonitor, RoundJetSurfaceProfileAndExitNoise) {
@@ -428,15 +428,14 @@ TEST(JetMonitor, RoundJetSurfaceProfileAndExitNoise) {
     ASSERT_FALSE(r.length);
     // the profile runs to one d0 short of the tip (0.0495 - 0.01)
     ASSERT_EQ(r.surface.size(), 40u);
-    // slice i reads the largest ring radius of rows i - 1 ... i + 1 (row n has s = (n + 1/2) ds),
-    // also at row 25, built without its outer ring (a stretched row: that slice alone holds no
-    // outer ring); the neck is the thinnest single slice: row 25, one ring short
+    // slice i reads the outer ring of row i (row n has s = (n + 1/2) ds, the slice's centre);
+    // row 25, built without its outer ring (a stretched row: that slice holds no outer ring),
+    // reads the line through its neighbours' outer rings; the neck is the thinnest single
+    // slice: row 25, one ring short
     const auto outer = [&](int n) { return 4.5 * dl + amp * std::sin(k * (n + 0.5) * ds); };
     for (int i = 0; i < static_cast<int>(r.surface.size()); ++i) {
-        double widest = 0;
-        for (int n = std::max(i - 1, 0); n <= std::min(i + 1, 39); ++n)
-            if (n != 25) widest = std::max(widest, outer(n));
-        EXPECT_NEAR(r.surface[static_cast<std::size_t>(i)], widest + 0.5 * ds, 1e-12) << "slice " << i;
+        const double want = i == 25 ? 0.5 * (outer(24) + outer(26)) : outer(i);
+        EXPECT_NEAR(r.surface[static_cast<std::size_t>(i)], want + 0.5 * ds, 1e-12) << "slice " << i;
     }
     ASSERT_TRUE(r.neck_r);
     EXPECT_NEAR(*r.neck_r, 4.0 * dl, 1e-12);
@@ -450,6 +449,45 @@ TEST(JetMonitor, RoundJetSurfaceProfileAndExitNoise) {
     EXPECT_EQ(rows.rfind("0.1,7,0.05,", 0), 0u) << rows.substr(0, 40);
     const std::string row = jet_csv_row(r, nz.d0);
     EXPECT_NE(row.find(",100,120,30,0.01"), std::string::npos) << row;
+}
+
+// A tapering jet (a falling one thins as it speeds up): rows 1.37 slice widths apart, each of
+// 5 rings whose outer ring sits at r = a (1 - s / (40 d0)). The surface profile is that straight
+// line at every slice centre, plus half a spacing, to round-off. The largest ring over a slice
+// and its neighbours (this profile's former rule) reads the taper of up to 1.5 slice widths
+// above the line (here 3.7e-3 of the radius), changing as the rows move through the slices,
+// and a disturbance envelope read that as noise.
+TEST(JetMonitor, TaperingJetSurfaceProfileIsTheLine) {
+    NozzleSpec nz = down_nozzle();
+    nz.x0 = 0.0;
+    const double ds = 0.001, dl = 0.001, dz = 1.37 * ds, rho = 1000, h = 0.002;
+    const auto outer = [&](double s) { return 4.5 * dl * (1.0 - s / (40.0 * nz.d0)); };
+    ParticleSet ps;
+    for (double s = 0.3 * dz; s < 0.06; s += dz)
+        for (int j = 0; j < 5; ++j) {
+            const double r = j == 4 ? outer(s) : (j + 0.5) * dl * outer(s) / (4.5 * dl);
+            ps.push(r, 0.4 - s, 0.0, -nz.u0, rho, 0.0, rho * 2 * std::numbers::pi * r * dl * dz, ParticleKind::Fluid);
+        }
+    JetMonitor mon(nz, BreakupSpec{}, h, rho, ds, true);
+    mon.start(ps, 0.0);
+    const JetSample r = mon.sample(ps, 0.1, 7);
+    ASSERT_GT(r.surface.size(), 40u);
+    // the rows the profile takes: up to one d0 short of the tip
+    double first = 0.3 * dz, last = first, tip = first;
+    for (double s = first; s < 0.06; s += dz) tip = s;
+    for (double s = first; s <= tip - nz.d0; s += dz) last = s;
+    double stepped = 0;
+    for (std::size_t i = 0; i < r.surface.size(); ++i) {
+        const double c = (static_cast<double>(i) + 0.5) * ds;
+        if (c < first || c > last) continue;  // beyond the end rows the profile holds their rings
+        EXPECT_NEAR(r.surface[i], outer(c) + 0.5 * ds, 1e-12) << "slice " << i;
+        // the former rule: the largest outer ring over slices i - 1 ... i + 1
+        double widest = 0;
+        for (double s = 0.3 * dz; s < 0.06; s += dz)
+            if (s >= (static_cast<double>(i) - 1) * ds && s < (static_cast<double>(i) + 2) * ds) widest = std::max(widest, outer(s));
+        stepped = std::max(stepped, std::abs(widest - outer(c)));
+    }
+    EXPECT_GT(stepped, 1.4 * 4.5 * dl * ds / (40.0 * nz.d0));  // the former rule: 1.5 slices' taper (1.499 here)
 }
 
 TEST(JetGroups, Eq37ReproducesTable1) {
