@@ -86,6 +86,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.nozzle.profile_k = p.drive_profile_k;
     c.nozzle.profile_lmax = p.drive_profile_lmax;
     c.nozzle.profile_rho = p.drive_profile_rho;
+    c.nozzle.release = p.drive_release_crossing ? 1 : 0;
 
     c.geometry.kind = static_cast<int>(p.geometry);
     c.geometry.periodic_z = p.periodic_z ? 1 : 0;

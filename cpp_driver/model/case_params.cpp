@@ -402,6 +402,14 @@ const Param kParams[] = {
             "refilling on its own and the plug holding its built density; measured louder than the plug at d0/dx 10 "
             "(cases/round_jet/README.md)",
      .legacy = "(none)", .echo = "exit profile: {choices}"},
+    {.key = "nozzle.release", .type = K::String, .member = member<&NozzleSpec::release>(),
+     .choices = names<NozzleRelease>(), .def = "`\"step\"`",
+     .doc = "when a plug particle turns free: step, at the first step that starts past the orifice (it leaves the "
+            "step it crossed in with the plug's velocity), or crossing, at the orifice (it leaves that step with "
+            "its acceleration over the part of the step it spent past the orifice added); with step, the rows "
+            "leave a jet that accelerates (gravity) with velocities jittered by the step's length; measured "
+            "quieter at the exit with crossing (cases/round_jet/README.md)",
+     .legacy = "(none)", .echo = "release: {choices}"},
     {.key = "nozzle.column_over_d0", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::column_over_d0>(),
      .range = kNonNegative, .def = "0 (none)", .allowed = "the column inside the box",
      .doc = "a jet already out at the start: a column of the plug's rows this long / D0 past the orifice, moving "
@@ -528,6 +536,8 @@ const Param kParams[] = {
      .doc = "the plug's outer line's distance from the axis; fluid farther out moves with it", .h5_optional = true},
     {.attr = "drive_profile_rho", .unit = "kg/m^3", .member = member<&SimParams::drive_profile_rho>(),
      .doc = "the density a profiled plug holds (the plug's as built)", .h5_optional = true},
+    {.attr = "drive_release_crossing", .member = member<&SimParams::drive_release_crossing>(),
+     .doc = "nozzle.release = \"crossing\"", .h5_optional = true},
     {.attr = "drive_eps", .unit = "1", .member = member<&SimParams::drive_eps>(), .doc = "nozzle.disturbance",
      .h5_optional = true},
     {.attr = "drive_omega", .unit = "rad/s", .member = member<&SimParams::drive_omega>(),

@@ -37,6 +37,9 @@ enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 // The driven nozzle's exit profile (NozzleSpec::profile): a rigid plug at u0, or a tube's fully
 // developed laminar flow, parabolic across it with the plug's flux (SimParams::drive_profile_a).
 enum class NozzleProfile : int { Plug = 0, Parabolic = 1 };
+// When a plug particle turns free (NozzleSpec::release): at the first step that starts past the
+// orifice, or at its crossing (SimParams::drive_release_crossing).
+enum class NozzleRelease : int { Step = 0, Crossing = 1 };
 // Whose unit normals enter the free-surface curvature's sums (core:
 // sph_params_t::surface_tension.curvature_normals; surface_tension.delta = "pressure_consistent"):
 // every particle that passes the normal filter (the default), or only those within h of the surface
@@ -113,6 +116,11 @@ template <>
 struct EnumNames<NozzleProfile> {
     static constexpr NameTable<NozzleProfile, 2> list{
         {{"plug", NozzleProfile::Plug}, {"parabolic", NozzleProfile::Parabolic}}};
+};
+template <>
+struct EnumNames<NozzleRelease> {
+    static constexpr NameTable<NozzleRelease, 2> list{
+        {{"step", NozzleRelease::Step}, {"crossing", NozzleRelease::Crossing}}};
 };
 template <>
 struct EnumNames<CurvatureNormals> {
@@ -226,6 +234,10 @@ struct SimParams {
     double drive_profile_k = 0.0;             // [1]
     double drive_profile_lmax = 0.0;          // [m]
     double drive_profile_rho = 0.0;           // [kg/m^3]
+    // A plug particle whose step carries it past the orifice leaves the step with the plug's
+    // velocity plus its acceleration (rates and gravity) over the part of the step it spent past
+    // the orifice (NozzleSpec::release = crossing). false: with the plug's velocity.
+    bool drive_release_crossing = false;
     // The plug speed may carry an imposed disturbance (NozzleSpec::disturbance): over the step
     // that starts at time t it is drive_u (1 + drive_eps sin(drive_omega t)).
     double drive_eps = 0.0;                   // relative amplitude

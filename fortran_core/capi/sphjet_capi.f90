@@ -111,7 +111,7 @@ contains
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
       .and. prm%numerics%shifting >= 0.0_rp &
-      .and. prm%nozzle%profile_a >= 0.0_rp &
+      .and. prm%nozzle%profile_a >= 0.0_rp .and. any(prm%nozzle%release == [0, 1]) &
       .and. any(prm%viscosity%reconstruct == [0, 1]) &
       .and. any(prm%numerics%integrator == [INTEGRATOR_PC, INTEGRATOR_LEAPFROG])
     ! shifting's velocity is set by the surface tension's passes (surface_tension_loops.f90)

@@ -102,6 +102,7 @@ typedef struct sph_nozzle_t {
     double profile_k;         /* its centre speed / u (the lattice's flux equals u's) */
     double profile_lmax;      /* the outer line's distance: farther fluid moves with it [m] */
     double profile_rho;       /* the density a profiled plug holds [kg/m^3] */
+    int release;              /* 1: a plug particle turns free at its crossing of the orifice line */
 } sph_nozzle_t;
 
 typedef struct sph_geometry_t {

@@ -133,7 +133,7 @@ contains
     st%w(i) = st%wo(i) + dt2 * (st%az(i) + prm%gravity%gz)
     st%rho(i) = st%rhoo(i) + dt2 * st%ar(i)
     if (prm%nozzle%u > 0.0_rp) then
-      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) call plug_step(prm, st, i, dt)
+      if (in_driven_nozzle(prm, st%xo(i), st%zo(i))) call plug_step(prm, st, i, dt, dt)
     end if
     call eos_one(prm, st, i)
   end subroutine half_kick

@@ -216,7 +216,7 @@ contains
         if (prm%nozzle%u > 0.0_rp) then
           do j = j0, j1
             if (moving_fluid(st, j)) then
-              if (in_driven_nozzle(prm, st%xo(j), st%zo(j))) call plug_step(prm, st, j, dt2)
+              if (in_driven_nozzle(prm, st%xo(j), st%zo(j))) call plug_step(prm, st, j, dt2, merge(2.0_rp * dt2, dt2, which == CORRECT))
             end if
           end do
         end if

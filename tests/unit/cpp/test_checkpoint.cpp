@@ -123,6 +123,7 @@ SimParams unusual_params() {
     p.drive_half_width = 0.005 + 1e-3 / 7.0;
     p.drive_eps = 0.01 / 3.0;
     p.drive_omega = 2000.0 / 7.0;
+    p.drive_release_crossing = true;  // not the default
     p.domain_box = true;
     p.geometry = Geometry::Axisymmetric;  // not the default
     p.periodic_z = true;
@@ -181,6 +182,7 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
     }
     EXPECT_EQ(a.variable_dt, b.variable_dt);
     EXPECT_EQ(a.st_delta, b.st_delta);
+    EXPECT_EQ(a.drive_release_crossing, b.drive_release_crossing);
     EXPECT_EQ(a.domain_box, b.domain_box);
     EXPECT_EQ(a.geometry, b.geometry);
     EXPECT_EQ(a.periodic_z, b.periodic_z);
@@ -418,6 +420,9 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
                                               "drive_half_width", "drive_eps", "drive_omega", "domain_box"});
     const SimParams pre_jet = read_checkpoint(dir).params;
     EXPECT_EQ(pre_jet.drive_u, 0.0);
+    // and a file from before nozzle.release: the step's release
+    write_sample_without(dir, "/parameters", {"drive_release_crossing"});
+    EXPECT_FALSE(read_checkpoint(dir).params.drive_release_crossing);
     EXPECT_FALSE(pre_jet.domain_box);
 
     // And the axisymmetric pair: without it, the smoothed-radius pair (the only one before).

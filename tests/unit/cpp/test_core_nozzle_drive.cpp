@@ -27,11 +27,12 @@ struct Block {
 // 6 x 10 particles, dx = 1 mm, centred on x = 0; the orifice line at z = 0, axis down:
 // rows at z = +0.5 .. +4.5 mm are in the nozzle, rows at -0.5 .. -4.5 mm past it. A seventh
 // column at x = 5 mm lies beside the strip (half-width 3.25 mm).
-Block block(double u0, double w_entering) {
+// z_shift moves every row (a plug row just upstream of the orifice line with z_shift < 0).
+Block block(double u0, double w_entering, double z_shift = 0.0) {
     Block b;
     const double dx = 0.001;
     for (int k = 0; k < 10; ++k) {
-        const double z = (k - 4.5) * dx;
+        const double z = (k - 4.5) * dx + z_shift;
         for (int j = 0; j < 7; ++j) {
             const double x = j < 6 ? (j - 2.5) * dx : 0.005;
             const bool strip = z > 0 && j < 6;
@@ -104,6 +105,41 @@ TEST(CoreNozzleDrive, NoDriveWhenUIsZero) {
                 b.ps.w[resting], b.ps.w[moving] + 0.25);
     EXPECT_NEAR(b.ps.w[resting], 0.0, 1e-2);
     EXPECT_NEAR(b.ps.w[moving], -0.25, 3e-3);
+}
+
+// nozzle.release = "crossing" (release = 1): the plug's last row starts the step 1 um upstream of
+// the orifice line and the plug carries it 2.5 um, so it spends t_out = 1.5 um / u0 = 6 us of the
+// 10 us step past the line and leaves the step with -u0 plus t_out times its acceleration (its
+// rates after the step, which are the ones the step's last stage used, and gravity), to
+// round-off; the rows that stay upstream keep -u0 exactly. With release = 0 the crossing row
+// leaves with -u0. Both integrators.
+TEST(CoreNozzleDrive, ReleaseAtTheCrossingAddsTheTimePastTheLine) {
+    const double u0 = 0.25, dt = 1e-5, t_out = 1.5e-6 / u0;
+    for (const int integrator : {1, 2}) {
+        for (const int release : {0, 1}) {
+            Block b = block(u0, -u0, -0.0005 + 1e-6);
+            auto prm = drive_params(u0);
+            prm.numerics.integrator = integrator;
+            prm.nozzle.release = release;
+            ASSERT_NO_FATAL_FAILURE(step_block(b, prm, dt));
+            int crossed = 0;
+            for (std::size_t i = 0; i < b.ps.x.size(); ++i) {
+                if (!b.in_strip[i]) continue;
+                const bool crossing = std::abs(b.ps.z[i] + 1.5e-6) < 1e-12;  // the last row, now past the line
+                if (crossing && release == 1) {
+                    ++crossed;
+                    EXPECT_NEAR(b.ps.w[i], -u0 + t_out * (b.ps.az[i] + prm.gravity.gz), 1e-14) << i;
+                    EXPECT_NEAR(b.ps.u[i], t_out * (b.ps.ax[i] + prm.gravity.gx), 1e-14) << i;
+                    EXPECT_GT(std::abs(b.ps.w[i] + u0), 1e-5) << i;  // the release is seen: gravity's part 6e-5
+                } else {
+                    crossed += crossing ? 1 : 0;
+                    EXPECT_NEAR(b.ps.w[i], -u0, 1e-15) << i << " integrator " << integrator;
+                    EXPECT_EQ(b.ps.u[i], 0.0) << i;
+                }
+            }
+            EXPECT_EQ(crossed, 6) << "integrator " << integrator << ", release " << release;
+        }
+    }
 }
 
 // A parabolic profile (profile_a > 0): a driven particle at distance l from the axis moves at

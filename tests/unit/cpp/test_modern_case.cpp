@@ -667,6 +667,8 @@ const BadCase kBad[] = {
      {"nozzle.column_over_d0", "must not be negative", "found -1"}},
     {"NozzleUnknownAxis", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\naxis = \"sideways\"\nd0 = 0.02\nu0 = 0.25\n",
      {"nozzle.axis", "unknown value", "\"down\""}},
+    {"NozzleUnknownRelease", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\nrelease = \"early\"\n",
+     {"nozzle.release", "unknown value", "\"crossing\"", "early"}},
     {"BreakupWithoutNozzle", "", "[breakup]\nstop_after = 0.1\n", {"breakup", "needs a jet", "[nozzle]"}},
     {"BreakupLinkZero", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n[breakup]\nlink_over_h = 0\n",
      {"breakup.link_over_h", "must be positive"}},
@@ -797,7 +799,13 @@ TEST(ModernCaseRoundTrip, Jet) {
     EXPECT_TRUE(s.params.domain_box);
     EXPECT_EQ(s.breakup->band_over_d0, 0.4);
     EXPECT_EQ(s.breakup->remove_drops_below_h, 2.0);
+    EXPECT_FALSE(s.params.drive_release_crossing);  // nozzle.release = "step" by default
     expect_round_trip(s);
+    // nozzle.release = "crossing" reaches the core's parameters and is written back.
+    const CaseSpec c = parse_modern_case(std::string(kMinimal) + jet, "jet.toml", {"nozzle.release=\"crossing\""});
+    EXPECT_EQ(c.nozzle->release, NozzleRelease::Crossing);
+    EXPECT_TRUE(c.params.drive_release_crossing);
+    expect_round_trip(c);
     // Axis "right" and the defaults of [breakup] (none given).
     const CaseSpec r = parse_modern_case(
         std::string(kMinimal) + "[nozzle]\nx0 = 0.2\nz0 = 0.3\naxis = \"right\"\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.1\n",
