@@ -42,12 +42,12 @@ contains
   !> With nozzle%release = 1 a particle that the plug carries past the orifice line turns free
   !> there: t_end is the time from the step's start to the state these values stand for (the
   !> leapfrog's dt, the predictor's dt/2, the corrector's dt, which its extrapolation reaches),
-  !> t_out = s_end / |u_plug| of it was spent past the line (s_end the particle's distance past
-  !> it at t_end), and u = u_plug + t_out (a + g) with the current rates. Otherwise every row
-  !> leaves with u_plug from a step that ends anywhere up to dt past its crossing: behind a jet
-  !> that accelerates (gravity), rows whose velocities lag by a jitter of up to dt a. Its
-  !> position keeps r^n + dt2 u_plug: the free motion's t_out^2 a / 2 is a millionth of a
-  !> spacing at the jets' steps.
+  !> t_out = s_end / speed of it was spent past the line (s_end the particle's distance past it
+  !> at t_end, speed the plug's there), and u = u_plug + t_out (a + g) with the current rates.
+  !> Otherwise every row leaves with u_plug from a step that ends anywhere up to dt past its
+  !> crossing: behind a jet that accelerates (gravity), rows whose velocities lag by a jitter
+  !> of up to dt a. Its position keeps r^n + dt2 u_plug: the free motion's t_out^2 a / 2 is a
+  !> millionth of a spacing at the jets' steps.
   subroutine plug_step(prm, st, i, dt2, t_end)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
