@@ -182,7 +182,7 @@ void JetMonitor::neck(const std::vector<double>& s, const std::vector<double>& l
     std::size_t j = 0;  // keep[j] is the last kept slice at or before the centre
     for (std::size_t i = 0; i < slices; ++i) {
         const bool near = reach[i] >= 0 || (i > 0 && reach[i - 1] >= 0) || (i + 1 < slices && reach[i + 1] >= 0);
-        if (!near || keep.empty()) continue;  // a gap the link bridged across
+        if (!near) continue;  // a gap the link bridged across (else a ring nearby was kept)
         const double c = (static_cast<double>(i) + 0.5) * ds_;
         while (j + 1 < keep.size() && at[keep[j + 1]] <= c) ++j;
         const std::size_t a = keep[j];

@@ -404,11 +404,9 @@ const Param kParams[] = {
      .legacy = "(none)", .echo = "exit profile: {choices}"},
     {.key = "nozzle.release", .type = K::String, .member = member<&NozzleSpec::release>(),
      .choices = names<NozzleRelease>(), .def = "`\"step\"`",
-     .doc = "when a plug particle turns free: step, at the first step that starts past the orifice (it leaves the "
-            "step it crossed in with the plug's velocity), or crossing, at the orifice (it leaves that step with "
-            "its acceleration over the part of the step it spent past the orifice added); with step, the rows "
-            "leave a jet that accelerates (gravity) with velocities jittered by the step's length; measured "
-            "quieter at the exit with crossing (cases/round_jet/README.md)",
+     .doc = "when a plug particle turns free: at the first step that starts past the orifice (step), or at its "
+            "crossing of the orifice line (crossing; the paragraph below); measured quieter at the exit with crossing "
+            "(cases/round_jet/README.md)",
      .legacy = "(none)", .echo = "release: {choices}"},
     {.key = "nozzle.column_over_d0", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::column_over_d0>(),
      .range = kNonNegative, .def = "0 (none)", .allowed = "the column inside the box",

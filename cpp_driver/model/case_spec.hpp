@@ -106,8 +106,7 @@ struct NozzleSpec {
     // The speed across the orifice: a rigid plug at u0, or parabolic with the same flux (the
     // core's plug_step; SimParams::drive_profile_a).
     NozzleProfile profile = NozzleProfile::Plug;
-    // When a plug particle turns free: at the first step that starts past the orifice, or at
-    // its crossing (SimParams::drive_release_crossing).
+    // When a plug particle turns free (NozzleRelease; SimParams::drive_release_crossing).
     NozzleRelease release = NozzleRelease::Step;
     // An imposed disturbance: the plug speed is u0 (1 + disturbance sin(omega t)), omega =
     // u0 k with k = disturbance_ka / (d0 / 2): a wave of that k leaves the orifice. 0: none.
