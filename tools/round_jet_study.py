@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -54,6 +54,13 @@ predictor-corrector's ("One evaluation per step: the leapfrog"). --quiet-jets st
 quiet round jets' numerics, the quick start's and the validation's: --axis-pair rings_fit
 --quiet-exit --artificial-alpha 0.02 --reconstruct --c0 12 --cfl 0.25 --leapfrog --sink 15 (the
 same study directory as those flags; one of them given with another value is refused).
+--gravity makes the jets fall along their axis (gravity.gz = -9.81 m/s^2; the case's nozzle
+points down) with the falling jets' numerics: the continuity renormalised along r and z
+(domain.renormalise_ring_continuity) and the plug's particles freed where they cross the orifice
+(nozzle.release = "crossing"), as "A plug that lets go at the orifice" measured them (suffix _g;
+needs a rings --axis-pair). Its report gives, beside C = L/(d0 x), the C = ln(a/delta0) that
+Weber's growth along a falling jet reaches at the measured and at the run's length
+(tools/jet_gravity_theory.py): 17.0-19.6 for the measured jets up to 1.28 m/s.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -157,6 +164,10 @@ BOX_L_FACTOR = 1.6
 INTACT_SKIP_MAX, BOX_END_D0 = 0.05, 1.0
 REFILL_NOZZLE = 3.0   # d0 of a refilling nozzle (--quiet-exit): the plug reaches far beyond 2h upstream
 QUIET_BULK_VISCOSITY = 0.5   # --quiet-exit's numerics.bulk_viscosity (cases/round_jet/README.md)
+# --gravity: g [m/s^2] along the jet, and the falling jets' numerics (cases/round_jet/README.md, "A plug
+# that lets go at the orifice")
+G_FALL = 9.81
+FALLING_SETS = (f"gravity.gz={-G_FALL:g}", "domain.renormalise_ring_continuity=true", "nozzle.release=crossing")
 # --quiet-jets: the options (attribute, value, flag) of the quiet round jets' numerics, as the
 # quick start and the validation run them (cases/round_jet/README.md, "One evaluation per step")
 QUIET_JETS = (("axis_pair", "rings_fit", "--axis-pair"), ("quiet_exit", True, "--quiet-exit"),
@@ -235,6 +246,16 @@ def measured_c():
     """C of L/d0 = C x through the origin over every measured jet (18.4)."""
     mc = read_mc()
     return fit_origin([groups(u, D0_MC)["x"] for u, _l in mc], [l for _u, l in mc])
+
+
+def falling_c(info, l_d0):
+    """--gravity: ln(a/delta0) that Weber's growth along a jet falling at G_FALL reaches at the
+    length l_d0 [d0] (tools/jet_gravity_theory.py) of a run of the plan (info: U, d0); None for
+    no length."""
+    if l_d0 is None:
+        return None
+    import jet_gravity_theory   # it imports this module: here, not at the top
+    return jet_gravity_theory.Jet(info["U"], 0.5 * info["d0"], G_FALL).exponent(l_d0 * info["d0"])
 
 
 def box_below(l_ref, d0):
@@ -407,7 +428,7 @@ def plan(opts):
     "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0, cfl: the damping,
     the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
-    starting column's length in L_ref (None: none)."""
+    starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -439,6 +460,8 @@ def plan(opts):
     if quiet:
         extra += [f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}", "domain.split_axis_rings=true"]
     extra += numerics_sets(opts)
+    if opts.gravity:
+        extra += list(FALLING_SETS)
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -470,7 +493,8 @@ def study_flags(opts):
             + ("" if opts.sink is None else f" --sink {opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
             + (" --own-window" if opts.own_window else "")
-            + ("" if opts.column is None else f" --column {opts.column:g}"))
+            + ("" if opts.column is None else f" --column {opts.column:g}")
+            + (" --gravity" if opts.gravity else ""))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -486,7 +510,8 @@ def study_dir(opts):
             + ("" if opts.axis_pair is None else f"_{opts.axis_pair}") + ("_quiet" if opts.quiet_exit else "")
             + numerics_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
-            + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}"))
+            + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}")
+            + ("_g" if opts.gravity else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -653,6 +678,10 @@ def report(args):
               "main drops d/d0 window median (drop-samples)", "main drops d/d0 window mode",
               "drops (satellites)", "status",
               "particles", "wall [s]"]
+    falling = falling_c if args.gravity else None
+    if falling:
+        header.insert(header.index("instability without gravity"),
+                      f"C = ln(a/delta0) falling, measured / SPH")
     rows, missing, notes = [], [], []
     pts_m, pts_s = [], []   # (x, L/d0, convectively unstable) of the measured jets and the runs
     for s, name, info, r in runs:
@@ -683,6 +712,9 @@ def report(args):
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
                      fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
+        if falling:
+            rows[-1].insert(header.index("instability without gravity") - 1,
+                            f"{fmt(falling(info, info['L_meas']), '.1f')} / {fmt(falling(info, r['L']), '.1f')}")
     with open(os.path.join(args.out, "round_jets.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(header)
@@ -725,9 +757,12 @@ def report(args):
             f"- the {len(cs_conv)} speeds with We_d >= 2 pi (convectively unstable): {band_text(cs_conv)};\n"
             f"- all {len(cs_all)} speeds: {band_text(cs_all)}.\n"
             f"Below We_d = 2 pi a jet without gravity is absolutely unstable (Leib & Goldstein 1986) "
-            f"and breaks near the orifice: {len(cs_all) - len(cs_conv)} of the measured speeds, where this model (no gravity) "
-            f"cannot form the measured jet.\n\n"
-            f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
+            f"and breaks near the orifice: {len(cs_all) - len(cs_conv)} of the measured speeds"
+            + (f"; here the jets fall (g = {G_FALL:g} m/s^2 along them), and the falling C is the ln(a/delta0) "
+               f"that Weber's growth along the falling jet reaches at the length (tools/jet_gravity_theory.py, "
+               f"absolute instability left out).\n\n" if falling else
+               ", where this model (no gravity) cannot form the measured jet.\n\n")
+            + f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
             f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
             + ("\nNotes:\n" + "".join(f"- {n}\n" for n in notes) if notes else ""))
     with open(os.path.join(args.out, "round_jets.md"), "w") as f:
@@ -771,6 +806,10 @@ def brief(sdir, args, name, info, r, c_all):
         lines.append(f"  theory: no fit of the disturbance's growth ({noise.get('error', 'no growing stretch')})")
     lines.append(f"  the paper's eq 37: {g['eq37']:.1f}; Weber's law L/d0 = C sqrt(We_d)(1 + 3 Oh_d) with the "
                  f"measurements' C = {c_all:.1f}: {c_all * g['x']:.1f}")
+    if args.gravity and info["L_meas"] is not None:
+        lines.append(f"  falling (g = {G_FALL:g} m/s^2): Weber's growth along the jet reaches ln(a/delta0) = "
+                     f"{falling_c(info, r['L']):.1f} at this length, {falling_c(info, info['L_meas']):.1f} at the "
+                     f"measured one (tools/jet_gravity_theory.py)")
     lines.append(f"  main drops: {fmt(r['drops_median'])} d0 (median over the window, {r['n_main_window']} "
                  f"drop-samples), most frequent {fmt(r.get('drops_mode'), '.1f')} d0; Rayleigh's: {RAYLEIGH_DROP} d0")
     return "\n".join(lines)
@@ -846,6 +885,10 @@ def parse(argv=None):
                        help="start each run with its jet already out: a column of the nozzle's rings F x "
                             "its L_ref long past the orifice, moving at U (nozzle.column_over_d0; default: "
                             "none, the jet starts at the orifice; suffix _colF)")
+        p.add_argument("--gravity", action="store_true",
+                       help=f"the jets fall along their axis (gravity.gz = {-G_FALL:g}) with the falling jets' "
+                            "numerics (domain.renormalise_ring_continuity, nozzle.release = \"crossing\"; needs a "
+                            "rings --axis-pair; suffix _g); the report adds Weber's growth along the falling jet")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -884,6 +927,9 @@ def parse(argv=None):
                  "refilling nozzle")
     if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
+    if args.gravity and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
+        ap.error("--gravity renormalises the rings pair's continuity (domain.renormalise_ring_continuity): "
+                 "give --axis-pair rings, rings_own or rings_fit")
     if args.leapfrog and not args.quiet_exit:
         ap.error("--leapfrog needs the bulk viscosity of --quiet-exit (numerics.integrator = \"leapfrog\" "
                  "is refused without numerics.bulk_viscosity > 0)")

@@ -6,7 +6,8 @@ origin; the groups are the diameter ones; missing runs are listed; `run --dry-ru
 as its docstring says; `report --only --brief` prints the chosen run in lines (its theory line
 checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
-one that keeps growing); `--column` sizes each run's starting column from its L_ref.
+one that keeps growing); `--column` sizes each run's starting column from its L_ref; `--gravity`
+makes the runs fall and its report gives Weber's growth along the falling jet.
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -279,6 +280,33 @@ def main():
             check(p.returncode == 2 and "--column" in p.stderr, f"--column {bad}: exit {p.returncode}")
         check(rjs.study_flags(rjs.parse(["report", "--column", "0.5"])) == " --eps 0.01 --d0-over-dx 10 --column 0.5",
               "the report's run command with --column")
+        # --gravity: every run falls (gravity.gz = -9.81) with the renormalised continuity and the
+        # release at the crossing, in a directory of its own; refused without a rings pair; its
+        # report adds the falling C of tools/jet_gravity_theory.py at the measured length (0.7814
+        # m/s: 18.52, that tool's table in cases/round_jet/README.md) and at the run's (67.0 d0)
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--gravity",
+                            "--axis-pair", "rings", "--only", "mc_u0.7814"], capture_output=True, text=True)
+        check(all(w in p.stdout for w in ("gravity.gz=-9.81 ", "domain.renormalise_ring_continuity=true ",
+                                          "nozzle.release=crossing", "eps0.01_n10_rings_g")), f"--gravity: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--gravity"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--gravity" in p.stderr and "--axis-pair" in p.stderr,
+              f"--gravity without a rings pair: exit {p.returncode} {p.stderr}")
+        check(rjs.study_flags(rjs.parse(["report", "--axis-pair", "rings", "--gravity"]))
+              == " --eps 0.01 --d0-over-dx 10 --axis-pair rings --gravity", "the report's run command with --gravity")
+        import shutil
+        import jet_gravity_theory  # noqa: E402
+        shutil.copytree(d, os.path.join(root, "eps0.01_n10_rings_g", "mc_u0.7814"))
+        gout = os.path.join(tmp, "gout")
+        os.makedirs(gout)
+        p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", gout, "--no-figures", "--gravity",
+                            "--axis-pair", "rings"], capture_output=True, text=True)
+        with open(os.path.join(gout, "round_jets.csv")) as f:
+            grow = {r["run"]: r for r in csv.DictReader(f)}.get("mc_u0.7814", {})
+        c_run = jet_gravity_theory.Jet(0.7814, 0.000597, 9.81).exponent(67.0 * 0.001194)
+        check(grow.get("C = ln(a/delta0) falling, measured / SPH") == f"18.5 / {c_run:.1f}" and 16.0 < c_run < 18.5,
+              f"--gravity report's falling C: {grow.get('C = ln(a/delta0) falling, measured / SPH')} "
+              f"(run's {c_run:.2f}) {p.stderr}")
+        check("here the jets fall" in p.stdout, f"--gravity report's text: {p.stdout[-600:]}")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
