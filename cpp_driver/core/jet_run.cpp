@@ -111,7 +111,7 @@ void JetRun::count_orifice_speed(double u_flux, bool out) {
     u_dev_max_ = std::max(u_dev_max_, std::abs(u_flux / spec_.nozzle->u0 - 1.0));
 }
 
-std::vector<std::size_t> JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
+JetRun::Check JetRun::sample(const ParticleSet& ps, double time, std::int64_t step) {
     const double d0 = spec_.nozzle->d0;
     const analysis::JetSample s = mon_.sample(ps, time, step);
     jet_csv_->append(analysis::jet_csv_row(s, d0) + "\n");
@@ -132,7 +132,8 @@ std::vector<std::size_t> JetRun::sample(const ParticleSet& ps, double time, std:
     // remove_beyond_ (never the jet: s.drops holds the other clusters only). The choice reads
     // the state at this check alone, which a checkpoint holds: a resumed run removes the same
     // drops at the same steps.
-    std::vector<std::size_t> gone;
+    Check c{.sampled = true, .length = s.length, .gone = {}};
+    std::vector<std::size_t>& gone = c.gone;
     const double h = spec_.params.h;
     for (const analysis::Drop& q : s.drops) {
         const bool small = remove_below_ > 0 && q.d_eq < remove_below_;
@@ -150,11 +151,10 @@ std::vector<std::size_t> JetRun::sample(const ParticleSet& ps, double time, std:
         removed_particles_ += static_cast<std::int64_t>(q.particles);
         gone.insert(gone.end(), q.members.begin(), q.members.end());
     }
-    return gone;
+    return c;
 }
 
-std::vector<std::size_t> JetRun::after_step(const ParticleSet& ps, double time, std::int64_t step,
-                                             bool output_written) {
+JetRun::Check JetRun::after_step(const ParticleSet& ps, double time, std::int64_t step, bool output_written) {
     const double every = spec_.breakup ? spec_.breakup->check_every : 0.0;
     if (every > 0) {
         if (time + 1e-12 >= next_check_) {

@@ -32,12 +32,17 @@ public:
     JetRun(const CaseSpec& spec, const std::filesystem::path& dir, bool resume, const ParticleSet& ps,
            double time, std::int64_t step, Log log);
 
+    // What a step's check found.
+    struct Check {
+        bool sampled = false;              // a sample was taken
+        std::optional<double> length;      // the jet's intact length [m], when broken
+        std::vector<std::size_t> gone;     // the particles of the drops to remove (empty unless
+                                           // remove_drops_below_h or remove_drops_beyond_d0 is set
+                                           // and the check found such a drop)
+    };
     // After a step: samples when due (every check_every, or when output_written with
-    // check_every = 0). Returns the indices of the particles of the drops to remove (empty
-    // unless remove_drops_below_h or remove_drops_beyond_d0 is set and a check found such a
-    // drop).
-    [[nodiscard]] std::vector<std::size_t> after_step(const ParticleSet& ps, double time, std::int64_t step,
-                                                      bool output_written);
+    // check_every = 0).
+    [[nodiscard]] Check after_step(const ParticleSet& ps, double time, std::int64_t step, bool output_written);
     // nozzle.refill: the plug rows to add now (geometry/nozzle.hpp; empty without refill).
     [[nodiscard]] ParticleSet refill(const ParticleSet& ps) const;
     // Why the run should stop now (empty: go on): stop_after past the first breakup, or the
@@ -55,7 +60,7 @@ public:
     [[nodiscard]] bool removes() const { return remove_below_ > 0 || remove_beyond_ > 0; }
 
 private:
-    std::vector<std::size_t> sample(const ParticleSet& ps, double time, std::int64_t step);
+    Check sample(const ParticleSet& ps, double time, std::int64_t step);
     [[nodiscard]] double next_check_after(double time) const;
     void count_orifice_speed(double u_flux, bool out);
 

@@ -452,9 +452,12 @@ std::string step_once(Solver& solver, RunOutputs& out, std::optional<JetRun>& je
                              fmt::join(r.removed_ids, " ")));
     if (output_due) out.snapshot();
     if (jet) {
-        if (const auto gone = jet->after_step(solver.particles(), st.time, st.step, output_due);
-            !gone.empty())
-            (void)solver.deactivate(gone);
+        const JetRun::Check c = jet->after_step(solver.particles(), st.time, st.step, output_due);
+        if (!c.gone.empty()) (void)solver.deactivate(c.gone);
+        // the renormalised continuity along the intact jet alone (RunState::renormalise_reach);
+        // a gap at the orifice itself leaves none
+        if (c.sampled)
+            st.renormalise_reach = c.length ? std::max(*c.length, std::numeric_limits<double>::min()) : 0.0;
         (void)solver.append_fluid(jet->refill(solver.particles()), /*plug_rows=*/true);
     }
     (void)solver.split_heavy_rings();

@@ -237,6 +237,7 @@ StepReport Solver::step(bool fields) {
     // A disturbed nozzle: the plug speed over this step (SimParams::drive_eps).
     if (params_.drive_eps != 0.0)
         prm_.nozzle.u = params_.drive_u * (1.0 + params_.drive_eps * std::sin(params_.drive_omega * state_.time));
+    prm_.geometry.renormalise_reach = state_.renormalise_reach;
     const int status = sph_step(ws_, &prm_, &arr_, &info);
     if (status == SPH_ERR_DT_COLLAPSE) {
         fail(status, -1,
@@ -357,6 +358,7 @@ std::size_t Solver::split_heavy_rings() {
 double Solver::compute_rates() {
     double vmax = 0;
     rates_kept_ = false;   // the leapfrog's rates of the last step's end are overwritten
+    prm_.geometry.renormalise_reach = state_.renormalise_reach;
     const int status = sph_compute_rates(ws_, &prm_, &arr_, &vmax);
     if (status != SPH_OK) fail(status, -1, "rates");
     return vmax;

@@ -31,6 +31,7 @@ void visit_state(S& s, F&& f) {
     f("dbc_counter", s.dbc_counter);
     f("n_outputs", s.n_outputs);
     f("n_removed", s.n_removed);
+    f("renormalise_reach", s.renormalise_reach);
 }
 
 void check_sizes(const ParticleSet& ps, std::span<const ExtraField> extra) {
@@ -154,6 +155,8 @@ Checkpoint read_checkpoint(const fs::path& dir_or_file) {
         h5::Group g = h5::open_group(f, "run_state");
         visit_state(c.state, [&g](const char* name, auto& v) {
             using T = std::decay_t<decltype(v)>;
+            // a checkpoint written before the field existed: its default (RunState)
+            if (std::string_view(name) == "renormalise_reach" && !h5::has_attr(g, name)) return;
             if constexpr (std::is_same_v<T, double>) {
                 v = h5::read_attr_double(g, name);
             } else {

@@ -278,7 +278,7 @@ const Param kParams[] = {
      .allowed = "needs `axis_pair = \"rings\"`",
      .doc = "each ring's density rate from the radial and from the axial stretch scaled to the mean of its own "
             "kernel's responses to the two, so that a stretch without a change of volume leaves the density alone "
-            "where the surface cuts the kernel",
+            "where the surface cuts the kernel; with a `[nozzle]`, along the intact jet only",
      .legacy = "(none)", .hand = kRead, .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),

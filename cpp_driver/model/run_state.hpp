@@ -14,6 +14,10 @@ struct RunState {
     std::int64_t dbc_counter = 0; // steps since the last dynamic-boundary density update
     std::int64_t n_outputs = 0;   // snapshots written (legacy ngrab)
     std::int64_t n_removed = 0;   // particles removed for leaving the domain
+    // domain.renormalise_ring_continuity along a jet: the jet's intact length at its latest
+    // breakup check [m] (the core's geometry.renormalise_reach); 0 before its first breakup or
+    // without a jet: everywhere
+    double renormalise_reach = 0.0;
 };
 
 }  // namespace sphjet

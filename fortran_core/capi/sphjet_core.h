@@ -112,6 +112,8 @@ typedef struct sph_geometry_t {
     double axis_m1;           /* rings pair: a ring lighter is in the first column [kg] */
     double ring_mass_per_radius; /* domain.split_axis_rings: 2 pi rho0 dx dz [kg/m]; 0 = off */
     int renormalise_continuity;  /* rings pair: 1 its continuity renormalised along r and z */
+    double renormalise_reach;    /* > 0: renormalised only nearer the nozzle's orifice than this along
+                                    its axis [m] (a jet's intact length), faded over the last 2h; <= 0: everywhere */
 } sph_geometry_t;
 
 typedef struct sph_gravity_t {

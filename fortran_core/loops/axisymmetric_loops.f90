@@ -14,7 +14,8 @@
 !> pressure are the rings pair's instead (ring_rates; physics/axisymmetric.f90), and the
 !> pressure pair's truncation vector, which the CSF force needs, is left in s%axi_dx, s%axi_dz.
 !> With prm%geometry%renormalise_continuity (domain.renormalise_ring_continuity) the rings
-!> pair's density rate is renormalised along r and z (renormalised_rate).
+!> pair's density rate is renormalised along r and z (renormalised_rate), along a jet only up to
+!> its intact length (within_reach).
 module axisymmetric_loops
   use sphjet_kinds, only: rp, pi, VISC_LAMINAR, KERNEL_WENDLAND, AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t
@@ -180,7 +181,8 @@ contains
       s%rate(R_AR, k) = body%cont(k) + body%m(k) * s%u(k) * self
       if (body%renorm) s%rate(R_AR, k) = renormalised_rate(s%rate(R_AR, k), body%cz(k), &
                                                            body%mr(k) + body%m(k) * s%x(k) * self, &
-                                                           body%mz(k), s%rho(k), s%x(k) / prm%numerics%h)
+                                                           body%mz(k), s%rho(k), s%x(k) / prm%numerics%h, &
+                                                           within_reach(prm, s%x(k), s%z(k)))
       s%axi_dx(k) = body%ddx(k) + body%vr(k) * self
       s%axi_dz(k) = body%ddz(k)
       if (s%fluid(k)) call body%accelerate(prm, k, -(body%pg(k) * body%m(k) * self))
@@ -313,9 +315,9 @@ contains
   !> before. Faded out below a response of RESPONSE_WHOLE (module header), and towards the axis
   !> from h to h/2 (x_over_h = r/h), none closer: the rings there respond as the bulk's (the
   !> five-ring column's two inner rows within 0.6%), and in drops they are the ones that move
-  !> fastest.
-  pure function renormalised_rate(c, cz, mr, mz, rho, x_over_h) result(r)
-    real(rp), intent(in) :: c, cz, mr, mz, rho, x_over_h
+  !> fastest. reach: the weight of the ring's place along a jet (within_reach), 0 to 1.
+  pure function renormalised_rate(c, cz, mr, mz, rho, x_over_h, reach) result(r)
+    real(rp), intent(in) :: c, cz, mr, mz, rho, x_over_h, reach
     real(rp) :: r, er, ez, eb, fr, fz, lam
     er = mr / (-2.0_rp * rho)
     ez = mz / (-rho)
@@ -323,12 +325,31 @@ contains
     if (er <= 0.0_rp .or. ez <= 0.0_rp) return
     lam = min(1.0_rp, max(0.0_rp, (min(er, ez) - RESPONSE_NONE) / (RESPONSE_WHOLE - RESPONSE_NONE)))
     lam = lam * min(1.0_rp, max(0.0_rp, 2.0_rp * x_over_h - 1.0_rp))   ! none within h/2 of the axis
+    lam = lam * reach
     if (lam <= 0.0_rp) return
     eb = (2.0_rp * er + ez) / 3.0_rp
     fr = 1.0_rp + lam * (min(FACTOR_MAX, max(1.0_rp / FACTOR_MAX, eb / er)) - 1.0_rp)
     fz = 1.0_rp + lam * (min(FACTOR_MAX, max(1.0_rp / FACTOR_MAX, eb / ez)) - 1.0_rp)
     r = fr * (c - cz) + fz * cz
   end function renormalised_rate
+
+  !> The renormalisation's weight at (x, z) along a jet: with prm%geometry%renormalise_reach =
+  !> L > 0 (the driver's: the jet's intact length at its latest breakup check) 1 nearer the
+  !> orifice than L - 2h along the nozzle's axis, 0 beyond L, linear between; 1 everywhere with
+  !> L <= 0. The key is for the stretching lattice of the jet; its drops fall as they would
+  !> without gravity and have no such lattice, and there the scaled rate is only what is not the
+  !> pressure force's adjoint: with it everywhere, the falling round-jet study (d0/dx 10, column
+  !> starts) stopped on the density check in 3 of its 20 runs, each at rings gathered at the axis
+  !> of a drop past the jet's end (cases/round_jet/README.md).
+  pure real(rp) function within_reach(prm, x, z)
+    type(sph_params_t), intent(in) :: prm
+    real(rp), intent(in) :: x, z
+    real(rp) :: s
+    within_reach = 1.0_rp
+    if (.not. prm%geometry%renormalise_reach > 0.0_rp) return
+    s = (x - prm%nozzle%x0) * prm%nozzle%ex + (z - prm%nozzle%z0) * prm%nozzle%ez
+    within_reach = min(1.0_rp, max(0.0_rp, (prm%geometry%renormalise_reach - s) / (2.0_rp * prm%numerics%h)))
+  end function within_reach
 
   !> The axis weights 1/g and g'/g of every x (physics/axisymmetric.f90: axis_weights), from
   !> the kernel's tables (built once per kind).

@@ -20,6 +20,12 @@ Checks, each with its reason:
   3. M = 5 stopped right after the removal's step and resumed: the final /particles bitwise the
      uninterrupted run's, and the same removed_drops.csv: the sink reads only the state at the
      check.
+  4. M = 15 with the rings pair and domain.renormalise_ring_continuity, whose reach (the jet's
+     intact length at the latest check: the near sphere, beyond it, keeps the plain rate) the
+     checkpoint keeps: the final checkpoint's run_state renormalise_reach is the last jet.csv
+     sample's L, and the run stopped between two checks and resumed ends bitwise as the
+     uninterrupted one (a resumed run that took the reach as 0, everywhere, would give the
+     sphere's rings the scaled rate).
 Usage: check_drop_sink.py SPHJET SOURCE_DIR WORK_DIR
 """
 import os
@@ -92,6 +98,23 @@ def main():
           f"equal: {tables}")
     if not (same and tables):
         fails.append("resume")
+
+    keyed = SETS + ["breakup.remove_drops_beyond_d0=15", "domain.axis_pair=\"rings\"",
+                    "domain.renormalise_ring_continuity=true"]
+    whole = work / "key"
+    sphjet_run(sphjet, case, whole, keyed)
+    import h5py
+    with h5py.File(whole / "checkpoint.h5", "r") as f:
+        reach = float(f["run_state"].attrs["renormalise_reach"])
+    last = rows(whole / "jet.csv")[-1]
+    print(f"4. the key: checkpoint's reach {reach:.9g} m, the last sample's L {last['L']} m (broken {last['broken']})")
+    if not (last["broken"] == "1" and reach > 0 and abs(reach - float(last["L"])) <= 1e-8 * reach):
+        fails.append("the key's reach")
+    d = work / "key_resumed"
+    same = same_particles(resumed_particles(sphjet, case, d, keyed, step + 7), h5_particles(whole / "checkpoint.h5"))
+    print(f"   stopped after step {step + 7}, resumed: final /particles bitwise equal: {same}")
+    if not same:
+        fails.append("the key's resume")
     if fails:
         sys.exit("FAIL: " + ", ".join(fails))
     print("PASS")

@@ -205,6 +205,7 @@ RunState unusual_state() {
     s.dbc_counter = 2;
     s.n_outputs = 31;
     s.n_removed = 4;
+    s.renormalise_reach = 0.0123456789012345;
     return s;
 }
 
@@ -243,7 +244,7 @@ void expect_input_error(const fs::path& dir, const std::string& also = {}) {
 // here. SimParams' members go through their rows in model/case_params.cpp, and
 // CaseParams.AttributesCoverSimParams (test_case_params.cpp) fails for a member without one.
 TEST(Checkpoint, KnowsEveryFieldOfTheStructs) {
-    EXPECT_EQ(sizeof(RunState), 80u) << "RunState changed: update the checkpoint";
+    EXPECT_EQ(sizeof(RunState), 88u) << "RunState changed: update the checkpoint";
 }
 
 TEST(Checkpoint, RoundTripIsBitwise) {
@@ -289,6 +290,7 @@ TEST(Checkpoint, RoundTripIsBitwise) {
     EXPECT_EQ(c.state.dbc_counter, st.dbc_counter);
     EXPECT_EQ(c.state.n_outputs, st.n_outputs);
     EXPECT_EQ(c.state.n_removed, st.n_removed);
+    EXPECT_EQ(bits(c.state.renormalise_reach), bits(st.renormalise_reach));
 
     expect_same_params(prm, c.params);
     ASSERT_NE(c.array("rho_old"), nullptr);
@@ -424,6 +426,10 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     write_sample_without(dir, "/parameters", {"drive_release_crossing"});
     EXPECT_FALSE(read_checkpoint(dir).params.drive_release_crossing);
     EXPECT_FALSE(pre_jet.domain_box);
+
+    // A run state from before the renormalised continuity's reach: everywhere (0), as then.
+    write_sample_without(dir, "/run_state", {"renormalise_reach"});
+    EXPECT_EQ(read_checkpoint(dir).state.renormalise_reach, 0.0);
 
     // And the axisymmetric pair: without it, the smoothed-radius pair (the only one before).
     write_sample_without(dir, "/parameters", {"axis_pair", "rings_curvature"});

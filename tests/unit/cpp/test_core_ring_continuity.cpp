@@ -14,6 +14,10 @@
 //   error weighted differently).
 // - with the key the rings pair is otherwise unchanged: the accelerations are bitwise those
 //   without it.
+// - along a jet (geometry.renormalise_reach = L > 0, a nozzle whose orifice is at the column's
+//   top, pointing down) the key acts only nearer the orifice than L: rings farther than L have
+//   bitwise the rate without the key, rings nearer than L - 2h bitwise the rate with the key
+//   everywhere (reach 0), those between a rate between the two.
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -40,7 +44,7 @@ struct Column {
 // a ring of the nozzle's lattice keeps its volume while the jet stretches), its velocity
 // field(r, z, k) = (u, w), row i's density rho0 (1 + drho i); its rates set.
 template <class Field>
-Column column(double s, bool renormalise, Field field, double drho = 0) {
+Column column(double s, bool renormalise, Field field, double drho = 0, double reach = 0) {
     Column c;
     const double dr = s * kDx;
     c.dz = kDx / (s * s);
@@ -58,6 +62,7 @@ Column column(double s, bool renormalise, Field field, double drho = 0) {
     p.geometry.periodic_z = 1;
     p.geometry.axis_m1 = 2 * std::numbers::pi * kRho0 * dr * dr * c.dz;
     p.geometry.renormalise_continuity = renormalise ? 1 : 0;
+    p.geometry.renormalise_reach = reach;
     p.domain.zmin = 0;
     p.domain.zmax = kNz * c.dz;
     for (int i = 0; i < kRows; ++i)
@@ -123,4 +128,51 @@ TEST(CoreRingContinuity, AccelerationsUnchanged) {
         ASSERT_EQ(with.ps.ax[q], without.ps.ax[q]) << q;
         ASSERT_EQ(with.ps.az[q], without.ps.az[q]) << q;
     }
+}
+
+TEST(CoreRingContinuity, AlongTheIntactJetOnly) {
+    auto stretch = [](double r, double z, double k) {
+        return std::pair{-0.5 * r * std::cos(k * z), std::sin(k * z) / k};
+    };
+    const double s = 0.9;
+    const Column everywhere = column(s, true, stretch);
+    const Column plain = column(s, false, stretch);
+    // the orifice on the axis at the column's top, the jet running down: a ring's distance
+    // from it is z_top - z; the intact jet reaches to the middle
+    auto along = [&](double reach) {
+        Column c = column(s, true, stretch, 0, reach);   // rates with the nozzle unset: redone below
+        c.prm.nozzle.x0 = 0;
+        c.prm.nozzle.z0 = c.prm.domain.zmax;
+        c.prm.nozzle.ex = 0;
+        c.prm.nozzle.ez = -1;
+        sphjet_test::compute_rates(c.ps, c.prm);
+        return c;
+    };
+    const double top = everywhere.prm.domain.zmax, reach = 0.5 * top, h = everywhere.prm.numerics.h;
+    const Column jet = along(reach);
+    int near = 0, far = 0, between = 0;
+    for (std::size_t q = 0; q < jet.ps.ar.size(); ++q) {
+        const double dist = top - jet.ps.z[q];
+        if (dist < reach - 2 * h) {
+            ASSERT_EQ(jet.ps.ar[q], everywhere.ps.ar[q]) << q;
+            ++near;
+        } else if (dist > reach) {
+            ASSERT_EQ(jet.ps.ar[q], plain.ps.ar[q]) << q;
+            ++far;
+        } else {
+            const double lo = std::min(everywhere.ps.ar[q], plain.ps.ar[q]);
+            const double hi = std::max(everywhere.ps.ar[q], plain.ps.ar[q]);
+            EXPECT_GE(jet.ps.ar[q], lo - 1e-12 * std::abs(lo)) << q;
+            EXPECT_LE(jet.ps.ar[q], hi + 1e-12 * std::abs(hi)) << q;
+            ++between;
+        }
+    }
+    EXPECT_GT(near, 0);
+    EXPECT_GT(far, 0);
+    EXPECT_GT(between, 0);
+    // and the key does act on this column (else the test would see nothing)
+    double most = 0;
+    for (std::size_t q = 0; q < plain.ps.ar.size(); ++q)
+        most = std::max(most, std::abs(everywhere.ps.ar[q] - plain.ps.ar[q]));
+    EXPECT_GT(most, 0.05 * kRho0);
 }
