@@ -336,11 +336,12 @@ contains
   !> The renormalisation's weight at (x, z) along a jet: with prm%geometry%renormalise_reach =
   !> L > 0 (the driver's: the jet's intact length at its latest breakup check) 1 nearer the
   !> orifice than L - 2h along the nozzle's axis, 0 beyond L, linear between; 1 everywhere with
-  !> L <= 0. The key is for the stretching lattice of the jet; its drops fall as they would
-  !> without gravity and have no such lattice, and there the scaled rate is only what is not the
-  !> pressure force's adjoint: with it everywhere, the falling round-jet study (d0/dx 10, column
-  !> starts) stopped on the density check in 3 of its 20 runs, each at rings gathered at the axis
-  !> of a drop past the jet's end (cases/round_jet/README.md).
+  !> L <= 0. The key is for the jet's stretching lattice. A drop falls as it would without
+  !> gravity and holds no such lattice, and there the scaled rate only breaks the pair's energy
+  !> balance: with the key on every ring the falling round-jet study (d0/dx 10, column starts)
+  !> stopped on the density check in 3 of its 20 runs, each at rings gathered at the axis of a
+  !> drop past the jet's end; along the jet only, in none (cases/round_jet/README.md, "The
+  !> falling study").
   pure real(rp) function within_reach(prm, x, z)
     type(sph_params_t), intent(in) :: prm
     real(rp), intent(in) :: x, z
