@@ -26,7 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from axisymmetric import weber_omega  # noqa: E402
-from round_jet_study import D0_MC, MU, RHO, SIGMA, read_mc  # noqa: E402
+from round_jet_study import D0_MC, G_FALL, MU, RHO, SIGMA, read_mc  # noqa: E402
 
 GRID = 1200        # points along the jet, 0 .. 2 L_max: N by the trapezoid rule (1e-6 relative)
 L_MAX_D0 = 400.0   # the longest jet it integrates [d0]
@@ -115,7 +115,7 @@ def table(g, c=None):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--g", type=float, default=9.81, help="gravity along the jet [m/s^2] (default 9.81)")
+    ap.add_argument("--g", type=float, default=G_FALL, help=f"gravity along the jet [m/s^2] (default {G_FALL:g})")
     ap.add_argument("--c", type=float, default=None, help="also print the lengths this ln(a/delta0) gives")
     args = ap.parse_args(argv)
     if not args.g >= 0:

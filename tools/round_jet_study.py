@@ -109,6 +109,7 @@ main drops beside Rayleigh's.
 """
 import contextlib
 import csv
+import functools
 import io
 import math
 import os
@@ -248,14 +249,18 @@ def measured_c():
     return fit_origin([groups(u, D0_MC)["x"] for u, _l in mc], [l for _u, l in mc])
 
 
-def falling_c(info, l_d0):
-    """--gravity: ln(a/delta0) that Weber's growth along a jet falling at G_FALL reaches at the
-    length l_d0 [d0] (tools/jet_gravity_theory.py) of a run of the plan (info: U, d0); None for
-    no length."""
-    if l_d0 is None:
-        return None
+@functools.lru_cache(maxsize=None)
+def falling_jet(u, d0):
+    """Weber's growth along a jet of speed u and diameter d0 falling at G_FALL
+    (tools/jet_gravity_theory.py's Jet, about half a second to build: once per run)."""
     import jet_gravity_theory   # it imports this module: here, not at the top
-    return jet_gravity_theory.Jet(info["U"], 0.5 * info["d0"], G_FALL).exponent(l_d0 * info["d0"])
+    return jet_gravity_theory.Jet(u, 0.5 * d0, G_FALL)
+
+
+def falling_c(info, l_d0):
+    """--gravity: ln(a/delta0) that Weber's growth along the falling jet reaches at the length
+    l_d0 [d0] of a run of the plan (info: U, d0); None for no length."""
+    return None if l_d0 is None else falling_jet(info["U"], info["d0"]).exponent(l_d0 * info["d0"])
 
 
 def box_below(l_ref, d0):
