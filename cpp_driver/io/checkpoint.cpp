@@ -18,20 +18,21 @@ namespace {
 constexpr std::int64_t kFormatVersion = 1;
 constexpr auto kSum = h5::Layout::Checksummed;
 
-// Calls f(name, field) for every field of RunState, in declaration order.
+// Calls f(name, field, later) for every field of RunState, in declaration order; later: the
+// field came after format version 1's first files, which lack it (read as RunState's default).
 template <class S, class F>
 void visit_state(S& s, F&& f) {
-    f("time", s.time);
-    f("legacy_time", s.legacy_time);
-    f("step", s.step);
-    f("dt", s.dt);
-    f("dt_f", s.dt_f);
-    f("dt_cv", s.dt_cv);
-    f("dt_new", s.dt_new);
-    f("dbc_counter", s.dbc_counter);
-    f("n_outputs", s.n_outputs);
-    f("n_removed", s.n_removed);
-    f("renormalise_reach", s.renormalise_reach);
+    f("time", s.time, false);
+    f("legacy_time", s.legacy_time, false);
+    f("step", s.step, false);
+    f("dt", s.dt, false);
+    f("dt_f", s.dt_f, false);
+    f("dt_cv", s.dt_cv, false);
+    f("dt_new", s.dt_new, false);
+    f("dbc_counter", s.dbc_counter, false);
+    f("n_outputs", s.n_outputs, false);
+    f("n_removed", s.n_removed, false);
+    f("renormalise_reach", s.renormalise_reach, true);
 }
 
 void check_sizes(const ParticleSet& ps, std::span<const ExtraField> extra) {
@@ -92,7 +93,7 @@ void write_checkpoint(const fs::path& dir, const ParticleSet& ps, const RunState
         {
             h5::Group g = h5::create_group(f, "run_state");
             visit_state(state,
-                        [&g](const char* name, const auto& v) { h5::write_attr(g, name, v); });
+                        [&g](const char* name, const auto& v, bool) { h5::write_attr(g, name, v); });
         }
         {
             h5::Group g = h5::create_group(f, "parameters");
@@ -153,10 +154,9 @@ Checkpoint read_checkpoint(const fs::path& dir_or_file) {
     }
     {
         h5::Group g = h5::open_group(f, "run_state");
-        visit_state(c.state, [&g](const char* name, auto& v) {
+        visit_state(c.state, [&g](const char* name, auto& v, bool later) {
             using T = std::decay_t<decltype(v)>;
-            // a checkpoint written before the field existed: its default (RunState)
-            if (std::string_view(name) == "renormalise_reach" && !h5::has_attr(g, name)) return;
+            if (later && !h5::has_attr(g, name)) return;
             if constexpr (std::is_same_v<T, double>) {
                 v = h5::read_attr_double(g, name);
             } else {
