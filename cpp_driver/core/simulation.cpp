@@ -552,6 +552,11 @@ void finish_run(const RunOptions& opts, const CaseSpec& spec, Solver& solver, Ru
     }
     sum.outputs = st.n_outputs;
     if (jet) out.or_stop([&] { jet->finish(out.hdf5()); });
+    if (const Solver::FixedStepRecord& f = solver.fixed_step_record(); f.steps > 0)
+        log.line(fmt::format("fixed step: time.dt = {:.6g} s was above the step of the CFL and force conditions "
+                             "at {} of these {} steps; that step was {:.6g} s at its smallest ({:.3g} times "
+                             "time.dt)",
+                             st.dt, f.above, f.steps, f.smallest, f.smallest / st.dt));
     log.line(fmt::format("done: {} steps ({} in all) to t = {:.6g} s (SPHysics clock {:.6g} s) in "
                          "{:.2f} s wall; {:.3g} particle-steps/s; {} outputs; {} particles left "
                          "the domain{}",

@@ -245,6 +245,11 @@ StepReport Solver::step(bool fields) {
                          info.dt_next, info.dt_f, info.dt_cv));
     }
     if (status != SPH_OK) fail(status, info.bad_particle, "step");
+    if (!params_.variable_dt && info.dt_new > 0.0) {
+        fixed_record_.steps += 1;
+        if (info.dt > info.dt_new) fixed_record_.above += 1;
+        fixed_record_.smallest = std::min(fixed_record_.smallest, info.dt_new);
+    }
     StepReport r;
     r.dt_taken = info.dt;
     r.removed = info.n_removed;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -117,6 +118,15 @@ public:
     [[nodiscard]] const RunState& state() const { return state_; }
     [[nodiscard]] const SimParams& params() const { return params_; }
     [[nodiscard]] const sph_params_t& core() const { return prm_; }
+    // A fixed step (time.variable_dt = false) against the step the CFL and force conditions
+    // would have taken (RunState::dt_new), over the steps this Solver took: how many took more,
+    // and the smallest such step [s] (infinity before the first step). The leapfrog's: the
+    // predictor-corrector evaluates no such step when the step is fixed (dt_new stays 0).
+    struct FixedStepRecord {
+        std::int64_t steps = 0, above = 0;
+        double smallest = std::numeric_limits<double>::infinity();
+    };
+    [[nodiscard]] const FixedStepRecord& fixed_step_record() const { return fixed_record_; }
 
     static void set_threads(int n);
     static int threads();
@@ -143,6 +153,7 @@ private:
     std::vector<double> colour_, st_nx_, st_nz_, kappa_;
     std::vector<double> list_x_, list_z_;
     std::size_t rings_split_unasked_ = 0;
+    FixedStepRecord fixed_record_;
     bool rates_kept_ = false;  // leapfrog: the rates arrays are the current state's
     std::vector<char> was_active_;  // active flags before the last step with a removal
     void* ws_ = nullptr;
