@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -61,6 +61,11 @@ points down) with the falling jets' numerics: the continuity renormalised along 
 needs a rings --axis-pair). Its report gives, beside C = L/(d0 x), the C = ln(a/delta0) that
 Weber's growth along a falling jet reaches at the measured and at the run's length
 (tools/jet_gravity_theory.py): 17.0-19.6 for the measured jets up to 1.28 m/s.
+--fixed-step F gives every run a fixed step of F times the CFL step of its fluid at rest,
+time.dt = F cfl h / c0 with time.variable_dt = false (suffix _fixF; 0 < F < 1): the variable
+step changes every step with the pinch-offs far down the jet, and that jitter seeds the jet
+("A step that does not jitter"). F = 0.6 lies below the smallest step the variable one took in
+the quiet study's runs (0.62 of it) and costs about 1.3 times its steps.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -115,6 +120,7 @@ import math
 import os
 import statistics
 import sys
+import tomllib
 
 import jet_noise
 from study_runs import (StudyError, add_numerics_arguments, add_run_arguments, blew_up, check_numerics,
@@ -169,6 +175,12 @@ QUIET_BULK_VISCOSITY = 0.5   # --quiet-exit's numerics.bulk_viscosity (cases/rou
 # that lets go at the orifice")
 G_FALL = 9.81
 FALLING_SETS = (f"gravity.gz={-G_FALL:g}", "domain.renormalise_ring_continuity=true", "nozzle.release=crossing")
+# --fixed-step: the case's kernel width, Courant number and sound speed, which the fixed step is
+# scaled from where the study leaves them
+with open(os.path.join(REPO, BASE_CASE), "rb") as _f:
+    _CASE = tomllib.load(_f)
+CASE_H_OVER_DX, CASE_CFL, CASE_C0 = (_CASE["resolution"]["h_over_dx"], _CASE["time"]["cfl"], _CASE["fluid"]["c0"])
+PAPER_C0 = 4.0   # the paper's jets' sound speed (their runs' fluid.c0)
 # --quiet-jets: the options (attribute, value, flag) of the quiet round jets' numerics, as the
 # quick start and the validation run them (cases/round_jet/README.md, "One evaluation per step")
 QUIET_JETS = (("axis_pair", "rings_fit", "--axis-pair"), ("quiet_exit", True, "--quiet-exit"),
@@ -433,7 +445,8 @@ def plan(opts):
     "rings_fit": the rings pair with the surface fit and the tensile correction; quiet_exit: the
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0, cfl: the damping,
     the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
-    starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS)."""
+    starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
+    fixed_step: F of a fixed step F cfl h / c0 (fixed_step_sets), None for the variable step."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -445,7 +458,7 @@ def plan(opts):
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
-        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window, own) + ["fluid.c0=4"],
+        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window, own) + [f"fluid.c0={PAPER_C0:g}"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER),
                       "own": own, "W": window}))
     if opts.column is not None:
@@ -470,8 +483,18 @@ def plan(opts):
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
-    return [(s, name, sets + [e for e in extra if s == "mc" or not e.startswith("fluid.c0=")], info)
+    return [(s, name, sets + [e for e in extra if s == "mc" or not e.startswith("fluid.c0=")]
+             + fixed_step_sets(opts, info["d0"] / n, (opts.c0 or CASE_C0) if s == "mc" else PAPER_C0), info)
             for s, name, sets, info in runs]
+
+
+def fixed_step_sets(opts, dx, c0):
+    """--fixed-step F: the overrides of a fixed step F cfl h / c0 for a run of spacing dx and sound
+    speed c0 (h = CASE_H_OVER_DX dx; cfl the study's, or the case's), [] without it."""
+    if opts.fixed_step is None:
+        return []
+    dt = opts.fixed_step * (opts.cfl or CASE_CFL) * CASE_H_OVER_DX * dx / c0
+    return ["time.variable_dt=false", f"time.dt={dt:.6g}"]
 
 
 SET_NAMES = ("mc", "paper")
@@ -499,7 +522,8 @@ def study_flags(opts):
             + ("" if opts.window == WINDOW_LENGTH else f" --window {opts.window:g}")
             + (" --own-window" if opts.own_window else "")
             + ("" if opts.column is None else f" --column {opts.column:g}")
-            + (" --gravity" if opts.gravity else ""))
+            + (" --gravity" if opts.gravity else "")
+            + ("" if opts.fixed_step is None else f" --fixed-step {opts.fixed_step:g}"))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -516,7 +540,7 @@ def study_dir(opts):
             + numerics_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
             + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}")
-            + ("_g" if opts.gravity else ""))
+            + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -894,6 +918,10 @@ def parse(argv=None):
                        help=f"the jets fall along their axis (gravity.gz = {-G_FALL:g}) with the falling jets' "
                             "numerics (domain.renormalise_ring_continuity, nozzle.release = \"crossing\"; needs a "
                             "rings --axis-pair; suffix _g); the report adds Weber's growth along the falling jet")
+        p.add_argument("--fixed-step", type=float, default=None, metavar="F",
+                       help="a fixed step in every run, F times the CFL step of its fluid at rest "
+                            "(time.dt = F cfl h / c0, time.variable_dt = false; 0 < F < 1; default: the "
+                            "variable step; suffix _fixF)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -925,6 +953,9 @@ def parse(argv=None):
     if args.column is not None and not 0 < args.column < BOX_L_FACTOR:
         ap.error(f"--column {args.column}: expected 0 < F < {BOX_L_FACTOR:g} (the box reaches "
                  f"{BOX_L_FACTOR:g} L_ref + 10 d0 below the orifice)")
+    if args.fixed_step is not None and not 0 < args.fixed_step < 1:
+        ap.error(f"--fixed-step {args.fixed_step}: expected 0 < F < 1 (a fraction of the CFL step of the "
+                 "fluid at rest)")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.own_window and not args.quiet_exit:

@@ -7,7 +7,8 @@ as its docstring says; `report --only --brief` prints the chosen run in lines (i
 checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
 one that keeps growing); `--column` sizes each run's starting column from its L_ref; `--gravity`
-makes the runs fall and its report gives Weber's growth along the falling jet.
+makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
+gives every run the fixed step its docstring says.
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -307,6 +308,26 @@ def main():
               f"--gravity report's falling C: {grow.get('C = ln(a/delta0) falling, measured / SPH')} "
               f"(run's {c_run:.2f}) {p.stderr}")
         check("here the jets fall" in p.stdout, f"--gravity report's text: {p.stdout[-600:]}")
+        # --fixed-step F: every run a fixed step of F cfl h / c0 (the case's h = 2 dx): at d0/dx 10
+        # with --c0 12 --cfl 0.25, 0.6 x 0.25 x 2.388e-4 / 12 = 2.985e-6 s for every measured jet;
+        # the paper's jets keep their c0 = 4 m/s, and the case's cfl 0.2 without --cfl:
+        # 0.5 x 0.2 x 2 x 1e-3 / 4 = 5e-5 s (d0 = 10 mm, 10 across)
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--c0", "12",
+                            "--cfl", "0.25", "--fixed-step", "0.6", "--set-name", "mc"], capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all("--set time.variable_dt=false --set time.dt=2.985e-06" in ln for ln in steps)
+              and "eps0.01_n10_c012_cfl0.25_fix0.6 " in p.stdout, f"--fixed-step 0.6: {p.stdout[:400]}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--fixed-step", "0.5",
+                            "--set-name", "paper"], capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 4 and all("fluid.c0=4 " in ln and ln.endswith("--set time.dt=5e-05") for ln in steps),
+              f"--fixed-step 0.5, the paper's jets: {p.stdout[:400]}")
+        for bad in ("0", "1", "-0.5"):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--fixed-step", bad], capture_output=True, text=True)
+            check(p.returncode == 2 and f"--fixed-step {float(bad)}: expected 0 < F < 1" in p.stderr,
+                  f"--fixed-step {bad}: exit {p.returncode} {p.stderr}")
+        check(rjs.study_flags(rjs.parse(["report", "--fixed-step", "0.6"])) == " --eps 0.01 --d0-over-dx 10 --fixed-step 0.6",
+              "the report's run command with --fixed-step")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
