@@ -30,6 +30,7 @@ module sphjet_types
     integer(c_int) :: variable_dt = 1        !< 1: dt from CFL each step
     real(c_double) :: cfl = 0.2_rp           !< Courant number
     real(c_double) :: dt_min = 0.0_rp        !< a step below this is a collapse [s]
+    real(c_double) :: dt_max = 0.0_rp        !< the variable step's cap [s]; 0: none
   end type sph_time_step_t
 
   !> Tait equation of state (C struct sph_eos_t).

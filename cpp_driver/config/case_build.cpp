@@ -581,7 +581,11 @@ CaseSpec build_case(const Ctx& ctx, const toml::table& root) {
     read_members(top.sub("resolution"), p);  // the keys beyond dx, dz and h (jitter)
     read_viscosity(ctx, num_s, fluid, p);
     read_domain(ctx, top, spec);
-    read_members(top.sub("time"), p);
+    const Section time_s = top.sub("time");
+    read_members(time_s, p);
+    if (auto f = time_s.num("dt_max"); f && p.dt_max > 0 && !p.variable_dt)
+        fail(*f, "time.dt_max caps the variable step, but time.variable_dt = false fixes the step at time.dt",
+             "time.variable_dt = true with time.dt_max > 0 (or time.dt alone for a fixed step)");
     const Box box{p.lx, p.lz};
     read_structures(top, spec, box);
     read_jet(ctx, top, spec, box);

@@ -41,6 +41,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.time_step.variable_dt = p.variable_dt ? 1 : 0;
     c.time_step.cfl = p.cfl;
     c.time_step.dt_min = out.dt_min;
+    c.time_step.dt_max = p.dt_max;
 
     c.eos.rho0 = p.rho0;
     c.eos.b = p.B;

@@ -317,6 +317,11 @@ const Param kParams[] = {
      .range = kPositive, .doc = "initial (or fixed) step [s]", .legacy = "`Input dt?? , i_var_dt ??`"},
     {.key = "time.variable_dt", .attr = "variable_dt", .type = K::Bool, .member = member<&SimParams::variable_dt>(),
      .doc = "step from the CFL and force conditions", .legacy = "same line (i_var_dt)", .echo = "-"},
+    {.key = "time.dt_max", .attr = "dt_max", .type = K::Float, .unit = "s", .member = member<&SimParams::dt_max>(),
+     .range = kNonNegative, .def = "0 (none)", .allowed = "needs variable_dt = true",
+     .doc = "the variable step's cap [s]: every step takes it where the CFL and force conditions allow it, less "
+            "where they ask for less (the paragraph below)",
+     .legacy = "(none)", .h5_optional = true},
     {.key = "time.cfl", .attr = "cfl", .type = K::Float, .unit = "1", .member = member<&SimParams::cfl>(),
      .range = between(0, 1, true), .doc = "Courant number", .legacy = "`CFL number`"},
     {.key = "time.out", .attr = "out", .type = K::Float, .unit = "s", .member = member<&SimParams::out>(),

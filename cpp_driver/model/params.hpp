@@ -203,6 +203,7 @@ struct SimParams {
     // Time
     bool variable_dt = true;
     double dt = 1e-4;                  // initial (or fixed) time step [s]
+    double dt_max = 0;                 // the variable step's cap [s]; 0: none (time.dt_max)
     double cfl = 0.2;
     double tmax = 1.0;                 // end time [s]
     double out = 0.01;                 // output interval [s]

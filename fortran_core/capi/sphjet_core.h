@@ -44,6 +44,7 @@ typedef struct sph_time_step_t {
     int variable_dt;          /* 1: dt from the CFL condition each step */
     double cfl;               /* Courant number */
     double dt_min;            /* a step below this is a collapse [s] */
+    double dt_max;            /* the variable step's cap [s]; 0: none */
 } sph_time_step_t;
 
 typedef struct sph_eos_t {    /* Tait equation of state */

@@ -28,7 +28,7 @@ module leapfrog
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
   use rates, only: compute_rates
-  use time_step, only: cfl_scan_t, cfl_add, cfl_time_step
+  use time_step, only: cfl_scan_t, cfl_add, cfl_time_step, capped_step
   use state_checks, only: check_domain, fold_into_domain
   use fluid_update, only: eos_one, moving_fluid
   use nozzle_drive, only: in_driven_nozzle, plug_step
@@ -95,7 +95,7 @@ contains
     info%dt_cv = dtcv
     info%dt_new = dt_new
     info%visc_dt = vmax
-    info%dt_next = merge(dt_new, dt, prm%time_step%variable_dt /= 0)
+    info%dt_next = merge(capped_step(prm, dt_new), dt, prm%time_step%variable_dt /= 0)
 
     ! a particle reflected at the axis keeps rates that are its mirror image's
     if (prm%geometry%kind == GEOM_AXISYMMETRIC) then

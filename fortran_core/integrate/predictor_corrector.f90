@@ -19,7 +19,7 @@ module predictor_corrector
   use sorted_state, only: sorted_t, thread_lists
   use omp_team, only: team_work_t, in_team, one_thread, set_open_team
   use rates, only: compute_rates, rates_keep_pairs
-  use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
+  use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step, capped_step
   use eos_tait, only: tait_pressure, tait_sound_speed
   use fluid_update, only: update_eos, moving_fluid, moves
   use state_checks, only: check_domain, fold_into_domain
@@ -111,7 +111,7 @@ contains
     call fold_into_domain(prm, st)   ! axis reflection, periodic z (nothing in planar runs)
 
     info%visc_dt = vmax
-    info%dt_next = merge(min(dt_p, dt_c), dt, prm%time_step%variable_dt /= 0)
+    info%dt_next = merge(capped_step(prm, min(dt_p, dt_c)), dt, prm%time_step%variable_dt /= 0)
     call check_domain(prm, st, info%n_removed, info%bad_particle, status)
     ! A removal changes the active set: the next gather lists the pairs again, from the
     ! positions then (list_x = NaN, which a checkpoint keeps, so a resumed run does the same).

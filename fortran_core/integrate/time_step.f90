@@ -22,7 +22,7 @@ module time_step
   use surface_tension, only: csf_dt
   implicit none
   private
-  public :: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step
+  public :: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step, capped_step
 
   !> What the step needs of the particles: the fluid particle i with the largest |a|^2 = a2
   !> (the last one in particle order among equal ones) and its acceleration, and max c.
@@ -95,5 +95,16 @@ contains
     ! than about h / dt then jumps over fluid particles and the run blows up).
     if (vgate > 0.0_rp) dt_new = min(dt_new, prm%time_step%cfl * prm%numerics%h / vgate)
   end subroutine cfl_time_step
+
+  !> The variable step dt_new held at time_step%dt_max where that is set (> 0): a step that
+  !> changes only where the CFL and force conditions ask for less than the cap. The variable
+  !> step changes every step with the fastest particle anywhere, and in the round jets that
+  !> jitter seeds the jet (cases/round_jet/README.md, "A step that does not jitter").
+  pure real(rp) function capped_step(prm, dt_new)
+    type(sph_params_t), intent(in) :: prm
+    real(rp), intent(in) :: dt_new
+    capped_step = dt_new
+    if (prm%time_step%dt_max > 0.0_rp) capped_step = min(dt_new, prm%time_step%dt_max)
+  end function capped_step
 
 end module time_step

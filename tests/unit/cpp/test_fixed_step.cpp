@@ -3,6 +3,7 @@
 // time.variable_dt = false, how many took more than that step (RunState::dt_new after each)
 // and the smallest of those; nothing is recorded with the variable step, nor by the
 // predictor-corrector, which with a fixed step evaluates no CFL step (as legacy SPHysics).
+// And the variable step's cap time.dt_max (time_step.f90 capped_step).
 #include <algorithm>
 #include <filesystem>
 #include <limits>
@@ -14,6 +15,7 @@
 
 #include "config/load_case.hpp"
 #include "core/solver.hpp"
+#include "model/errors.hpp"
 
 using namespace sphjet;
 
@@ -71,5 +73,41 @@ TEST(FixedStep, NothingWithTheVariableStepOrThePredictorCorrector) {
         (void)s.step(false);
         EXPECT_EQ(s.fixed_step_record().steps, 0) << sets[0];
         EXPECT_EQ(s.fixed_step_record().above, 0) << sets[0];
+    }
+}
+
+// A cap below the CFL step: every step after the first (which takes time.dt) takes the cap,
+// exactly, while the CFL step (RunState::dt_new) stays above it, in the leapfrog and the
+// predictor-corrector. A cap above every CFL step changes nothing: the same states, bitwise.
+TEST(StepCap, HoldsTheVariableStepBelowTheCflStep) {
+    const double cap = 0.5 * rest_step();
+    for (const char* integrator : {"leapfrog", "predictor_corrector"}) {
+        LoadedCase lc = load_case(kSphere, {fmt::format("numerics.integrator={}", integrator),
+                                            "numerics.bulk_viscosity=0.5", fmt::format("time.dt_max={:.17g}", cap)});
+        Solver s(lc.spec.params, lc.spec.output, lc.particles);
+        for (int k = 0; k < 4; ++k) {
+            (void)s.step(false);
+            EXPECT_EQ(s.state().dt, cap) << integrator << " step " << k;
+            EXPECT_GT(s.state().dt_new, cap) << integrator << " step " << k;
+        }
+    }
+    LoadedCase a = load_case(kSphere, {fmt::format("time.dt_max={:.17g}", 10.0 * rest_step())});
+    LoadedCase b = load_case(kSphere, {});
+    Solver sa(a.spec.params, a.spec.output, a.particles), sb(b.spec.params, b.spec.output, b.particles);
+    for (int k = 0; k < 4; ++k) (void)sa.step(false), (void)sb.step(false);
+    EXPECT_EQ(sa.state().dt, sb.state().dt);
+    EXPECT_EQ(sa.particles().x, sb.particles().x);
+    EXPECT_EQ(sa.particles().rho, sb.particles().rho);
+}
+
+// A cap with a fixed step is refused, naming the key.
+TEST(StepCap, RefusedWithAFixedStep) {
+    try {
+        (void)load_case(kSphere, {"time.variable_dt=false", "time.dt_max=1e-6"});
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("time.dt_max"), std::string::npos) << what;
+        EXPECT_NE(what.find("time.variable_dt = false"), std::string::npos) << what;
     }
 }
