@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -64,8 +64,9 @@ Weber's growth along a falling jet reaches at the measured and at the run's leng
 --fixed-step F gives every run a fixed step of F times the CFL step of its fluid at rest,
 time.dt = F cfl h / c0 with time.variable_dt = false (suffix _fixF; 0 < F < 1): the variable
 step changes every step with the pinch-offs far down the jet, and that jitter seeds the jet
-("A step that does not jitter"). F = 0.6 lies below the smallest step the variable one took in
-the quiet study's runs (0.62 of it) and costs about 1.3 times its steps.
+("A step that does not jitter"); F = 0.6 costs about 1.3 times the variable step's steps.
+--step-cap F keeps the variable step but caps it there (time.dt_max = F cfl h / c0; suffix _capF):
+the step changes only where the CFL and force conditions ask for less than the cap.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -446,7 +447,7 @@ def plan(opts):
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0, cfl: the damping,
     the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
     starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
-    fixed_step: F of a fixed step F cfl h / c0 (fixed_step_sets), None for the variable step."""
+    fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -484,17 +485,19 @@ def plan(opts):
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
     return [(s, name, sets + [e for e in extra if s == "mc" or not e.startswith("fluid.c0=")]
-             + fixed_step_sets(opts, info["d0"] / n, (opts.c0 or CASE_C0) if s == "mc" else PAPER_C0), info)
+             + step_sets(opts, info["d0"] / n, (opts.c0 or CASE_C0) if s == "mc" else PAPER_C0), info)
             for s, name, sets, info in runs]
 
 
-def fixed_step_sets(opts, dx, c0):
-    """--fixed-step F: the overrides of a fixed step F cfl h / c0 for a run of spacing dx and sound
-    speed c0 (h = CASE_H_OVER_DX dx; cfl the study's, or the case's), [] without it."""
-    if opts.fixed_step is None:
+def step_sets(opts, dx, c0):
+    """--fixed-step F or --step-cap F: the overrides of a fixed step, or of the variable step's cap,
+    F cfl h / c0 for a run of spacing dx and sound speed c0 (h = CASE_H_OVER_DX dx; cfl the
+    study's, or the case's); [] with neither."""
+    f = opts.fixed_step or opts.step_cap
+    if f is None:
         return []
-    dt = opts.fixed_step * (opts.cfl or CASE_CFL) * CASE_H_OVER_DX * dx / c0
-    return ["time.variable_dt=false", f"time.dt={dt:.6g}"]
+    dt = f"{f * (opts.cfl or CASE_CFL) * CASE_H_OVER_DX * dx / c0:.6g}"
+    return ["time.variable_dt=false", f"time.dt={dt}"] if opts.fixed_step else [f"time.dt_max={dt}"]
 
 
 SET_NAMES = ("mc", "paper")
@@ -523,7 +526,8 @@ def study_flags(opts):
             + (" --own-window" if opts.own_window else "")
             + ("" if opts.column is None else f" --column {opts.column:g}")
             + (" --gravity" if opts.gravity else "")
-            + ("" if opts.fixed_step is None else f" --fixed-step {opts.fixed_step:g}"))
+            + ("" if opts.fixed_step is None else f" --fixed-step {opts.fixed_step:g}")
+            + ("" if opts.step_cap is None else f" --step-cap {opts.step_cap:g}"))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -540,7 +544,8 @@ def study_dir(opts):
             + numerics_tag(opts) + ("" if opts.sink is None else f"_sink{opts.sink:g}")
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
             + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}")
-            + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}"))
+            + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}")
+            + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -922,6 +927,9 @@ def parse(argv=None):
                        help="a fixed step in every run, F times the CFL step of its fluid at rest "
                             "(time.dt = F cfl h / c0, time.variable_dt = false; 0 < F < 1; default: the "
                             "variable step; suffix _fixF)")
+        p.add_argument("--step-cap", type=float, default=None, metavar="F",
+                       help="the variable step capped in every run at F times the CFL step of its fluid at "
+                            "rest (time.dt_max = F cfl h / c0; 0 < F < 1; suffix _capF)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -953,9 +961,11 @@ def parse(argv=None):
     if args.column is not None and not 0 < args.column < BOX_L_FACTOR:
         ap.error(f"--column {args.column}: expected 0 < F < {BOX_L_FACTOR:g} (the box reaches "
                  f"{BOX_L_FACTOR:g} L_ref + 10 d0 below the orifice)")
-    if args.fixed_step is not None and not 0 < args.fixed_step < 1:
-        ap.error(f"--fixed-step {args.fixed_step}: expected 0 < F < 1 (a fraction of the CFL step of the "
-                 "fluid at rest)")
+    for flag, f in (("--fixed-step", args.fixed_step), ("--step-cap", args.step_cap)):
+        if f is not None and not 0 < f < 1:
+            ap.error(f"{flag} {f}: expected 0 < F < 1 (a fraction of the CFL step of the fluid at rest)")
+    if args.fixed_step is not None and args.step_cap is not None:
+        ap.error("--fixed-step and --step-cap: give one (a fixed step, or the variable step capped)")
     if args.sink is not None and not args.sink > 0:
         ap.error(f"--sink {args.sink}: expected a positive number of d0")
     if args.own_window and not args.quiet_exit:

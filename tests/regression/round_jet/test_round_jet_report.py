@@ -8,7 +8,7 @@ checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-win
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
 one that keeps growing); `--column` sizes each run's starting column from its L_ref; `--gravity`
 makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
-gives every run the fixed step its docstring says.
+and `--step-cap` give every run the fixed or capped step their docstring says.
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -328,6 +328,18 @@ def main():
                   f"--fixed-step {bad}: exit {p.returncode} {p.stderr}")
         check(rjs.study_flags(rjs.parse(["report", "--fixed-step", "0.6"])) == " --eps 0.01 --d0-over-dx 10 --fixed-step 0.6",
               "the report's run command with --fixed-step")
+        # --step-cap F: the variable step capped at the same F cfl h / c0 (time.dt_max), its own
+        # directory; refused beside --fixed-step and outside (0, 1)
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--c0", "12",
+                            "--cfl", "0.25", "--step-cap", "0.6", "--set-name", "mc"], capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all(ln.endswith("--set time.dt_max=2.985e-06") and "variable_dt" not in ln
+                                       for ln in steps)
+              and "eps0.01_n10_c012_cfl0.25_cap0.6 " in p.stdout, f"--step-cap 0.6: {p.stdout[:400]}")
+        for argv, want in ((["--step-cap", "1"], "--step-cap 1.0: expected 0 < F < 1"),
+                           (["--step-cap", "0.5", "--fixed-step", "0.5"], "--fixed-step and --step-cap: give one")):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run"] + argv, capture_output=True, text=True)
+            check(p.returncode == 2 and want in p.stderr, f"{argv}: exit {p.returncode} {p.stderr}")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
