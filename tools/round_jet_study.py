@@ -64,7 +64,8 @@ Weber's growth along a falling jet reaches at the measured and at the run's leng
 --fixed-step F gives every run a fixed step of F times the CFL step of its fluid at rest,
 time.dt = F cfl h / c0 with time.variable_dt = false (suffix _fixF; 0 < F < 1): the variable
 step changes every step with the pinch-offs far down the jet, and that jitter seeds the jet
-("A step that does not jitter"); F = 0.6 costs about 1.3 times the variable step's steps.
+("A step that does not jitter"); F = 0.6 costs about 1.3 times the variable step's steps, but
+cannot follow a pinch-off that asks for less (each run.log says how often it was above that).
 --step-cap F keeps the variable step but caps it there (time.dt_max = F cfl h / c0; suffix _capF):
 the step changes only where the CFL and force conditions ask for less than the cap.
 
@@ -176,8 +177,8 @@ QUIET_BULK_VISCOSITY = 0.5   # --quiet-exit's numerics.bulk_viscosity (cases/rou
 # that lets go at the orifice")
 G_FALL = 9.81
 FALLING_SETS = (f"gravity.gz={-G_FALL:g}", "domain.renormalise_ring_continuity=true", "nozzle.release=crossing")
-# --fixed-step: the case's kernel width, Courant number and sound speed, which the fixed step is
-# scaled from where the study leaves them
+# --fixed-step, --step-cap: the case's kernel width, Courant number and sound speed, which the
+# step is scaled from where the study leaves them
 with open(os.path.join(REPO, BASE_CASE), "rb") as _f:
     _CASE = tomllib.load(_f)
 CASE_H_OVER_DX, CASE_CFL, CASE_C0 = (_CASE["resolution"]["h_over_dx"], _CASE["time"]["cfl"], _CASE["fluid"]["c0"])
