@@ -27,6 +27,8 @@ module sphjet_kinds
   integer(ip), parameter, public :: FILTER_NONE = 0, FILTER_SHEPARD = 1, FILTER_MLS = 2
   integer(ip), parameter, public :: GEOM_PLANAR = 0, GEOM_AXISYMMETRIC = 1  !< sph_params_t%geometry%kind
   integer(ip), parameter, public :: INTEGRATOR_PC = 1, INTEGRATOR_LEAPFROG = 2  !< %numerics%integrator
+  integer(ip), parameter, public :: NOZZLE_RELEASE_STEP = 0, NOZZLE_RELEASE_CROSSING = 1, &
+                                     NOZZLE_RELEASE_LANDED = 2  !< %nozzle%release
   integer(ip), parameter, public :: AXIS_PAIR_SMOOTHED_RADIUS = 0, AXIS_PAIR_RINGS = 1  !< %axis_pair
   integer(ip), parameter, public :: RINGS_CURVATURE_MEAN = 0, RINGS_CURVATURE_OWN = 1  !< %rings_curvature
   integer(ip), parameter, public :: CURV_NORMALS_ALL = 0, CURV_NORMALS_BAND = 1  !< %curvature_normals

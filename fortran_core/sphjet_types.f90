@@ -91,7 +91,8 @@ module sphjet_types
     real(c_double) :: profile_k = 0.0_rp     !< its centre speed / u (the lattice's flux equals u's)
     real(c_double) :: profile_lmax = 0.0_rp  !< the outer line's distance: farther fluid moves with it [m]
     real(c_double) :: profile_rho = 0.0_rp   !< the density a profiled plug holds [kg/m^3]
-    integer(c_int) :: release = 0            !< 1: a plug particle turns free at its crossing of the orifice line
+    integer(c_int) :: release = 0            !< 1: a plug particle turns free at its crossing of the orifice line;
+                                             !< 2: that, and the step lands the rows on the line (landed_step)
   end type sph_nozzle_t
 
   !> Planar or axisymmetric, periodicity, and the axisymmetric pair (C struct sph_geometry_t).

@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -68,6 +68,9 @@ step changes every step with the pinch-offs far down the jet, and that jitter se
 cannot follow a pinch-off that asks for less (each run.log says how often it was above that).
 --step-cap F keeps the variable step but caps it there (time.dt_max = F cfl h / c0; suffix _capF):
 the step changes only where the CFL and force conditions ask for less than the cap.
+--landed frees each of the plug's rows exactly at the orifice line (nozzle.release = "landed";
+suffix _land): the steps are shortened where needed so that the rows cross it at a step's end.
+The release's jitter, not the step's, was what seeded the jets ("Rows that turn free on the line").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -448,7 +451,8 @@ def plan(opts):
     bulk viscosity and a refilling nozzle; artificial_alpha, reconstruct, c0, cfl: the damping,
     the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
     starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
-    fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither."""
+    fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
+    landed: nozzle.release = "landed"."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -480,8 +484,10 @@ def plan(opts):
     if quiet:
         extra += [f"numerics.bulk_viscosity={QUIET_BULK_VISCOSITY:g}", "domain.split_axis_rings=true"]
     extra += numerics_sets(opts)
-    if opts.gravity:
-        extra += list(FALLING_SETS)
+    if opts.gravity:   # --landed's release in place of the falling jets' crossing
+        extra += [e for e in FALLING_SETS if not (opts.landed and e.startswith("nozzle.release="))]
+    if opts.landed:
+        extra.append("nozzle.release=landed")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -528,7 +534,8 @@ def study_flags(opts):
             + ("" if opts.column is None else f" --column {opts.column:g}")
             + (" --gravity" if opts.gravity else "")
             + ("" if opts.fixed_step is None else f" --fixed-step {opts.fixed_step:g}")
-            + ("" if opts.step_cap is None else f" --step-cap {opts.step_cap:g}"))
+            + ("" if opts.step_cap is None else f" --step-cap {opts.step_cap:g}")
+            + (" --landed" if opts.landed else ""))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -546,7 +553,7 @@ def study_dir(opts):
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
             + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}")
             + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}")
-            + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}"))
+            + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -931,6 +938,10 @@ def parse(argv=None):
         p.add_argument("--step-cap", type=float, default=None, metavar="F",
                        help="the variable step capped in every run at F times the CFL step of its fluid at "
                             "rest (time.dt_max = F cfl h / c0; 0 < F < 1; suffix _capF)")
+        p.add_argument("--landed", action="store_true",
+                       help="free the plug's rows exactly at the orifice line, the steps shortened where "
+                            "needed so that they cross it at a step's end (nozzle.release = \"landed\"; "
+                            "suffix _land)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

@@ -482,7 +482,15 @@ void read_jet(const Ctx& ctx, const Section& top, CaseSpec& spec, const Box& box
         p.drive_profile_lmax = 0.5 * nz.d0 - 0.5 * nozzle_layout(nz, p.dx, p.dz, false, 0.0, axi).spacing_across;
         p.drive_profile_rho = plug_state(p, nz).rho;
     }
-    p.drive_release_crossing = nz.release == NozzleRelease::Crossing;
+    if (nz.release == NozzleRelease::Landed && nz.profile == NozzleProfile::Parabolic)
+        throw InputError(s.string("release")->where,
+                         "nozzle.release = \"landed\" lands the plug's rows on the orifice line, but a parabolic "
+                         "profile's lines cross it at different times",
+                         "nozzle.release = \"landed\" with nozzle.profile = \"plug\" (\"crossing\" with "
+                         "\"parabolic\")",
+                         "nozzle.profile = \"parabolic\"");
+    p.drive_release_crossing = nz.release != NozzleRelease::Step;
+    p.drive_release_landed = nz.release == NozzleRelease::Landed;
     p.drive_eps = nz.disturbance;
     p.drive_omega = nz.disturbance > 0 ? nz.disturbance_omega() : 0.0;
     p.domain_box = true;

@@ -87,7 +87,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.nozzle.profile_k = p.drive_profile_k;
     c.nozzle.profile_lmax = p.drive_profile_lmax;
     c.nozzle.profile_rho = p.drive_profile_rho;
-    c.nozzle.release = p.drive_release_crossing ? 1 : 0;
+    c.nozzle.release = p.drive_release_landed ? 2 : p.drive_release_crossing ? 1 : 0;
 
     c.geometry.kind = static_cast<int>(p.geometry);
     c.geometry.periodic_z = p.periodic_z ? 1 : 0;
@@ -262,8 +262,10 @@ StepReport Solver::step(bool fields) {
         was_active_.assign(ps_.active.begin(), ps_.active.end());
     state_.step += 1;
     state_.time += info.dt;
+    // SPHysics advances its clock by the new step; a landed step (nozzle.release = "landed") took
+    // less than the step asked, state_.dt
+    state_.legacy_time += info.dt_next + (info.dt - state_.dt);
     state_.dt = info.dt_next;
-    state_.legacy_time += info.dt_next;  // SPHysics advances its clock by the new step
     state_.dt_f = info.dt_f;
     state_.dt_cv = info.dt_cv;
     state_.dt_new = info.dt_new;

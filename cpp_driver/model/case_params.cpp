@@ -409,9 +409,10 @@ const Param kParams[] = {
      .legacy = "(none)", .echo = "exit profile: {choices}"},
     {.key = "nozzle.release", .type = K::String, .member = member<&NozzleSpec::release>(),
      .choices = names<NozzleRelease>(), .def = "`\"step\"`",
-     .doc = "when a plug particle turns free: at the first step that starts past the orifice (step), or at its "
-            "crossing of the orifice line (crossing; the paragraph below); measured quieter at the exit with crossing "
-            "(cases/round_jet/README.md)",
+     .doc = "when a plug particle turns free: at the first step that starts past the orifice (step), at its "
+            "crossing of the orifice line (crossing), or at its crossing with each step shortened where needed so "
+            "that the rows cross the line at a step's end (landed; the paragraph below); measured quieter at the exit "
+            "with crossing, and landed quieter still (cases/round_jet/README.md)",
      .legacy = "(none)", .echo = "release: {choices}"},
     {.key = "nozzle.column_over_d0", .type = K::Float, .unit = "1", .member = member<&NozzleSpec::column_over_d0>(),
      .range = kNonNegative, .def = "0 (none)", .allowed = "the column inside the box",
@@ -540,7 +541,9 @@ const Param kParams[] = {
     {.attr = "drive_profile_rho", .unit = "kg/m^3", .member = member<&SimParams::drive_profile_rho>(),
      .doc = "the density a profiled plug holds (the plug's as built)", .h5_optional = true},
     {.attr = "drive_release_crossing", .member = member<&SimParams::drive_release_crossing>(),
-     .doc = "nozzle.release = \"crossing\"", .h5_optional = true},
+     .doc = "nozzle.release = \"crossing\" or \"landed\"", .h5_optional = true},
+    {.attr = "drive_release_landed", .member = member<&SimParams::drive_release_landed>(),
+     .doc = "nozzle.release = \"landed\"", .h5_optional = true},
     {.attr = "drive_eps", .unit = "1", .member = member<&SimParams::drive_eps>(), .doc = "nozzle.disturbance",
      .h5_optional = true},
     {.attr = "drive_omega", .unit = "rad/s", .member = member<&SimParams::drive_omega>(),

@@ -38,8 +38,9 @@ enum class RingsCurvature : int { NeighbourMean = 0, Own = 1 };
 // developed laminar flow, parabolic across it with the plug's flux (SimParams::drive_profile_a).
 enum class NozzleProfile : int { Plug = 0, Parabolic = 1 };
 // When a plug particle turns free (NozzleSpec::release): at the first step that starts past the
-// orifice, or at its crossing (SimParams::drive_release_crossing).
-enum class NozzleRelease : int { Step = 0, Crossing = 1 };
+// orifice, at its crossing (SimParams::drive_release_crossing), or at its crossing with the steps
+// landed on the crossings (SimParams::drive_release_landed).
+enum class NozzleRelease : int { Step = 0, Crossing = 1, Landed = 2 };
 // Whose unit normals enter the free-surface curvature's sums (core:
 // sph_params_t::surface_tension.curvature_normals; surface_tension.delta = "pressure_consistent"):
 // every particle that passes the normal filter (the default), or only those within h of the surface
@@ -119,8 +120,8 @@ struct EnumNames<NozzleProfile> {
 };
 template <>
 struct EnumNames<NozzleRelease> {
-    static constexpr NameTable<NozzleRelease, 2> list{
-        {{"step", NozzleRelease::Step}, {"crossing", NozzleRelease::Crossing}}};
+    static constexpr NameTable<NozzleRelease, 3> list{
+        {{"step", NozzleRelease::Step}, {"crossing", NozzleRelease::Crossing}, {"landed", NozzleRelease::Landed}}};
 };
 template <>
 struct EnumNames<CurvatureNormals> {
@@ -239,6 +240,10 @@ struct SimParams {
     // velocity plus its acceleration (rates and gravity) over the part of the step it spent past
     // the orifice (NozzleSpec::release = crossing). false: with the plug's velocity.
     bool drive_release_crossing = false;
+    // Each step is shortened where needed so that the plug's leading row crosses the orifice line at
+    // its end (NozzleSpec::release = landed; fortran_core/integrate/nozzle_drive.f90, landed_step):
+    // every row turns free at the line, none a part of a step late. Implies drive_release_crossing.
+    bool drive_release_landed = false;
     // The plug speed may carry an imposed disturbance (NozzleSpec::disturbance): over the step
     // that starts at time t it is drive_u (1 + drive_eps sin(drive_omega t)).
     double drive_eps = 0.0;                   // relative amplitude

@@ -21,6 +21,7 @@ module sphjet_capi
   use predictor_corrector, only: pc_step
   use fluid_update, only: update_eos
   use leapfrog, only: lf_step
+  use nozzle_drive, only: landed_step
   use filter_loops, only: apply_density_filter
   use state_checks, only: check_finite, rings_to_split
   use repulsive_wall, only: wall_normal
@@ -111,7 +112,7 @@ contains
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
       .and. prm%numerics%shifting >= 0.0_rp &
-      .and. prm%nozzle%profile_a >= 0.0_rp .and. any(prm%nozzle%release == [0, 1]) &
+      .and. prm%nozzle%profile_a >= 0.0_rp .and. any(prm%nozzle%release == [0, 1, 2]) &
       .and. any(prm%viscosity%reconstruct == [0, 1]) &
       .and. any(prm%numerics%integrator == [INTEGRATOR_PC, INTEGRATOR_LEAPFROG])
     ! shifting's velocity is set by the surface tension's passes (surface_tension_loops.f90)
@@ -157,7 +158,8 @@ contains
   end function sph_prepare
 
   !> One step of numerics%integrator (the predictor-corrector or the leapfrog); info%dt is the
-  !> step to take.
+  !> step to take, and returns the step taken: shorter where nozzle%release = 2 lands the plug's
+  !> leading row on the orifice line (nozzle_drive.f90, landed_step).
   function sph_step(ws_handle, prm, arr, info) result(status) bind(C, name="sph_step")
     type(c_ptr), value :: ws_handle
     type(sph_params_t), intent(in) :: prm
@@ -169,6 +171,7 @@ contains
     type(kernel_t) :: kern
     logical :: ok
     integer :: nt
+    real(rp) :: dt_asked
     status = SPH_ERR_ARGUMENT
     if (.not. c_associated(ws_handle)) return
     if (.not. params_ok(prm)) return
@@ -181,12 +184,16 @@ contains
     info%bad_particle = -1
     info%bad_cause = SPH_OK
     nt = share_threads(st%n)
+    dt_asked = info%dt
+    info%dt = landed_step(prm, st, dt_asked)
     if (prm%numerics%integrator == INTEGRATOR_LEAPFROG) then
       call lf_step(prm, kern, st, ws%sorted, info, status)
     else
       call pc_step(prm, kern, st, ws%sorted, info, status)
     end if
     call omp_set_num_threads(nt)
+    ! a fixed step keeps its size: only the steps that land the plug's rows are shorter
+    if (prm%time_step%variable_dt == 0) info%dt_next = dt_asked
     if (status /= SPH_OK) return
     if (prm%time_step%variable_dt /= 0 .and. info%dt_next < prm%time_step%dt_min) then
       status = SPH_ERR_DT_COLLAPSE

@@ -103,7 +103,9 @@ typedef struct sph_nozzle_t {
     double profile_k;         /* its centre speed / u (the lattice's flux equals u's) */
     double profile_lmax;      /* the outer line's distance: farther fluid moves with it [m] */
     double profile_rho;       /* the density a profiled plug holds [kg/m^3] */
-    int release;              /* 1: a plug particle turns free at its crossing of the orifice line */
+    int release;              /* 1: a plug particle turns free at its crossing of the orifice line;
+                                 2: that, and each step is shortened so that the plug's rows cross the
+                                 line at a step's end (nozzle_drive.f90, landed_step; info->dt out) */
 } sph_nozzle_t;
 
 typedef struct sph_geometry_t {

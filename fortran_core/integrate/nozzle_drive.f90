@@ -14,11 +14,20 @@
 !> built with (profile_rho): its lines slide past one another, and continuity over the sheared
 !> lattice gave its pressure a standard deviation of 80 sigma/a (0.58 m/s round jet, d0/dx 10).
 module nozzle_drive
-  use sphjet_kinds, only: rp
+  use sphjet_kinds, only: rp, NOZZLE_RELEASE_LANDED
   use sphjet_types, only: sph_params_t, state_t
+  use fluid_update, only: moving_fluid
   implicit none
   private
-  public :: in_driven_nozzle, plug_step
+  public :: in_driven_nozzle, plug_step, landed_step
+
+  !> How far past the orifice line a landed step carries the plug's leading row, in parts of the
+  !> step asked (landed_step): enough that round-off of the positions (1e-16 of the box) cannot
+  !> leave the row upstream, a time past the line ten million times shorter than the step.
+  real(rp), parameter :: LAND_PAST = 1.0e-7_rp
+  !> A landed step may exceed the step asked by this part of it, so that a time to the crossing
+  !> of n steps and round-off (or LAND_PAST) is n steps, not n + 1.
+  real(rp), parameter :: LAND_SLACK = 1.0e-6_rp
 
 contains
 
@@ -39,7 +48,7 @@ contains
   !> follows continuity. u_plug is the plug speed along the axis, or with a parabolic profile
   !> the profile's speed at the particle's start-of-step distance from the axis (and then the
   !> density is profile_rho).
-  !> With nozzle%release = 1 a particle that the plug carries past the orifice line turns free
+  !> With nozzle%release = 1 or 2 a particle that the plug carries past the orifice line turns free
   !> there: t_end is the time from the step's start to the state these values stand for (the
   !> leapfrog's dt, the predictor's dt/2, the corrector's dt, which its extrapolation reaches),
   !> t_out = s_end / speed of it was spent past the line (s_end the particle's distance past it
@@ -66,7 +75,7 @@ contains
     st%w(i) = speed * prm%nozzle%ez
     st%x(i) = st%xo(i) + dt2 * st%u(i)
     st%z(i) = st%zo(i) + dt2 * st%w(i)
-    if (prm%nozzle%release == 1 .and. speed > 0.0_rp) then
+    if (prm%nozzle%release >= 1 .and. speed > 0.0_rp) then
       s_end = (st%xo(i) - prm%nozzle%x0) * prm%nozzle%ex + (st%zo(i) - prm%nozzle%z0) * prm%nozzle%ez &
               + t_end * speed
       if (s_end > 0.0_rp) then
@@ -80,5 +89,37 @@ contains
     st%uo(i) = st%u(i)
     st%wo(i) = st%w(i)
   end subroutine plug_step
+
+  !> nozzle%release = 2 (nozzle.release = "landed"): the step to take instead of dt, so that the
+  !> plug's leading row (the driven particle nearest the orifice line) crosses the line at a step's
+  !> end, LAND_PAST dt past it, and turns free there with no lag. The time to that crossing, r, is
+  !> cut into n = ceiling(r / dt (1 - LAND_SLACK)) equal steps; each call takes the first of them,
+  !> so the steps between two rows' crossings are equal while dt holds, and never longer than dt
+  !> (but for LAND_SLACK). dt itself
+  !> where nothing is driven or the profile is parabolic (its lines cross at different times).
+  !> The plug speed is this step's (prm%nozzle%u), so a disturbed plug lands as well at the
+  !> step that reaches the line.
+  real(rp) function landed_step(prm, st, dt) result(dt_land)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(in) :: st
+    real(rp), intent(in) :: dt
+    real(rp) :: lead, s, r
+    integer :: i
+    dt_land = dt
+    if (prm%nozzle%release /= NOZZLE_RELEASE_LANDED .or. .not. (prm%nozzle%u > 0.0_rp) &
+        .or. prm%nozzle%profile_a > 0.0_rp) return
+    lead = -huge(1.0_rp)
+    !$omp parallel do schedule(static) private(s) reduction(max:lead)
+    do i = 1, st%n
+      if (.not. moving_fluid(st, i)) cycle
+      if (.not. in_driven_nozzle(prm, st%x(i), st%z(i))) cycle
+      s = (st%x(i) - prm%nozzle%x0) * prm%nozzle%ex + (st%z(i) - prm%nozzle%z0) * prm%nozzle%ez
+      lead = max(lead, s)
+    end do
+    !$omp end parallel do
+    if (lead == -huge(1.0_rp)) return
+    r = -lead / prm%nozzle%u + LAND_PAST * dt
+    dt_land = r / real(max(1, ceiling(r / dt * (1.0_rp - LAND_SLACK))), rp)
+  end function landed_step
 
 end module nozzle_drive

@@ -8,7 +8,8 @@ checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-win
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
 one that keeps growing); `--column` sizes each run's starting column from its L_ref; `--gravity`
 makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
-and `--step-cap` give every run the fixed or capped step their docstring says.
+and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
+release on the orifice line.
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -340,6 +341,17 @@ def main():
                            (["--step-cap", "0.5", "--fixed-step", "0.5"], "--fixed-step and --step-cap: give one")):
             p = subprocess.run([PY, TOOL, "run", "--dry-run"] + argv, capture_output=True, text=True)
             check(p.returncode == 2 and want in p.stderr, f"{argv}: exit {p.returncode} {p.stderr}")
+        # --landed: every run's rows freed on the orifice line (nozzle.release = "landed"), with
+        # --gravity in place of the falling jets' crossing, in a directory of its own
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--landed",
+                            "--gravity", "--axis-pair", "rings", "--step-cap", "0.6", "--set-name", "mc"],
+                           capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all("--set nozzle.release=landed" in ln and "release=crossing" not in ln
+                                       and "gravity.gz=-9.81" in ln for ln in steps)
+              and "eps0.01_n10_rings_g_cap0.6_land " in p.stdout, f"--landed --gravity: {p.stdout[:400]}")
+        check(rjs.study_flags(rjs.parse(["report", "--landed"])) == " --eps 0.01 --d0-over-dx 10 --landed",
+              "the report's run command with --landed")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",

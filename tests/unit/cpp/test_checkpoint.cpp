@@ -124,6 +124,7 @@ SimParams unusual_params() {
     p.drive_eps = 0.01 / 3.0;
     p.drive_omega = 2000.0 / 7.0;
     p.drive_release_crossing = true;  // not the default
+    p.drive_release_landed = true;    // not the default
     p.domain_box = true;
     p.geometry = Geometry::Axisymmetric;  // not the default
     p.periodic_z = true;
@@ -183,6 +184,7 @@ void expect_same_params(const SimParams& a, const SimParams& b) {
     EXPECT_EQ(a.variable_dt, b.variable_dt);
     EXPECT_EQ(a.st_delta, b.st_delta);
     EXPECT_EQ(a.drive_release_crossing, b.drive_release_crossing);
+    EXPECT_EQ(a.drive_release_landed, b.drive_release_landed);
     EXPECT_EQ(a.domain_box, b.domain_box);
     EXPECT_EQ(a.geometry, b.geometry);
     EXPECT_EQ(a.periodic_z, b.periodic_z);
@@ -423,8 +425,9 @@ TEST(Checkpoint, MissingDatasetOrAttributeIsNamed) {
     const SimParams pre_jet = read_checkpoint(dir).params;
     EXPECT_EQ(pre_jet.drive_u, 0.0);
     // and a file from before nozzle.release: the step's release
-    write_sample_without(dir, "/parameters", {"drive_release_crossing"});
+    write_sample_without(dir, "/parameters", {"drive_release_crossing", "drive_release_landed"});
     EXPECT_FALSE(read_checkpoint(dir).params.drive_release_crossing);
+    EXPECT_FALSE(read_checkpoint(dir).params.drive_release_landed);
     EXPECT_FALSE(pre_jet.domain_box);
 
     // A run state from before the renormalised continuity's reach: everywhere (0), as then.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -138,6 +139,57 @@ TEST(CoreNozzleDrive, ReleaseAtTheCrossingAddsTheTimePastTheLine) {
                 }
             }
             EXPECT_EQ(crossed, 6) << "integrator " << integrator << ", release " << release;
+        }
+    }
+}
+
+// nozzle.release = "landed" (release = 2): the plug's last row starts 33 um upstream of the orifice
+// line, r = 132 us of travel at u0 = 0.25 m/s from it; asked for steps of 10 us, the core cuts r
+// (plus the LAND_PAST of 1e-7 step, 1 ps) into ceiling(r / dt) = 14 equal steps and returns each
+// in info.dt: the row crosses the line at the 14th step's end, within 1e-12 m (u0 times LAND_PAST
+// of a step, 2.5e-13 m, plus round-off), with -u0 plus 1 ps of its acceleration, as the crossing's
+// release gives (1e-9 m/s here, where the block's free rows feel 1e3 m/s^2). A
+// fixed step keeps its size (info.dt_next = the step asked); a variable one is never lengthened
+// (but for the landing's slack of a millionth).
+// Both integrators; the next row, 1 mm upstream, is then 4 ms = 400 steps away: the step asked
+// again (to round-off: 400 steps, not 401, whichever side of 400 steps round-off puts it).
+TEST(CoreNozzleDrive, LandedStepsCarryEachRowToTheLine) {
+    const double u0 = 0.25, dt = 1e-5, t_past = 1e-7 * dt;
+    for (const int integrator : {1, 2}) {
+        for (const int variable : {0, 1}) {
+            Block b = block(u0, -u0, -0.0005 + 33e-6);
+            auto prm = drive_params(u0);
+            prm.numerics.integrator = integrator;
+            prm.time_step.variable_dt = variable;
+            prm.nozzle.release = 2;
+            auto arr = b.ps.bind();
+            ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
+            void* ws = sph_workspace_create();
+            const std::size_t row = 5 * 7;  // the leading row's first particle (z = 33 um)
+            std::vector<double> taken;
+            double asked = dt;
+            for (int k = 0; k < 20 && b.ps.z[row] > 0.0; ++k) {
+                sph_step_info_t info{};
+                info.dt = asked;
+                ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
+                EXPECT_LE(info.dt, asked * (1 + 1e-6)) << "step " << k;  // LAND_SLACK
+                if (variable == 0) EXPECT_EQ(info.dt_next, asked) << "step " << k;
+                taken.push_back(info.dt);
+                asked = variable == 0 ? dt : std::min(dt, info.dt_next);
+            }
+            const std::string what = "integrator " + std::to_string(integrator) + ", variable " + std::to_string(variable);
+            EXPECT_LT(b.ps.z[row], 0.0) << what;
+            EXPECT_GT(b.ps.z[row], -1e-12) << what;
+            EXPECT_NEAR(b.ps.w[row], -u0 + t_past * (b.ps.az[row] + prm.gravity.gz), 1e-14) << what;
+            if (variable == 0) {
+                ASSERT_EQ(taken.size(), 14U) << what;
+                for (const double t : taken) EXPECT_NEAR(t, (132e-6 + t_past) / 14, 1e-18) << what;
+                sph_step_info_t next{};
+                next.dt = dt;
+                ASSERT_EQ(sph_step(ws, &prm, &arr, &next), SPH_OK);
+                EXPECT_NEAR(next.dt, dt, 1e-16) << what;
+            }
+            sph_workspace_destroy(ws);
         }
     }
 }

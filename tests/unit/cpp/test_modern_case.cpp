@@ -669,6 +669,8 @@ const BadCase kBad[] = {
      {"nozzle.axis", "unknown value", "\"down\""}},
     {"NozzleUnknownRelease", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\nrelease = \"early\"\n",
      {"nozzle.release", "unknown value", "\"crossing\"", "early"}},
+    {"NozzleLandedParabolic", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\nprofile = \"parabolic\"\nrelease = \"landed\"\n",
+     {"nozzle.release", "cross it at different times", "with nozzle.profile = \"plug\"", "nozzle.profile = \"parabolic\""}},
     {"BreakupWithoutNozzle", "", "[breakup]\nstop_after = 0.1\n", {"breakup", "needs a jet", "[nozzle]"}},
     {"BreakupLinkZero", "", "[nozzle]\nx0 = 0.25\nz0 = 0.1\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.25\n[breakup]\nlink_over_h = 0\n",
      {"breakup.link_over_h", "must be positive"}},
@@ -806,6 +808,12 @@ TEST(ModernCaseRoundTrip, Jet) {
     EXPECT_EQ(c.nozzle->release, NozzleRelease::Crossing);
     EXPECT_TRUE(c.params.drive_release_crossing);
     expect_round_trip(c);
+    // nozzle.release = "landed": the crossing's release with the steps landed on the crossings.
+    const CaseSpec l = parse_modern_case(std::string(kMinimal) + jet, "jet.toml", {"nozzle.release=\"landed\""});
+    EXPECT_EQ(l.nozzle->release, NozzleRelease::Landed);
+    EXPECT_TRUE(l.params.drive_release_crossing);
+    EXPECT_TRUE(l.params.drive_release_landed);
+    expect_round_trip(l);
     // Axis "right" and the defaults of [breakup] (none given).
     const CaseSpec r = parse_modern_case(
         std::string(kMinimal) + "[nozzle]\nx0 = 0.2\nz0 = 0.3\naxis = \"right\"\nd0 = 0.02\nlength_over_d0 = 5\nu0 = 0.1\n",
