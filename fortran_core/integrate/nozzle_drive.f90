@@ -95,10 +95,9 @@ contains
   !> end, LAND_PAST dt past it, and turns free there with no lag. The time to that crossing, r, is
   !> cut into n = ceiling(r / dt (1 - LAND_SLACK)) equal steps; each call takes the first of them,
   !> so the steps between two rows' crossings are equal while dt holds, and never longer than dt
-  !> (but for LAND_SLACK). dt itself
-  !> where nothing is driven or the profile is parabolic (its lines cross at different times).
-  !> The plug speed is this step's (prm%nozzle%u), so a disturbed plug lands as well at the
-  !> step that reaches the line.
+  !> (but for LAND_SLACK). dt itself where nothing is driven or the profile is parabolic (its
+  !> lines cross at different times). The plug speed is this step's (prm%nozzle%u), so a
+  !> disturbed plug lands as well at the step that reaches the line.
   real(rp) function landed_step(prm, st, dt) result(dt_land)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(in) :: st

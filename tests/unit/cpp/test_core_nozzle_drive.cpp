@@ -194,6 +194,33 @@ TEST(CoreNozzleDrive, LandedStepsCarryEachRowToTheLine) {
     }
 }
 
+// A disturbed plug (its speed set anew before each step, as the driver does with
+// nozzle.disturbance): each landing reads the speed of its own step, so the step that reaches the
+// line lands the row there as exactly as with a steady plug, whatever the speeds before it.
+TEST(CoreNozzleDrive, LandedStepsFollowADisturbedPlug) {
+    const double u0 = 0.25, dt = 1e-5;
+    Block b = block(u0, -u0, -0.0005 + 33e-6);
+    auto prm = drive_params(u0);
+    prm.numerics.integrator = 2;
+    prm.nozzle.release = 2;
+    auto arr = b.ps.bind();
+    ASSERT_EQ(sph_prepare(&prm, &arr), SPH_OK);
+    void* ws = sph_workspace_create();
+    const std::size_t row = 5 * 7;
+    int steps = 0;
+    for (; steps < 30 && b.ps.z[row] > 0.0; ++steps) {
+        prm.nozzle.u = u0 * (1.0 + 0.05 * std::sin(1.3 * steps));
+        sph_step_info_t info{};
+        info.dt = dt;
+        ASSERT_EQ(sph_step(ws, &prm, &arr, &info), SPH_OK);
+    }
+    sph_workspace_destroy(ws);
+    EXPECT_GT(steps, 10);
+    EXPECT_LT(steps, 30);
+    EXPECT_LT(b.ps.z[row], 0.0);
+    EXPECT_GT(b.ps.z[row], -1e-12);
+}
+
 // A parabolic profile (profile_a > 0): a driven particle at distance l from the axis moves at
 // u0 k (1 - l^2 / a^2), l capped at profile_lmax (so the column beside the strip's edge line, at
 // l = 2.5 mm, and the one at the edge line itself move alike), and holds the density profile_rho
