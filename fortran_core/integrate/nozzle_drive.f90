@@ -31,14 +31,19 @@ module nozzle_drive
 
 contains
 
+  !> The signed distance of (x, z) past the orifice line along the jet axis, s = (r - r0) . e.
+  pure real(rp) function past_orifice(prm, x, z)
+    type(sph_params_t), intent(in) :: prm
+    real(rp), intent(in) :: x, z
+    past_orifice = (x - prm%nozzle%x0) * prm%nozzle%ex + (z - prm%nozzle%z0) * prm%nozzle%ez
+  end function past_orifice
+
   pure logical function in_driven_nozzle(prm, x, z)
     type(sph_params_t), intent(in) :: prm
     real(rp), intent(in) :: x, z
-    real(rp) :: rx, rz
-    rx = x - prm%nozzle%x0
-    rz = z - prm%nozzle%z0
-    in_driven_nozzle = rx * prm%nozzle%ex + rz * prm%nozzle%ez < 0.0_rp .and. &
-                       abs(rx * prm%nozzle%ez - rz * prm%nozzle%ex) <= prm%nozzle%half_width
+    in_driven_nozzle = past_orifice(prm, x, z) < 0.0_rp .and. &
+                       abs((x - prm%nozzle%x0) * prm%nozzle%ez - (z - prm%nozzle%z0) * prm%nozzle%ex) &
+                       <= prm%nozzle%half_width
   end function in_driven_nozzle
 
   !> A fluid particle whose start-of-step position lies in a driven nozzle (in_driven_nozzle),
@@ -76,8 +81,7 @@ contains
     st%x(i) = st%xo(i) + dt2 * st%u(i)
     st%z(i) = st%zo(i) + dt2 * st%w(i)
     if (prm%nozzle%release >= 1 .and. speed > 0.0_rp) then
-      s_end = (st%xo(i) - prm%nozzle%x0) * prm%nozzle%ex + (st%zo(i) - prm%nozzle%z0) * prm%nozzle%ez &
-              + t_end * speed
+      s_end = past_orifice(prm, st%xo(i), st%zo(i)) + t_end * speed
       if (s_end > 0.0_rp) then
         t_out = min(s_end / speed, t_end)
         st%u(i) = st%u(i) + t_out * (st%ax(i) + prm%gravity%gx)
@@ -102,18 +106,17 @@ contains
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(in) :: st
     real(rp), intent(in) :: dt
-    real(rp) :: lead, s, r
+    real(rp) :: lead, r
     integer :: i
     dt_land = dt
     if (prm%nozzle%release /= NOZZLE_RELEASE_LANDED .or. .not. (prm%nozzle%u > 0.0_rp) &
         .or. prm%nozzle%profile_a > 0.0_rp) return
     lead = -huge(1.0_rp)
-    !$omp parallel do schedule(static) private(s) reduction(max:lead)
+    !$omp parallel do schedule(static) reduction(max:lead)
     do i = 1, st%n
       if (.not. moving_fluid(st, i)) cycle
       if (.not. in_driven_nozzle(prm, st%x(i), st%z(i))) cycle
-      s = (st%x(i) - prm%nozzle%x0) * prm%nozzle%ex + (st%z(i) - prm%nozzle%z0) * prm%nozzle%ez
-      lead = max(lead, s)
+      lead = max(lead, past_orifice(prm, st%x(i), st%z(i)))
     end do
     !$omp end parallel do
     if (lead == -huge(1.0_rp)) return
