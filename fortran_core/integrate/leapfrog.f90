@@ -23,13 +23,13 @@
 !> with them).
 module leapfrog
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-  use sphjet_kinds, only: rp, ip, GEOM_AXISYMMETRIC, SPH_ERR_ARGUMENT
+  use sphjet_kinds, only: rp, ip, SPH_ERR_ARGUMENT
   use sphjet_types, only: sph_params_t, state_t, sph_step_info_t
   use sphjet_kernels, only: kernel_t
   use sorted_state, only: sorted_t
   use rates, only: compute_rates
   use time_step, only: cfl_scan_t, cfl_add, cfl_time_step, capped_step
-  use state_checks, only: check_domain, fold_into_domain
+  use state_checks, only: check_domain, fold_into_domain, reflect_at_axis
   use fluid_update, only: eos_one, moving_fluid
   use nozzle_drive, only: in_driven_nozzle, plug_step
   implicit none
@@ -74,6 +74,7 @@ contains
       call half_kick(prm, st, i, dt)   ! the prediction
     end do
     !$omp end parallel do
+    call reflect_at_axis(prm, st)   ! a ring that crossed the axis, before its rates
 
     vmax = 0.0_rp
     call compute_rates(prm, kern, st, s, vmax)
@@ -97,16 +98,7 @@ contains
     info%visc_dt = vmax
     info%dt_next = merge(capped_step(prm, dt_new), dt, prm%time_step%variable_dt /= 0)
 
-    ! a particle reflected at the axis keeps rates that are its mirror image's
-    if (prm%geometry%kind == GEOM_AXISYMMETRIC) then
-      do i = 1, st%n
-        if (moving_fluid(st, i) .and. st%x(i) < 0.0_rp) then
-          st%ax(i) = -st%ax(i)
-          st%xsph_u(i) = -st%xsph_u(i)
-        end if
-      end do
-    end if
-    call fold_into_domain(prm, st)
+    call fold_into_domain(prm, st)   ! periodic z (the axis: reflect_at_axis above)
     call check_domain(prm, st, info%n_removed, info%bad_particle, status)
     if (info%n_removed > 0) then
       ! as the predictor-corrector: the pairs listed again, and the rates evaluated again

@@ -22,7 +22,7 @@ module predictor_corrector
   use time_step, only: cfl_scan_t, cfl_add, cfl_merge, cfl_time_step, capped_step
   use eos_tait, only: tait_pressure, tait_sound_speed
   use fluid_update, only: update_eos, moving_fluid, moves
-  use state_checks, only: check_domain, fold_into_domain
+  use state_checks, only: check_domain, fold_into_domain, reflect_at_axis
   use nozzle_drive, only: in_driven_nozzle, plug_step
   !$ use omp_lib, only: omp_get_thread_num, omp_get_num_threads
   implicit none
@@ -158,6 +158,7 @@ contains
     end if
 
     ! ---- corrector ----
+    call reflect_at_axis(prm, st)   ! a ring that crossed the axis in the half step
     call compute_rates(prm, kern, st, s, vmax_c)
     ! The corrector's half step, phi^{n+1} = 2 phi^{n+1/2} - phi^n, and the EoS of every
     ! non-boundary particle, in one pass (one barrier instead of three; the EoS once, of the

@@ -9,7 +9,7 @@ module state_checks
   use axisymmetric, only: ring_too_heavy
   implicit none
   private
-  public :: check_domain, check_finite, fold_into_domain, rings_to_split
+  public :: check_domain, check_finite, fold_into_domain, reflect_at_axis, rings_to_split
 
 contains
 
@@ -62,8 +62,37 @@ contains
     end do
   end subroutine check_domain
 
+  !> Axisymmetric mode, within a step, after its particles have moved and before the rates are
+  !> evaluated there: a fluid particle that has crossed the axis (x < 0) is reflected with what
+  !> the rest of the step uses of it, x, u and the start-of-step xo and uo (x -> -x and the
+  !> rest negated: it is now where its mirror image was, moving as that one; the evaluation
+  !> then sets its XSPH velocity anew). Evaluated at x < 0, the rings pair (domain.axis_pair =
+  !> "rings") took the ring for an axis image and gave it no pairs: its density rate only the
+  !> term of its own far side, no pressure force. In a drop the rings that cross the axis
+  !> gathered there, 2.5 times as dense as their densities said, until one ran out of the
+  !> density check's band (cases/round_jet/README.md). One thread (in an open team,
+  !> omp_team.f90: the one of a `single`, the others wait at its end).
+  subroutine reflect_at_axis(prm, st)
+    type(sph_params_t), intent(in) :: prm
+    type(state_t), intent(inout) :: st
+    integer :: i
+    if (prm%geometry%kind /= GEOM_AXISYMMETRIC) return
+    !$omp single
+    do i = st%nb + 1, st%n
+      if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
+      if (st%x(i) < 0.0_rp) then
+        st%x(i) = -st%x(i)
+        st%u(i) = -st%u(i)
+        st%xo(i) = -st%xo(i)
+        st%uo(i) = -st%uo(i)
+      end if
+    end do
+    !$omp end single
+  end subroutine reflect_at_axis
+
   !> After a step, before check_domain: in axisymmetric mode a fluid particle that crossed the
-  !> axis is reflected (x -> -x, u -> -u: it is now where its mirror image was); with a periodic
+  !> axis is reflected (x -> -x, u -> -u: it is now where its mirror image was; the
+  !> predictor-corrector's corrector can carry a ring across); with a periodic
   !> z a fluid particle beyond domain%zmax (below zmin) re-enters at the other end, z -+ lz.
   subroutine fold_into_domain(prm, st)
     type(sph_params_t), intent(in) :: prm
