@@ -20,6 +20,16 @@ Measurements (numpy + h5py, from the HDF5 snapshots of `sphjet run`):
                                         (and Lamb's damped value), while the drop is intact
   growth   RUN --sigma S --rho R0 --radius A --wavelength L [--nu NU]
                                         growth rate of the Fourier mode of r_s(z) vs Rayleigh
+  axis_density RUN [--within W] [--from T]
+                                        the rings pair's drift at the axis: for the fluid rings within
+                                        W dx (default 1) of the axis, their 3D SPH density
+                                        sum_b m_b Wr_ab (Wr the 3D kernel averaged over ring b's
+                                        azimuth, the first column's masses at 11/12 as in the core)
+                                        over the density they carry (the continuity's), per snapshot:
+                                        how many above 1.1 and 1.3, and the largest. Rings gathered at
+                                        the axis without their densities knowing show as ratios well
+                                        above 1; a ring whose kernel the surface cuts, below 1
+                                        (Wendland and cubic-spline runs)
   roughness RUN --radius A --period L --dx DX [--sigma S --rho R0 --nu NU]
                                         a periodic column that should stay as built: the standard
                                         deviation of r_s(z) over slices of DX (the outermost
@@ -129,6 +139,62 @@ def fluid(d):
 
 def volume(d):
     return float((d["m"] / d["rho"]).sum())
+
+
+# ---------------------------------------------------------------- axis_density
+def kernel_3d(name, h):
+    """The 3D-normalised kernel W(d) of the 2D kernel's shape (the rings pair's W3), support 2h."""
+    import numpy as np
+    if name == "wendland":
+        return lambda d: np.where(d < 2 * h, 21.0 / (16 * np.pi * h ** 3) * (1 - d / (2 * h)) ** 4 * (2 * d / h + 1), 0.0)
+    if name == "cubic_spline":
+        def w(d):
+            q = d / h
+            return np.where(q < 1, 1 - 1.5 * q ** 2 + 0.75 * q ** 3, np.where(q < 2, 0.25 * (2 - q) ** 3, 0.0)) / (np.pi * h ** 3)
+        return w
+    raise SystemExit(f"axis_density: the run's kernel is {name!r}; wendland and cubic_spline are supported")
+
+
+def ring_density(x, z, m, a, w3, h, nphi=400):
+    """sum_b m_b Wr_ab at ring a: the azimuthal mean of W3 by the midpoint rule over nphi points."""
+    import numpy as np
+    s2 = (x - x[a]) ** 2 + (z - z[a]) ** 2
+    near = s2 < 4 * h * h
+    phi = (np.arange(nphi) + 0.5) * np.pi / nphi
+    d = np.sqrt(s2[near][:, None] + 4 * x[a] * x[near][:, None] * np.sin(phi / 2) ** 2)
+    return float((m[near] * w3(d).mean(axis=1)).sum())
+
+
+def axis_density(a):
+    import h5py
+    import numpy as np
+    files = sorted(glob.glob(os.path.join(a.run, "snap_*.h5")))
+    if not files:
+        raise SystemExit(f"axis_density: no snap_*.h5 in {a.run}")
+    with h5py.File(files[0], "r") as f:
+        prm = f["parameters"].attrs
+        h, dx, rho0 = float(prm["h"]), float(prm["dx"]), float(prm["rho0"])
+        dz = float(prm["dz"]) if "dz" in prm else dx
+        kname = prm["kernel_name"]
+        kname = kname.decode() if isinstance(kname, bytes) else str(kname)
+    w3 = kernel_3d(kname, h)
+    m_axis = 2 * math.pi * rho0 * dx * dx * dz   # the core's axis_m1: lighter rings are the first column's
+    print(f"{a.run}: rings within {a.within:g} dx of the axis, 3D SPH density / carried density")
+    print("t [s]        rings  >1.1  >1.3   largest")
+    for path in files:
+        with h5py.File(path, "r") as f:
+            time = float(f.attrs["time"])
+            g = f["particles"]
+            keep = (g["kind"][()] == 2) & (g["active"][()] == 1)   # active fluid (removed drops stay in the arrays)
+            x, z, m, rho = (g[k][()][keep] for k in ("x", "z", "m", "rho"))
+        if time < a.t_from:
+            continue
+        mm = np.where(m < m_axis, m * 11.0 / 12.0, m)
+        near = np.flatnonzero(x < a.within * dx)
+        ratio = np.array([ring_density(x, z, mm, i, w3, h) / rho[i] for i in near])
+        big = float(ratio.max()) if len(ratio) else float("nan")
+        print(f"{time:.6f} {len(near):7d} {int((ratio > 1.1).sum()):5d} {int((ratio > 1.3).sum()):5d} {big:9.3f}")
+    return 0
 
 
 # ---------------------------------------------------------------- laplace
@@ -532,6 +598,10 @@ def main(argv=None):
     p.add_argument("--rho", type=float, default=1000.0)
     p.add_argument("--radius", type=float, required=True)
     p.add_argument("--from", dest="t_from", type=float, default=0.0)
+    p = sub.add_parser("axis_density")
+    p.add_argument("run")
+    p.add_argument("--within", type=float, default=1.0, help="rings within this many dx of the axis")
+    p.add_argument("--from", dest="t_from", type=float, default=0.0)
     p = sub.add_parser("theory")
     p.add_argument("ka", type=float, nargs="+")
     a = ap.parse_args(argv)
@@ -541,7 +611,7 @@ def main(argv=None):
             print(f"ka={ka:.4f} omega2={o2:.6f} omega={math.copysign(math.sqrt(abs(o2)), o2):.6f}")
         return 0
     return {"laplace": laplace, "mode2": mode2, "growth": growth, "rest": rest, "roughness": roughness,
-            "curvature": curvature}[a.cmd](a)
+            "curvature": curvature, "axis_density": axis_density}[a.cmd](a)
 
 
 if __name__ == "__main__":
