@@ -184,11 +184,11 @@ def axis_density(a):
     for path in files:
         with h5py.File(path, "r") as f:
             time = float(f.attrs["time"])
+            if time < a.t_from:
+                continue
             g = f["particles"]
             keep = (g["kind"][()] == 2) & (g["active"][()] == 1)   # active fluid (removed drops stay in the arrays)
             x, z, m, rho = (g[k][()][keep] for k in ("x", "z", "m", "rho"))
-        if time < a.t_from:
-            continue
         mm = np.where(m < m_axis, m * 11.0 / 12.0, m)
         near = np.flatnonzero(x < a.within * dx)
         ratio = np.array([ring_density(x, z, mm, i, w3, h) / rho[i] for i in near])

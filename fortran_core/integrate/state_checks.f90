@@ -91,32 +91,25 @@ contains
   end subroutine reflect_at_axis
 
   !> After a step, before check_domain: in axisymmetric mode a fluid particle that crossed the
-  !> axis is reflected (x -> -x, u -> -u: it is now where its mirror image was; the
-  !> predictor-corrector's corrector can carry a ring across); with a periodic
-  !> z a fluid particle beyond domain%zmax (below zmin) re-enters at the other end, z -+ lz.
+  !> axis is reflected (reflect_at_axis: the predictor-corrector's corrector can carry a ring
+  !> across; its start-of-step values, negated too, are set afresh by the next step); with a
+  !> periodic z a fluid particle beyond domain%zmax (below zmin) re-enters at the other end,
+  !> z -+ lz.
   subroutine fold_into_domain(prm, st)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer :: i
     real(rp) :: lz
-    logical :: axi, per
-    axi = prm%geometry%kind == GEOM_AXISYMMETRIC
-    per = prm%geometry%periodic_z /= 0
-    if (.not. (axi .or. per)) return
+    call reflect_at_axis(prm, st)
+    if (prm%geometry%periodic_z == 0) return
     lz = prm%domain%zmax - prm%domain%zmin
     !$omp parallel do schedule(static)
     do i = st%nb + 1, st%n
       if (st%active(i) == 0 .or. st%kind(i) /= KIND_FLUID) cycle
-      if (axi .and. st%x(i) < 0.0_rp) then
-        st%x(i) = -st%x(i)
-        st%u(i) = -st%u(i)
-      end if
-      if (per) then
-        if (st%z(i) >= prm%domain%zmax) then
-          st%z(i) = st%z(i) - lz
-        else if (st%z(i) < prm%domain%zmin) then
-          st%z(i) = st%z(i) + lz
-        end if
+      if (st%z(i) >= prm%domain%zmax) then
+        st%z(i) = st%z(i) - lz
+      else if (st%z(i) < prm%domain%zmin) then
+        st%z(i) = st%z(i) + lz
       end if
     end do
     !$omp end parallel do
