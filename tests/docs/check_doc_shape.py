@@ -6,7 +6,8 @@ Usage: check_doc_shape.py SOURCE_DIR
 - README.md has at most 300 lines, and no cell of a table in it is longer than 300 characters
   (the findings behind a figure belong in docs/ or a case README, not in a table cell);
 - every cases/*/README.md opens (after its title) with a summary paragraph that starts with
-  `**Summary.**` and has at most 10 lines: what the case is, against what, where it stands.
+  `**Summary.**` and has at most 10 lines of at most 160 characters each: what the case is,
+  against what, where it stands (a line count alone lets one line grow without bound).
 Prints each breach as FILE:LINE: what, and exits 1 if there is any.
 """
 import glob
@@ -14,7 +15,7 @@ import os
 import re
 import sys
 
-MAX_LINES, MAX_CELL, MAX_SUMMARY = 300, 300, 10
+MAX_LINES, MAX_CELL, MAX_SUMMARY, MAX_SUMMARY_LINE = 300, 300, 10, 160
 
 
 def main():
@@ -46,6 +47,10 @@ def main():
         end = next((i for i in range(first, len(text)) if not text[i].strip()), len(text))
         if end - first > MAX_SUMMARY:
             bad.append(f"{rel}:{first + 1}: a summary of {end - first} lines, at most {MAX_SUMMARY}")
+        for i in range(first, end):
+            if len(text[i]) > MAX_SUMMARY_LINE:
+                bad.append(f"{rel}:{i + 1}: a summary line of {len(text[i])} characters, "
+                           f"at most {MAX_SUMMARY_LINE}")
     for b in bad:
         print(b)
     print(f"README.md {len(lines)} lines; {len(glob.glob(os.path.join(source, 'cases', '*', 'README.md')))} "
