@@ -18,6 +18,15 @@ is Weber's law's picture (L/d0 = C sqrt(We_d)(1 + 3 Oh_d) up to the constant of 
 Absolute instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not
 in this local picture; where the jet speeds up past it, the convective part is what this
 integrates. With --c C it also prints the lengths that C gives with and without gravity.
+
+Whether a slow jet forms at all, or the tube drips, it prints from Clanet & Lasheras (1999, JFM
+383, 307): a liquid injected downward jets above the Weber number
+  We_c = 4 (Bo / Bo_o) [1 + K Bo Bo_o - sqrt((1 + K Bo Bo_o)^2 - 1)]^2,
+Bo = d sqrt(rho g / (2 sigma)) on the tube's inner diameter, Bo_o on its outer one (where the
+meniscus holds), K = 0.37 for water in air; We = rho U^2 d_in / sigma, the study's We_d. Its two
+rims: the outer diameter at the jet's own (a tube without a wall, as sphjet's nozzle, which has
+no face at the orifice), and --d-out (default 1.651 mm, a 16-gauge regular-wall hypodermic
+tube, whose bore is the measured tube's 1.194 mm; the data do not state the tube's wall).
 """
 import argparse
 import math
@@ -28,6 +37,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from axisymmetric import weber_omega  # noqa: E402
 from round_jet_study import D0_MC, G_FALL, MU, RHO, SIGMA, read_mc  # noqa: E402
 
+K_CL = 0.37        # Clanet & Lasheras's constant for water in air
+D_OUT_16G = 1.651e-3  # outer diameter of 16-gauge regular-wall hypodermic tubing [m] (bore 1.194 mm)
 GRID = 1200        # points along the jet, 0 .. 2 L_max: N by the trapezoid rule (1e-6 relative)
 L_MAX_D0 = 400.0   # the longest jet it integrates [d0]
 
@@ -50,6 +61,19 @@ def omega_max(a):
             x1 = hi - r * (hi - lo)
             f1 = weber_omega(x1, oh)
     return max(f1, f2) * math.sqrt(SIGMA / (RHO * a ** 3))
+
+
+def critical_weber(d_in, d_out, g):
+    """Clanet & Lasheras's (1999) Weber number rho U^2 d_in / sigma above which a tube of inner
+    diameter d_in and outer d_out [m], pointing down under gravity g [m/s^2], jets rather than
+    drips (the module's docstring has the formula)."""
+    if not 0.0 < d_in <= d_out:
+        raise ValueError(f"tube diameters: expected 0 < d_in <= d_out, found {d_in:g}, {d_out:g}")
+    scale = math.sqrt(RHO * g / (2.0 * SIGMA))
+    bo, bo_out = d_in * scale, d_out * scale
+    x = 1.0 + K_CL * bo * bo_out
+    # x - sqrt(x^2 - 1) written as 1 / (x + sqrt(x^2 - 1)), which loses no digits as g -> 0
+    return 4.0 * (d_in / d_out) / (x + math.sqrt(x * x - 1.0)) ** 2
 
 
 class Jet:
@@ -80,7 +104,7 @@ class Jet:
         return None
 
 
-def table(g, c=None):
+def table(g, c=None, d_out=D_OUT_16G):
     a0 = 0.5 * D0_MC
     head = "| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity |"
     sep = "|---|---|---|---|---|"
@@ -110,6 +134,16 @@ def table(g, c=None):
     lines.append(f"C = ln(a/delta0) the measured lengths ask for (g = {g:g} m/s^2 along the jet):")
     lines.append(f"  without gravity: {spread(cs0)}")
     lines.append(f"  with gravity:    {spread(csg)}")
+    if g > 0:
+        lines.append("")
+        lines.append(f"Dripping or jetting (Clanet & Lasheras 1999, K = {K_CL:g}): a tube jets above We_c")
+        speeds = [u for u, _ in read_mc()]
+        for what, dout in (("rim at the jet's edge (d_out = d0, no tube wall)", D0_MC),
+                           (f"d_out = {d_out * 1e3:.3f} mm", d_out)):
+            wc = critical_weber(D0_MC, dout, g)
+            drip = [f"{u:.4f}" for u in speeds if RHO * u * u * D0_MC / SIGMA < wc]
+            lines.append(f"  {what}: We_c = {wc:.2f}; measured speeds below it: "
+                         f"{', '.join(drip) if drip else 'none'}")
     return "\n".join(lines)
 
 
@@ -117,12 +151,16 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--g", type=float, default=G_FALL, help=f"gravity along the jet [m/s^2] (default {G_FALL:g})")
     ap.add_argument("--c", type=float, default=None, help="also print the lengths this ln(a/delta0) gives")
+    ap.add_argument("--d-out", type=float, default=D_OUT_16G,
+                    help=f"the tube's outer diameter [m] for the dripping criterion (default {D_OUT_16G:g})")
     args = ap.parse_args(argv)
+    if not args.d_out >= D0_MC:
+        ap.error(f"--d-out {args.d_out}: expected at least the bore, {D0_MC:g} m")
     if not args.g >= 0:
         ap.error(f"--g {args.g}: expected >= 0 (along the jet)")
     if args.c is not None and not args.c > 0:
         ap.error(f"--c {args.c}: expected a positive number")
-    print(table(args.g, args.c))
+    print(table(args.g, args.c, args.d_out))
     return 0
 
 

@@ -13,6 +13,12 @@
   radius or the speed moves N by tens of per cent.
 - length() must invert exponent(): the z at which N reaches N(z) is z to 1e-6 relative (the
   linear interpolation of a linear function between grid points).
+- critical_weber() (Clanet & Lasheras's dripping-to-jetting Weber number) against its expansion
+  in eps = K Bo Bo_o, written out by hand: We_c / (4 d_in / d_out) = 1 - 2 sqrt(2 eps) + 4 eps
+  + O(eps^(3/2)). At eps = 1e-4 the dropped terms are about 1e-6, so 1e-5 relative separates the
+  formula from a slip in a factor (a factor 2 in eps moves it by about 1e-2). At eps = 1e-12
+  (g -> 0) it must be 4 d_in / d_out less the expansion's 2.8e-6, within 1e-6; it must fall as
+  g grows, and refuse d_out < d_in.
 """
 import os
 import sys
@@ -50,6 +56,25 @@ for u, l_d0 in ((0.3441, 31.85), (0.7814, 67.52), (1.5699, 94.96)):
           f"gravity, {u} m/s: N = {n:.4f} within 1% below the inviscid scaling's {closed:.4f}")
     back = jet.length(n)
     check(abs(back / z - 1.0) < 1e-6, f"gravity, {u} m/s: length(N(L)) = L ({back:.9g} against {z:.9g})")
+
+d = jgt.D0_MC
+for ratio in (1.0, 1.383):
+    for eps in (1e-12, 1e-4):
+        # eps = K Bo Bo_o = K d^2 ratio rho g / (2 sigma): the g that gives it
+        g = eps * 2.0 * jgt.SIGMA / (jgt.K_CL * d * d * ratio * jgt.RHO)
+        got = jgt.critical_weber(d, ratio * d, g) / (4.0 / ratio)
+        series = 1.0 - 2.0 * (2.0 * eps) ** 0.5 + 4.0 * eps
+        tol = 1e-6 if eps < 1e-6 else 1e-5
+        check(abs(got - series) < tol,
+              f"We_c, d_out/d_in {ratio}, eps {eps:g}: {got:.8f} of 4 d_in/d_out against the "
+              f"expansion's {series:.8f}")
+wcs = [jgt.critical_weber(d, 1.383 * d, g) for g in (0.1, 1.0, 9.81, 100.0)]
+check(all(a > b for a, b in zip(wcs, wcs[1:])), f"We_c falls as g grows: {', '.join(f'{w:.3f}' for w in wcs)}")
+try:
+    jgt.critical_weber(d, 0.9 * d, 9.81)
+    check(False, "d_out < d_in refused")
+except ValueError as e:
+    check("d_in <= d_out" in str(e), f"d_out < d_in refused: {e}")
 
 if failures:
     print(f"{len(failures)} check(s) failed")
