@@ -341,7 +341,9 @@ contains
   !> balance: with the key on every ring the falling round-jet study (d0/dx 10, column starts)
   !> stopped on the density check in 3 of its 20 runs, each at rings gathered at the axis of a
   !> drop past the jet's end; along the jet only, in none (cases/round_jet/README.md, "The
-  !> falling study").
+  !> falling study"). Those stops were measured before the rings that cross the axis were
+  !> reflected ahead of the rates (5dfe57e), which alone gathered rings at a drop's axis; the
+  !> key on every ring has not been measured since.
   pure real(rp) function within_reach(prm, x, z)
     type(sph_params_t), intent(in) :: prm
     real(rp), intent(in) :: x, z
