@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -71,6 +71,10 @@ the step changes only where the CFL and force conditions ask for less than the c
 --landed frees each of the plug's rows exactly at the orifice line (nozzle.release = "landed";
 suffix _land): the steps are shortened where needed so that the rows cross it at a step's end.
 The release's jitter, not the step's, was what seeded the jets ("Rows that turn free on the line").
+--renormalise-margin M (with --gravity; suffix _marginM) stops the renormalised continuity M d0
+short of the jet's intact end (domain.renormalise_margin_d0): at the end, where the next drop
+forms, it let rings gather at the axis with too low a carried density ("Rings that gather at a
+drop's axis").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -452,7 +456,7 @@ def plan(opts):
     the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
     starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
     fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
-    landed: nozzle.release = "landed"."""
+    landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -488,6 +492,8 @@ def plan(opts):
         extra += [e for e in FALLING_SETS if not (opts.landed and e.startswith("nozzle.release="))]
     if opts.landed:
         extra.append("nozzle.release=landed")
+    if opts.margin is not None:
+        extra.append(f"domain.renormalise_margin_d0={opts.margin:g}")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -535,7 +541,8 @@ def study_flags(opts):
             + (" --gravity" if opts.gravity else "")
             + ("" if opts.fixed_step is None else f" --fixed-step {opts.fixed_step:g}")
             + ("" if opts.step_cap is None else f" --step-cap {opts.step_cap:g}")
-            + (" --landed" if opts.landed else ""))
+            + (" --landed" if opts.landed else "")
+            + ("" if opts.margin is None else f" --renormalise-margin {opts.margin:g}"))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -553,7 +560,8 @@ def study_dir(opts):
             + ("" if opts.window == WINDOW_LENGTH else f"_w{opts.window:g}")
             + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}")
             + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}")
-            + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else ""))
+            + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
+            + ("" if opts.margin is None else f"_margin{opts.margin:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -942,6 +950,9 @@ def parse(argv=None):
                        help="free the plug's rows exactly at the orifice line, the steps shortened where "
                             "needed so that they cross it at a step's end (nozzle.release = \"landed\"; "
                             "suffix _land)")
+        p.add_argument("--renormalise-margin", dest="margin", type=float, default=None, metavar="M",
+                       help="with --gravity: the renormalised continuity stops M d0 short of the jet's "
+                            "intact end (domain.renormalise_margin_d0; default: at the end; suffix _marginM)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -988,6 +999,9 @@ def parse(argv=None):
     if args.gravity and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
         ap.error("--gravity renormalises the rings pair's continuity (domain.renormalise_ring_continuity): "
                  "give --axis-pair rings, rings_own or rings_fit")
+    if args.margin is not None and not (args.gravity and args.margin > 0):
+        ap.error(f"--renormalise-margin {args.margin:g}: expected a positive number of d0 with --gravity "
+                 "(the margin of its renormalised continuity)")
     if args.leapfrog and not args.quiet_exit:
         ap.error("--leapfrog needs the bulk viscosity of --quiet-exit (numerics.integrator = \"leapfrog\" "
                  "is refused without numerics.bulk_viscosity > 0)")

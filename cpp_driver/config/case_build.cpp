@@ -597,6 +597,18 @@ CaseSpec build_case(const Ctx& ctx, const toml::table& root) {
     const Box box{p.lx, p.lz};
     read_structures(top, spec, box);
     read_jet(ctx, top, spec, box);
+    if (p.renormalise_margin_d0 > 0) {
+        const Section dom = top.sub("domain");
+        if (!p.renormalise_ring_continuity)
+            throw InputError(ctx.where(dom.key_path("renormalise_margin_d0")),
+                             "domain.renormalise_margin_d0 stops the renormalised continuity short of a jet's end",
+                             "domain.renormalise_ring_continuity = true with domain.renormalise_margin_d0 > 0",
+                             "domain.renormalise_ring_continuity = false");
+        if (!spec.nozzle)
+            throw InputError(ctx.where(dom.key_path("renormalise_margin_d0")),
+                             "domain.renormalise_margin_d0 is counted from a jet's end in its nozzle's diameters",
+                             "a [nozzle] with domain.renormalise_margin_d0 > 0", "no [nozzle]");
+    }
     read_fluid_shapes(ctx, fluid, spec, box);
     if (spec.legacy_fill && p.h_swl <= 0)
         throw InputError(ctx.where(fluid.key_path("h_swl")), "missing required key",

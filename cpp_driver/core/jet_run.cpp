@@ -132,7 +132,8 @@ JetRun::Check JetRun::sample(const ParticleSet& ps, double time, std::int64_t st
     // remove_beyond_ (never the jet: s.drops holds the other clusters only). The choice reads
     // the state at this check alone, which a checkpoint holds: a resumed run removes the same
     // drops at the same steps.
-    Check c{.sampled = true, .length = s.length, .gone = {}};
+    Check c{.sampled = true, .length = s.length,
+            .reach = renormalise_reach(s.length, spec_.params.renormalise_margin_d0, d0), .gone = {}};
     std::vector<std::size_t>& gone = c.gone;
     const double h = spec_.params.h;
     for (const analysis::Drop& q : s.drops) {

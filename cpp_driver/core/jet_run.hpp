@@ -10,6 +10,7 @@
 // are counted from removed_drops.csv.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -25,6 +26,15 @@
 
 namespace sphjet {
 
+// How far from the orifice the renormalised continuity reaches along a jet of intact length
+// `length` [m] (none while the jet is unbroken): margin_d0 nozzle diameters d0 short of its end
+// (domain.renormalise_margin_d0), never below 0.
+[[nodiscard]] inline std::optional<double> renormalise_reach(std::optional<double> length, double margin_d0,
+                                                             double d0) {
+    if (!length) return std::nullopt;
+    return std::max(*length - margin_d0 * d0, 0.0);
+}
+
 class JetRun {
 public:
     using Log = std::function<void(const std::string&)>;
@@ -36,6 +46,9 @@ public:
     struct Check {
         bool sampled = false;              // a sample was taken
         std::optional<double> length;      // the jet's intact length [m], when broken
+        std::optional<double> reach;       // length less domain.renormalise_margin_d0 nozzle
+                                           // diameters (at least 0): how far the renormalised
+                                           // continuity reaches, when broken
         std::vector<std::size_t> gone;     // the particles of the drops to remove (empty unless
                                            // remove_drops_below_h or remove_drops_beyond_d0 is set
                                            // and the check found such a drop)

@@ -454,10 +454,11 @@ std::string step_once(Solver& solver, RunOutputs& out, std::optional<JetRun>& je
     if (jet) {
         const JetRun::Check c = jet->after_step(solver.particles(), st.time, st.step, output_due);
         if (!c.gone.empty()) (void)solver.deactivate(c.gone);
-        // the renormalised continuity along the intact jet alone (RunState::renormalise_reach);
-        // a gap at the orifice itself leaves none
+        // the renormalised continuity along the intact jet alone, short of its end by
+        // domain.renormalise_margin_d0 (RunState::renormalise_reach); a gap at the orifice itself,
+        // or a jet no longer than the margin, leaves none
         if (c.sampled)
-            st.renormalise_reach = c.length ? std::max(*c.length, std::numeric_limits<double>::min()) : 0.0;
+            st.renormalise_reach = c.reach ? std::max(*c.reach, std::numeric_limits<double>::min()) : 0.0;
         (void)solver.append_fluid(jet->refill(solver.particles()), /*plug_rows=*/true);
     }
     (void)solver.split_heavy_rings();

@@ -280,6 +280,13 @@ const Param kParams[] = {
             "kernel's responses to the two, so that a stretch without a change of volume leaves the density alone "
             "where the surface cuts the kernel; with a `[nozzle]`, along the intact jet only",
      .legacy = "(none)", .hand = kRead, .h5_optional = true},
+    {.key = "domain.renormalise_margin_d0", .attr = "renormalise_margin_d0", .type = K::Float, .unit = "1",
+     .member = member<&SimParams::renormalise_margin_d0>(), .range = kNonNegative, .def = "0",
+     .allowed = "> 0 needs `renormalise_ring_continuity = true` and a `[nozzle]`",
+     .doc = "along a jet the renormalised continuity stops this many nozzle diameters short of the jet's intact "
+            "end instead of at it, so that the end, where the next drop forms and the rings move as in a drop, "
+            "keeps the rings pair's own continuity",
+     .legacy = "(none)", .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),
      .allowed = "needs `geometry = \"axisymmetric\"`; `\"rings\"` needs h >= 2 dx",

@@ -263,6 +263,9 @@ struct SimParams {
     // The rings pair's continuity renormalised along r and z (case key
     // domain.renormalise_ring_continuity; fortran_core/loops/axisymmetric_loops.f90).
     bool renormalise_ring_continuity = false;
+    // Along a jet it stops this many nozzle diameters short of the jet's end, not at the end
+    // (case key domain.renormalise_margin_d0; JetRun::Check::reach).
+    double renormalise_margin_d0 = 0.0;
     // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
     // The normals of the free-surface curvature (case key surface_tension.curvature_normals).

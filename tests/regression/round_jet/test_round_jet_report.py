@@ -9,7 +9,8 @@ window from a run's own length (own_window, on a synthetic jet that grows and th
 one that keeps growing); `--column` sizes each run's starting column from its L_ref; `--gravity`
 makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
 and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
-release on the orifice line.
+release on the orifice line, `--renormalise-margin` the margin of the renormalised continuity
+(with --gravity only).
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -352,6 +353,19 @@ def main():
               and "eps0.01_n10_rings_g_cap0.6_land " in p.stdout, f"--landed --gravity: {p.stdout[:400]}")
         check(rjs.study_flags(rjs.parse(["report", "--landed"])) == " --eps 0.01 --d0-over-dx 10 --landed",
               "the report's run command with --landed")
+        # --renormalise-margin M: every falling run's domain.renormalise_margin_d0, in a directory
+        # of its own; refused without --gravity (whose renormalised continuity it stops short)
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--gravity",
+                            "--axis-pair", "rings", "--renormalise-margin", "2", "--set-name", "mc"],
+                           capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all("--set domain.renormalise_margin_d0=2" in ln for ln in steps)
+              and "eps0.01_n10_rings_g_margin2 " in p.stdout, f"--renormalise-margin: {p.stdout[:400]}")
+        check(rjs.study_flags(rjs.parse(["report", "--axis-pair", "rings", "--gravity", "--renormalise-margin", "2"]))
+              == " --eps 0.01 --d0-over-dx 10 --axis-pair rings --gravity --renormalise-margin 2",
+              "the report's run command with --renormalise-margin")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--renormalise-margin", "2"], capture_output=True, text=True)
+        check(p.returncode == 2 and "with --gravity" in p.stderr, f"--renormalise-margin alone: {p.stderr}")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",

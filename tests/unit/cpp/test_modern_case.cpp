@@ -14,6 +14,7 @@
 
 #include "config/legacy_case.hpp"
 #include "config/modern_case.hpp"
+#include "core/jet_run.hpp"
 #include "model/errors.hpp"
 
 namespace sphjet {
@@ -1022,6 +1023,63 @@ TEST(ModernCase, RenormaliseRingContinuity) {
     EXPECT_NE(e.find("domain.renormalise_ring_continuity"), std::string::npos) << e;
     EXPECT_NE(e.find("domain.axis_pair = \"rings\""), std::string::npos) << e;
     EXPECT_NE(e.find("smoothed_radius"), std::string::npos) << e;
+}
+
+// domain.renormalise_margin_d0 (cases/CASE_FORMAT.md): 0 by default; read with the renormalised
+// continuity and a [nozzle], written back and read again; refused without the renormalised
+// continuity or without a nozzle (naming the key and what it needs), and when negative.
+TEST(ModernCase, RenormaliseMarginD0) {
+    const std::string jet = R"([numerics]
+lattice = "sc"
+[domain]
+geometry = "axisymmetric"
+axis_pair = "rings"
+lx = 0.004
+lz = 0.03
+wall_left = false
+wall_right = false
+wall_bottom = false
+wall_top = false
+[fluid]
+c0 = 12.0
+[surface_tension]
+sigma = 0.072
+[nozzle]
+x0 = 0.0
+z0 = 0.025
+d0 = 0.002
+length_over_d0 = 1
+u0 = 0.8
+walls = false
+[resolution]
+dx = 0.0002
+h_over_dx = 2.0
+)";
+    EXPECT_EQ(parse_modern_case(jet, "jet.toml", {}).params.renormalise_margin_d0, 0.0);
+    const CaseSpec s = parse_modern_case(
+        jet, "jet.toml", {"domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=2"});
+    EXPECT_EQ(s.params.renormalise_margin_d0, 2.0);
+    expect_round_trip(s);
+    std::string e = error_of(jet, {"domain.renormalise_margin_d0=2"});
+    EXPECT_NE(e.find("domain.renormalise_margin_d0"), std::string::npos) << e;
+    EXPECT_NE(e.find("domain.renormalise_ring_continuity = true"), std::string::npos) << e;
+    e = error_of(jet, {"domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=-1"});
+    EXPECT_NE(e.find("domain.renormalise_margin_d0"), std::string::npos) << e;
+    e = error_of(kMinimal, {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false", "numerics.lattice=\"sc\"",
+                            "resolution.h_over_dx=2.0", "domain.axis_pair=\"rings\"",
+                            "domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=2"});
+    EXPECT_NE(e.find("domain.renormalise_margin_d0"), std::string::npos) << e;
+    EXPECT_NE(e.find("[nozzle]"), std::string::npos) << e;
+}
+
+// The renormalised continuity's reach along a jet (core/jet_run.hpp): the intact length less
+// the margin in nozzle diameters, never below 0, none while the jet is unbroken; margin 0
+// leaves the length itself (bit for bit: the runs made before the key are unchanged).
+TEST(JetRun, RenormaliseReach) {
+    EXPECT_FALSE(renormalise_reach(std::nullopt, 2.0, 0.001));
+    EXPECT_EQ(*renormalise_reach(0.0457, 0.0, 0.001194), 0.0457);
+    EXPECT_NEAR(*renormalise_reach(0.0457, 2.0, 0.001194), 0.0457 - 0.002388, 1e-15);
+    EXPECT_EQ(*renormalise_reach(0.002, 2.0, 0.001194), 0.0);
 }
 
 // numerics.bulk_viscosity (cases/CASE_FORMAT.md): off by default; read, written back and read
