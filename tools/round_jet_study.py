@@ -73,8 +73,8 @@ suffix _land): the steps are shortened where needed so that the rows cross it at
 The release's jitter, not the step's, was what seeded the jets ("Rows that turn free on the line").
 --renormalise-margin M (with --gravity; suffix _marginM) stops the renormalised continuity M d0
 short of the jet's intact end (domain.renormalise_margin_d0): at the end, where the next drop
-forms, it let rings gather at the axis with too low a carried density ("Rings that gather at a
-drop's axis").
+forms, it made the carried density of rings crowding the axis fall further behind their 3D
+density ("Rings that gather at a drop's axis").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
