@@ -1029,41 +1029,20 @@ TEST(ModernCase, RenormaliseRingContinuity) {
 // continuity and a [nozzle], written back and read again; refused without the renormalised
 // continuity or without a nozzle (naming the key and what it needs), and when negative.
 TEST(ModernCase, RenormaliseMarginD0) {
-    const std::string jet = R"([numerics]
-lattice = "sc"
-[domain]
-geometry = "axisymmetric"
-axis_pair = "rings"
-lx = 0.004
-lz = 0.03
-wall_left = false
-wall_right = false
-wall_bottom = false
-wall_top = false
-[fluid]
-c0 = 12.0
-[surface_tension]
-sigma = 0.072
-[nozzle]
-x0 = 0.0
-z0 = 0.025
-d0 = 0.002
-length_over_d0 = 1
-u0 = 0.8
-walls = false
-[resolution]
-dx = 0.0002
-h_over_dx = 2.0
-)";
-    EXPECT_EQ(parse_modern_case(jet, "jet.toml", {}).params.renormalise_margin_d0, 0.0);
+    // the round-jet case of cases/, with the rings pair
+    const std::string jet =
+        read_text(std::filesystem::path(SPHJET_SOURCE_DIR) / "cases" / "round_jet" / "round_jet.toml");
+    ASSERT_NE(jet.find("[nozzle]"), std::string::npos);
+    const std::string rings = "domain.axis_pair=\"rings\"";
+    EXPECT_EQ(parse_modern_case(jet, "jet.toml", {rings}).params.renormalise_margin_d0, 0.0);
     const CaseSpec s = parse_modern_case(
-        jet, "jet.toml", {"domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=2"});
+        jet, "jet.toml", {rings, "domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=2"});
     EXPECT_EQ(s.params.renormalise_margin_d0, 2.0);
     expect_round_trip(s);
-    std::string e = error_of(jet, {"domain.renormalise_margin_d0=2"});
+    std::string e = error_of(jet, {rings, "domain.renormalise_margin_d0=2"});
     EXPECT_NE(e.find("domain.renormalise_margin_d0"), std::string::npos) << e;
     EXPECT_NE(e.find("domain.renormalise_ring_continuity = true"), std::string::npos) << e;
-    e = error_of(jet, {"domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=-1"});
+    e = error_of(jet, {rings, "domain.renormalise_ring_continuity=true", "domain.renormalise_margin_d0=-1"});
     EXPECT_NE(e.find("domain.renormalise_margin_d0"), std::string::npos) << e;
     e = error_of(kMinimal, {"domain.geometry=\"axisymmetric\"", "domain.wall_left=false", "numerics.lattice=\"sc\"",
                             "resolution.h_over_dx=2.0", "domain.axis_pair=\"rings\"",
