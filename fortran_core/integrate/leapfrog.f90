@@ -98,7 +98,7 @@ contains
     info%visc_dt = vmax
     info%dt_next = merge(capped_step(prm, dt_new), dt, prm%time_step%variable_dt /= 0)
 
-    call fold_into_domain(prm, st)   ! periodic z (no ring is across the axis: reflected above)
+    call fold_into_domain(prm, st)   ! periodic z (the axis: reflected after the drift, above)
     call check_domain(prm, st, info%n_removed, info%bad_particle, status)
     if (info%n_removed > 0) then
       ! as the predictor-corrector: the pairs listed again, and the rates evaluated again

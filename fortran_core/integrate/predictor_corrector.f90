@@ -108,7 +108,8 @@ contains
     end if
 
     call move_gate(prm, st, info%time, dt)
-    call fold_into_domain(prm, st)   ! axis reflection, periodic z (nothing in planar runs)
+    call reflect_at_axis(prm, st)    ! the corrector can carry a ring across the axis
+    call fold_into_domain(prm, st)   ! periodic z
 
     info%visc_dt = vmax
     info%dt_next = merge(capped_step(prm, min(dt_p, dt_c)), dt, prm%time_step%variable_dt /= 0)

@@ -90,17 +90,14 @@ contains
     !$omp end single
   end subroutine reflect_at_axis
 
-  !> After a step, before check_domain: in axisymmetric mode a fluid particle that crossed the
-  !> axis is reflected (reflect_at_axis: the predictor-corrector's corrector can carry a ring
-  !> across; its start-of-step values, negated too, are set afresh by the next step); with a
-  !> periodic z a fluid particle beyond domain%zmax (below zmin) re-enters at the other end,
-  !> z -+ lz.
+  !> After a step, before check_domain: with a periodic z a fluid particle beyond domain%zmax
+  !> (below zmin) re-enters at the other end, z -+ lz. The axis is reflect_at_axis's, which each
+  !> integrator calls where a move can carry a ring across it.
   subroutine fold_into_domain(prm, st)
     type(sph_params_t), intent(in) :: prm
     type(state_t), intent(inout) :: st
     integer :: i
     real(rp) :: lz
-    call reflect_at_axis(prm, st)
     if (prm%geometry%periodic_z == 0) return
     lz = prm%domain%zmax - prm%domain%zmin
     !$omp parallel do schedule(static)
