@@ -104,6 +104,7 @@ module sphjet_types
     real(c_double) :: ring_mass_per_radius = 0.0_rp !< split_axis_rings: 2 pi rho0 dx dz [kg/m]; 0 = off
     integer(c_int) :: renormalise_continuity = 0 !< rings pair: 1 its continuity renormalised along r and z
     real(c_double) :: renormalise_reach = 0.0_rp !< > 0: renormalised only nearer the orifice than this [m]
+    integer(c_int) :: bound_xsph = 0         !< rings pair: 1 each ring's XSPH over max(1, its kernel sum)
   end type sph_geometry_t
 
   !> Body force (C struct sph_gravity_t).

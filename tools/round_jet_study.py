@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -75,6 +75,10 @@ The release's jitter, not the step's, was what seeded the jets ("Rows that turn 
 short of the jet's intact end (domain.renormalise_margin_d0): at the end, where the next drop
 forms, it made the carried density of rings crowding the axis fall further behind their 3D
 density ("Rings that gather at a drop's axis").
+--bound-xsph (with a rings --axis-pair; suffix _bx) divides each ring's XSPH correction by its
+planar kernel sum where that exceeds 1 (domain.bound_ring_xsph): near the axis, where that sum
+reached 2, the correction cancelled a ring's own velocity, which the pressure then drove without
+the ring moving ("A ring held at the axis").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -456,7 +460,8 @@ def plan(opts):
     the measured jets' sound speed and the Courant number (study_runs.numerics_sets); column: the
     starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
     fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
-    landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0)."""
+    landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
+    bound_xsph: domain.bound_ring_xsph."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -494,6 +499,8 @@ def plan(opts):
         extra.append("nozzle.release=landed")
     if opts.margin is not None:
         extra.append(f"domain.renormalise_margin_d0={opts.margin:g}")
+    if opts.bound_xsph:
+        extra.append("domain.bound_ring_xsph=true")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -542,7 +549,8 @@ def study_flags(opts):
             + ("" if opts.fixed_step is None else f" --fixed-step {opts.fixed_step:g}")
             + ("" if opts.step_cap is None else f" --step-cap {opts.step_cap:g}")
             + (" --landed" if opts.landed else "")
-            + ("" if opts.margin is None else f" --renormalise-margin {opts.margin:g}"))
+            + ("" if opts.margin is None else f" --renormalise-margin {opts.margin:g}")
+            + (" --bound-xsph" if opts.bound_xsph else ""))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -561,7 +569,8 @@ def study_dir(opts):
             + ("_own" if opts.own_window else "") + ("" if opts.column is None else f"_col{opts.column:g}")
             + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}")
             + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
-            + ("" if opts.margin is None else f"_margin{opts.margin:g}"))
+            + ("" if opts.margin is None else f"_margin{opts.margin:g}")
+            + ("_bx" if opts.bound_xsph else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -953,6 +962,9 @@ def parse(argv=None):
         p.add_argument("--renormalise-margin", dest="margin", type=float, default=None, metavar="M",
                        help="with --gravity: the renormalised continuity stops M d0 short of the jet's "
                             "intact end (domain.renormalise_margin_d0; default: at the end; suffix _marginM)")
+        p.add_argument("--bound-xsph", action="store_true",
+                       help="each ring's XSPH correction over its planar kernel sum where that exceeds 1 "
+                            "(domain.bound_ring_xsph; a rings --axis-pair; suffix _bx)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -1002,6 +1014,9 @@ def parse(argv=None):
     if args.margin is not None and not (args.gravity and args.margin > 0):
         ap.error(f"--renormalise-margin {args.margin:g}: expected a positive number of d0 with --gravity "
                  "(the margin of its renormalised continuity)")
+    if args.bound_xsph and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
+        ap.error("--bound-xsph bounds the XSPH of the rings pair's rings (domain.bound_ring_xsph): "
+                 "give --axis-pair rings, rings_own or rings_fit")
     if args.leapfrog and not args.quiet_exit:
         ap.error("--leapfrog needs the bulk viscosity of --quiet-exit (numerics.integrator = \"leapfrog\" "
                  "is refused without numerics.bulk_viscosity > 0)")

@@ -325,6 +325,7 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
     rings_switch("split_axis_rings", "splits the rings of the rings pair", p.split_axis_rings);
     rings_switch("renormalise_ring_continuity", "renormalises the rings pair's continuity",
                  p.renormalise_ring_continuity);
+    rings_switch("bound_ring_xsph", "bounds the XSPH correction of the rings pair's rings", p.bound_ring_xsph);
     // after [domain]: the key belongs to the rings pair's pressure-consistent CSF
     const Section st = top.sub("surface_tension");
     if (auto f = st.string("rings_curvature")) {

@@ -98,6 +98,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
         p.axis_pair == AxisPair::Rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dx * p.dz : 0.0;
     c.geometry.ring_mass_per_radius = p.split_axis_rings ? 2.0 * std::numbers::pi * p.rho0 * p.dx * p.dz : 0.0;
     c.geometry.renormalise_continuity = p.renormalise_ring_continuity ? 1 : 0;
+    c.geometry.bound_xsph = p.bound_ring_xsph ? 1 : 0;
 
     c.gravity.gx = p.gx;
     c.gravity.gz = p.gz;

@@ -266,6 +266,9 @@ struct SimParams {
     // Along a jet it stops this many nozzle diameters short of the jet's end, not at the end
     // (case key domain.renormalise_margin_d0; JetRun::Check::reach).
     double renormalise_margin_d0 = 0.0;
+    // Each ring's XSPH correction over its planar kernel sum where that exceeds 1 (case key
+    // domain.bound_ring_xsph; fortran_core/loops/axisymmetric_loops.f90).
+    bool bound_ring_xsph = false;
     // Its surface rows' curvature (case key surface_tension.rings_curvature; rings pair only).
     RingsCurvature rings_curvature = RingsCurvature::NeighbourMean;
     // The normals of the free-surface curvature (case key surface_tension.curvature_normals).

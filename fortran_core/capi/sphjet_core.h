@@ -117,6 +117,8 @@ typedef struct sph_geometry_t {
     int renormalise_continuity;  /* rings pair: 1 its continuity renormalised along r and z */
     double renormalise_reach;    /* > 0: renormalised only nearer the nozzle's orifice than this along
                                     its axis [m] (a jet's intact length), faded over the last 2h; <= 0: everywhere */
+    int bound_xsph;              /* rings pair: 1 each ring's XSPH correction divided by its planar kernel
+                                    sum where that exceeds 1 (axisymmetric_loops.f90) */
 } sph_geometry_t;
 
 typedef struct sph_gravity_t {

@@ -15,12 +15,17 @@
 !> pressure pair's truncation vector, which the CSF force needs, is left in s%axi_dx, s%axi_dz.
 !> With prm%geometry%renormalise_continuity (domain.renormalise_ring_continuity) the rings
 !> pair's density rate is renormalised along r and z (renormalised_rate), along a jet only up to
-!> its intact length (within_reach).
+!> its intact length (within_reach). With prm%geometry%bound_xsph (domain.bound_ring_xsph) the
+!> XSPH sums of the planar sweep are divided by each ring's planar kernel sum sum_b V_b W_ab
+!> where it exceeds 1 (ring_rates): near the axis a ring heavier than the first column's counts
+!> the planar mass m / (2 pi max(r, h/4)) of a larger area, the sum reaches 2, and with
+!> xsph_eps = 0.5 the correction cancelled the ring's own velocity, which the pressure then
+!> drove without the ring moving (cases/round_jet/README.md, "A ring held at the axis").
 module axisymmetric_loops
   use sphjet_kinds, only: rp, pi, VISC_LAMINAR, KERNEL_WENDLAND, AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t
-  use sphjet_kernels, only: kernel_t
-  use sorted_state, only: sorted_t, R_AX, R_AZ, R_AR
+  use sphjet_kernels, only: kernel_t, kernel_eval
+  use sorted_state, only: sorted_t, R_AX, R_AZ, R_AR, R_XU, R_XW
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_FRESH, &
                        SWEEP_REUSE
   use axisymmetric, only: mass_per_radian, viscous_hoop, axis_weight_tables, axis_weights, &
@@ -70,12 +75,15 @@ module axisymmetric_loops
 
   !> The rings pair's sweep (ring_pairs), with the ring masses m, the ring volumes vr = m/rho
   !> and the truncation vector's sums ddx, ddz; with renorm also the axial part of the
-  !> continuity cz and the continuity's moments mr, mz (renormalised_rate).
+  !> continuity cz and the continuity's moments mr, mz (renormalised_rate); with bound
+  !> (bound_xsph) each slot's planar kernel sum but its own term, ks.
   type, extends(axi_sums_t) :: ring_body_t
     integer :: kind = 0
     real(rp) :: h = 0.0_rp
     logical :: renorm = .false.
     real(rp), allocatable :: m(:), vr(:), ddx(:), ddz(:), cz(:), mr(:), mz(:)
+    logical :: bound = .false.
+    real(rp), allocatable :: ks(:)
     logical, allocatable :: real_(:)
   contains
     procedure :: visit => ring_visit
@@ -142,7 +150,7 @@ contains
     logical, intent(in), optional :: kept
     type(ring_body_t) :: body
     integer :: k, n
-    real(rp) :: fs, fp, self
+    real(rp) :: fs, fp, self, w0, f0, ksum
     n = s%n
     !$omp critical (ring_tables_cache)
     if (.not. allocated(ring_tab)) allocate(ring_tab(2, RING_NU, RING_NV, KERNEL_WENDLAND))
@@ -164,7 +172,19 @@ contains
              body%mz(merge(n, 1, body%renorm)), source=0.0_rp)
     body%kind = kern%kind
     body%h = prm%numerics%h
+    body%bound = prm%geometry%bound_xsph /= 0
+    allocate(body%ks(merge(n, 1, body%bound)), source=0.0_rp)
     call body%sweep(kern, kept)
+    if (body%bound) then
+      ! the planar XSPH sums of the rates' sweep (rates.f90) over max(1, the slot's kernel sum)
+      call kernel_eval(kern, 0.0_rp, w0, f0)
+      !$omp parallel do schedule(static) private(ksum)
+      do k = 1, n
+        ksum = body%ks(k) + body%v(k) * w0
+        if (ksum > 1.0_rp) s%rate(R_XU:R_XW, k) = s%rate(R_XU:R_XW, k) / ksum
+      end do
+      !$omp end parallel do
+    end if
     if (allocated(s%axi_dx)) then
       if (size(s%axi_dx) < n) deallocate(s%axi_dx, s%axi_dz)
     end if
@@ -228,7 +248,7 @@ contains
                     self%s%w, self%s%fluid, self%real_, self%h, ring_tab(:, :, :, self%kind), &
                     self%m, self%v, self%vr, self%pg, self%cont, &
                     self%pax, self%paz, self%dudr, self%dwdr, self%ddx, self%ddz, &
-                    self%renorm, self%cz, self%mr, self%mz)
+                    self%renorm, self%cz, self%mr, self%mz, self%bound, pl%w, self%ks)
     red = max(red, 0.0_rp)
   end subroutine ring_visit
 
@@ -237,9 +257,11 @@ contains
   !> derivatives (dWr/dr_a = 2 (r_a - r_b) Fs + r_b Fp, dWr/dz_a = 2 (z_a - z_b) Fs); fluid
   !> pairs, images included, to the radial velocity derivatives as axi_pairs. renorm: the
   !> continuity's axial part to cz and its moments to mr (its rate for u = r, w = 0) and mz
-  !> (for u = 0, w = z) as well.
+  !> (for u = 0, w = z) as well. bound: every pair, images included, to the planar kernel sums ks
+  !> (the planar volumes v, the kernel values wk).
   pure subroutine ring_pairs(laminar, np, pa, pb, dx, dz, f, x, u, w, fl, rl, h, tab, m, v, &
-                             vr, pg, cont, pax, paz, dudr, dwdr, ddx, ddz, renorm, cz, mr, mz)
+                             vr, pg, cont, pax, paz, dudr, dwdr, ddx, ddz, renorm, cz, mr, mz, bound, &
+                             wk, ks)
     logical, intent(in) :: laminar
     integer, intent(in) :: np, pa(*), pb(*)
     real(rp), intent(in) :: dx(*), dz(*), f(*), x(*), u(*), w(*), m(*), v(*), vr(*), pg(*), h
@@ -248,6 +270,9 @@ contains
     real(rp), intent(inout) :: cont(*), pax(*), paz(*), dudr(*), dwdr(*), ddx(*), ddz(*)
     logical, intent(in) :: renorm
     real(rp), intent(inout) :: cz(*), mr(*), mz(*)
+    logical, intent(in) :: bound
+    real(rp), intent(in) :: wk(*)
+    real(rp), intent(inout) :: ks(*)
     integer :: k, a, b
     real(rp) :: q, t, fs, fp, dra, drb, dzz, qz, qr, qm
     real(rp), allocatable :: fsk(:), fpk(:)   ! on the heap: a row's pair list may be long
@@ -299,6 +324,10 @@ contains
       end if
       if (laminar .and. fl(a) .and. fl(b)) &
         call add_radial_derivatives(a, b, f(k) * dx(k), u, w, v, dudr, dwdr)
+      if (bound) then   ! the planar kernel sum, images included (as the XSPH sums)
+        ks(a) = ks(a) + v(b) * wk(k)
+        ks(b) = ks(b) + v(a) * wk(k)
+      end if
     end do
   end subroutine ring_pairs
 
@@ -332,6 +361,7 @@ contains
     fz = 1.0_rp + lam * (min(FACTOR_MAX, max(1.0_rp / FACTOR_MAX, eb / ez)) - 1.0_rp)
     r = fr * (c - cz) + fz * cz
   end function renormalised_rate
+
 
   !> The renormalisation's weight at (x, z) along a jet: with prm%geometry%renormalise_reach =
   !> L > 0 (the driver's: the jet's intact length at its latest breakup check) 1 nearer the

@@ -1051,6 +1051,21 @@ TEST(ModernCase, RenormaliseMarginD0) {
     EXPECT_NE(e.find("[nozzle]"), std::string::npos) << e;
 }
 
+// domain.bound_ring_xsph (cases/CASE_FORMAT.md): off by default; read and written back with the
+// rings pair; refused with any other pair, naming the key and what it needs.
+TEST(ModernCase, BoundRingXsph) {
+    const std::string jet =
+        read_text(std::filesystem::path(SPHJET_SOURCE_DIR) / "cases" / "round_jet" / "round_jet.toml");
+    const std::string rings = "domain.axis_pair=\"rings\"";
+    EXPECT_FALSE(parse_modern_case(jet, "jet.toml", {rings}).params.bound_ring_xsph);
+    const CaseSpec s = parse_modern_case(jet, "jet.toml", {rings, "domain.bound_ring_xsph=true"});
+    EXPECT_TRUE(s.params.bound_ring_xsph);
+    expect_round_trip(s);
+    const std::string e = error_of(jet, {"domain.bound_ring_xsph=true"});
+    EXPECT_NE(e.find("domain.bound_ring_xsph"), std::string::npos) << e;
+    EXPECT_NE(e.find("domain.axis_pair = \"rings\""), std::string::npos) << e;
+}
+
 // The renormalised continuity's reach along a jet (core/jet_run.hpp): the intact length less
 // the margin in nozzle diameters, never below 0, none while the jet is unbroken; margin 0
 // leaves the length itself (bit for bit: the runs made before the key are unchanged).
