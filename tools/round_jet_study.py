@@ -77,8 +77,8 @@ forms, it made the carried density of rings crowding the axis fall further behin
 density ("Rings that gather at a drop's axis").
 --bound-xsph (with a rings --axis-pair; suffix _bx) divides each ring's XSPH correction by its
 planar kernel sum where that exceeds 1 (domain.bound_ring_xsph): near the axis, where that sum
-reached 2, the correction cancelled a ring's own velocity, which the pressure then drove without
-the ring moving ("A ring held at the axis").
+reached 2-3.5, the correction cancelled or reversed a ring's own velocity, which the pressure
+then drove without the ring moving ("A ring held at the axis").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0

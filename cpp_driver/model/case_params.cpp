@@ -290,10 +290,10 @@ const Param kParams[] = {
     {.key = "domain.bound_ring_xsph", .attr = "bound_ring_xsph", .type = K::Bool,
      .member = member<&SimParams::bound_ring_xsph>(), .def = "false", .allowed = "needs `axis_pair = \"rings\"`",
      .doc = "each ring's XSPH correction divided by its planar kernel sum (sum_b m_b W_ab / rho_b over the meridian "
-            "plane, axis images included) where that sum exceeds 1, so that it never exceeds xsph_eps times the "
-            "departure from its neighbours' mean velocity; false: SPHysics' XSPH. Near the axis rings heavier than "
-            "the first column's (split products) count the planar mass of a larger area and the sum reaches 2: "
-            "with xsph_eps = 0.5 the correction cancelled a ring's own velocity",
+            "plane, axis images included) where that sum exceeds 1, so that it stays about xsph_eps times the "
+            "ring's departure from its neighbours' mean velocity, as on a lattice; false: SPHysics' XSPH. Near the axis rings heavier than "
+            "the first column's (split products) count the planar mass of a larger area and the sum reaches 2-3.5: "
+            "with xsph_eps = 0.5 the correction cancelled or reversed a ring's own velocity",
      .legacy = "(none)", .hand = kRead, .h5_optional = true},
     {.key = "domain.axis_pair", .attr = "axis_pair", .type = K::String, .member = member<&SimParams::axis_pair>(),
      .choices = names<AxisPair>(),

@@ -18,9 +18,10 @@
 !> its intact length (within_reach). With prm%geometry%bound_xsph (domain.bound_ring_xsph) the
 !> XSPH sums of the planar sweep are divided by each ring's planar kernel sum sum_b V_b W_ab
 !> where it exceeds 1 (ring_rates): near the axis a ring heavier than the first column's counts
-!> the planar mass m / (2 pi max(r, h/4)) of a larger area, the sum reaches 2, and with
-!> xsph_eps = 0.5 the correction cancelled the ring's own velocity, which the pressure then
-!> drove without the ring moving (cases/round_jet/README.md, "A ring held at the axis").
+!> the planar mass m / (2 pi max(r, h/4)) of a larger area, the sum reaches 2-3.5, and with
+!> xsph_eps = 0.5 the correction cancelled or reversed the ring's own velocity, which the
+!> pressure then drove without the ring moving (cases/round_jet/README.md, "A ring held at the
+!> axis").
 module axisymmetric_loops
   use sphjet_kinds, only: rp, pi, VISC_LAMINAR, KERNEL_WENDLAND, AXIS_PAIR_RINGS
   use sphjet_types, only: sph_params_t
