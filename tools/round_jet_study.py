@@ -521,6 +521,8 @@ def step_sets(opts, dx, c0):
 
 
 SET_NAMES = ("mc", "paper")
+# --axis-pair's choices, each a variant of the rings pair (domain.axis_pair = "rings")
+RINGS_PAIRS = ("rings", "rings_own", "rings_fit")
 
 
 def flag_text(flag, value):
@@ -915,7 +917,7 @@ def parse(argv=None):
         p.add_argument("--d0-over-dx", type=float, default=10.0, help="particles across d0 (default 10)")
         p.add_argument("--remove-drops-below-h", dest="remove_h", type=float, default=None, metavar="D",
                        help="remove detached drops with d_eq < D h at the breakup checks (default: keep all)")
-        p.add_argument("--axis-pair", choices=("rings", "rings_own", "rings_fit"), default=None,
+        p.add_argument("--axis-pair", choices=RINGS_PAIRS, default=None,
                        help="the rings pair (domain.axis_pair) in every run, rings_own with its surface "
                             "rows' own curvature, rings_fit with the surface fit and the tensile "
                             "correction (default: the smoothed-radius pair)")
@@ -1006,15 +1008,15 @@ def parse(argv=None):
     if args.own_window and not args.quiet_exit:
         ap.error("--own-window makes runs longer than they were started for: it needs --quiet-exit's "
                  "refilling nozzle")
-    if args.quiet_exit and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
+    if args.quiet_exit and args.axis_pair not in RINGS_PAIRS:
         ap.error("--quiet-exit splits the rings of the rings pair: give --axis-pair rings, rings_own or rings_fit")
-    if args.gravity and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
+    if args.gravity and args.axis_pair not in RINGS_PAIRS:
         ap.error("--gravity renormalises the rings pair's continuity (domain.renormalise_ring_continuity): "
                  "give --axis-pair rings, rings_own or rings_fit")
     if args.margin is not None and not (args.gravity and args.margin > 0):
         ap.error(f"--renormalise-margin {args.margin:g}: expected a positive number of d0 with --gravity "
                  "(the margin of its renormalised continuity)")
-    if args.bound_xsph and args.axis_pair not in ("rings", "rings_own", "rings_fit"):
+    if args.bound_xsph and args.axis_pair not in RINGS_PAIRS:
         ap.error("--bound-xsph bounds the XSPH of the rings pair's rings (domain.bound_ring_xsph): "
                  "give --axis-pair rings, rings_own or rings_fit")
     if args.leapfrog and not args.quiet_exit:

@@ -363,7 +363,6 @@ contains
     r = fr * (c - cz) + fz * cz
   end function renormalised_rate
 
-
   !> The renormalisation's weight at (x, z) along a jet: with prm%geometry%renormalise_reach =
   !> L > 0 (the driver's: the jet's intact length at its latest breakup check) 1 nearer the
   !> orifice than L - 2h along the nozzle's axis, 0 beyond L, linear between; 1 everywhere with

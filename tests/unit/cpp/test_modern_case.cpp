@@ -1025,13 +1025,17 @@ TEST(ModernCase, RenormaliseRingContinuity) {
     EXPECT_NE(e.find("smoothed_radius"), std::string::npos) << e;
 }
 
+// The round-jet case of cases/ (it has a [nozzle]; the tests add the rings pair).
+static std::string round_jet_case() {
+    return read_text(std::filesystem::path(SPHJET_SOURCE_DIR) / "cases" / "round_jet" / "round_jet.toml");
+}
+
 // domain.renormalise_margin_d0 (cases/CASE_FORMAT.md): 0 by default; read with the renormalised
 // continuity and a [nozzle], written back and read again; refused without the renormalised
 // continuity or without a nozzle (naming the key and what it needs), and when negative.
 TEST(ModernCase, RenormaliseMarginD0) {
     // the round-jet case of cases/, with the rings pair
-    const std::string jet =
-        read_text(std::filesystem::path(SPHJET_SOURCE_DIR) / "cases" / "round_jet" / "round_jet.toml");
+    const std::string jet = round_jet_case();
     ASSERT_NE(jet.find("[nozzle]"), std::string::npos);
     const std::string rings = "domain.axis_pair=\"rings\"";
     EXPECT_EQ(parse_modern_case(jet, "jet.toml", {rings}).params.renormalise_margin_d0, 0.0);
@@ -1054,8 +1058,7 @@ TEST(ModernCase, RenormaliseMarginD0) {
 // domain.bound_ring_xsph (cases/CASE_FORMAT.md): off by default; read and written back with the
 // rings pair; refused with any other pair, naming the key and what it needs.
 TEST(ModernCase, BoundRingXsph) {
-    const std::string jet =
-        read_text(std::filesystem::path(SPHJET_SOURCE_DIR) / "cases" / "round_jet" / "round_jet.toml");
+    const std::string jet = round_jet_case();
     const std::string rings = "domain.axis_pair=\"rings\"";
     EXPECT_FALSE(parse_modern_case(jet, "jet.toml", {rings}).params.bound_ring_xsph);
     const CaseSpec s = parse_modern_case(jet, "jet.toml", {rings, "domain.bound_ring_xsph=true"});
