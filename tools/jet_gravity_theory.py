@@ -17,7 +17,13 @@ C = N(L); without gravity N(L) = omega_max(a0) L / U. A uniform jet's temporal r
 is Weber's law's picture (L/d0 = C sqrt(We_d)(1 + 3 Oh_d) up to the constant of omega_max).
 Absolute instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not
 in this local picture; where the jet speeds up past it, the convective part is what this
-integrates. With --c C it also prints the lengths that C gives with and without gravity.
+integrates. The table's "absolutely unstable to" is how far below the orifice the local Weber
+number rho U(z)^2 d(z) / sigma = We_d (U(z) / U)^(3/2) stays below 2 pi:
+  z_a = U^2 [(2 pi / We_d)^(4/3) - 1] / (2 g)
+(0 at and above We_d = 2 pi; the whole jet without gravity), the pocket of local absolute
+instability of a plug leaving a tube with no face (a local criterion, as N is; whether a pocket
+that long makes the jet drip is a global question it does not answer). With --c C it also
+prints the lengths that C gives with and without gravity.
 
 Whether a slow jet forms at all, or the tube drips, it prints from Clanet & Lasheras (1999, JFM
 383, 307): a liquid injected downward jets above the Weber number
@@ -63,6 +69,19 @@ def omega_max(a):
     return max(f1, f2) * math.sqrt(SIGMA / (RHO * a ** 3))
 
 
+def unstable_reach(u, d0, g):
+    """z_a [m]: how far below the orifice a plug jet of speed u [m/s] and diameter d0 [m], falling
+    at g [m/s^2], stays locally absolutely unstable (its local We_d below 2 pi; the module's
+    docstring has the formula). 0 when it leaves at We_d >= 2 pi; inf when it never gets there
+    (g = 0)."""
+    we_d = RHO * u * u * d0 / SIGMA
+    if we_d >= 2.0 * math.pi:
+        return 0.0
+    if g <= 0.0:
+        return math.inf
+    return u * u * ((2.0 * math.pi / we_d) ** (4.0 / 3.0) - 1.0) / (2.0 * g)
+
+
 def critical_weber(d_in, d_out, g):
     """Clanet & Lasheras's (1999) Weber number rho U^2 d_in / sigma above which a tube of inner
     diameter d_in and outer d_out [m], pointing down under gravity g [m/s^2], jets rather than
@@ -106,8 +125,9 @@ class Jet:
 
 def table(g, c=None, d_out=D_OUT_16G):
     a0 = 0.5 * D0_MC
-    head = "| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity |"
-    sep = "|---|---|---|---|---|"
+    head = ("| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity | "
+            "absolutely unstable to [d0], falling |")
+    sep = "|---|---|---|---|---|---|"
     if c is not None:
         head += f" L/d0 at C = {c:g} without / with gravity |"
         sep += "---|"
@@ -120,7 +140,8 @@ def table(g, c=None, d_out=D_OUT_16G):
         cg = falling.exponent(l_d0 * D0_MC)
         cs0.append(c0)
         csg.append(cg)
-        row = f"| {u:.4f} | {we:.2f} | {l_d0:.2f} | {c0:.2f} | {cg:.2f} |"
+        reach = unstable_reach(u, D0_MC, g) / D0_MC
+        row = f"| {u:.4f} | {we:.2f} | {l_d0:.2f} | {c0:.2f} | {cg:.2f} | {reach:.1f} |"
         if c is not None:
             row += f" {flat.length(c) / D0_MC:.1f} / {falling.length(c) / D0_MC:.1f} |"
         lines.append(row)

@@ -19,7 +19,13 @@
   formula from a slip in a factor (a factor 2 in eps moves it by about 1e-2). At eps = 1e-12
   (g -> 0) it must be 4 d_in / d_out less the expansion's 2.8e-6, within 1e-6; it must fall as
   g grows, and refuse d_out < d_in.
+- unstable_reach() (the pocket of local absolute instability below the orifice): at its z_a the
+  falling jet's local Weber number, from the speed and radius Jet integrates over, U(z) =
+  sqrt(U^2 + 2 g z) and a(z) = a0 sqrt(U / U(z)), must be 2 pi to 1e-12 relative (rounding
+  only; a slip in the exponent 4/3 moves it by tens of per cent), at 0.3441 and 0.4946 m/s; 0 for
+  a jet that leaves at We_d >= 2 pi (0.7814 m/s); inf without gravity for one that leaves below.
 """
+import math
 import os
 import sys
 
@@ -75,6 +81,16 @@ try:
     check(False, "d_out < d_in refused")
 except ValueError as e:
     check("d_in <= d_out" in str(e), f"d_out < d_in refused: {e}")
+
+for u in (0.3441, 0.4946):
+    g = 9.81
+    za = jgt.unstable_reach(u, jgt.D0_MC, g)
+    uz = math.sqrt(u * u + 2.0 * g * za)
+    we_local = jgt.RHO * uz * uz * jgt.D0_MC * math.sqrt(u / uz) / jgt.SIGMA
+    check(abs(we_local / (2.0 * math.pi) - 1.0) < 1e-12,
+          f"{u} m/s falling: local We_d at z_a = {za / jgt.D0_MC:.2f} d0 is {we_local:.12g} (2 pi)")
+check(jgt.unstable_reach(0.7814, jgt.D0_MC, 9.81) == 0.0, "0.7814 m/s (We_d > 2 pi): no pocket")
+check(jgt.unstable_reach(0.4946, jgt.D0_MC, 0.0) == math.inf, "0.4946 m/s without gravity: the whole jet")
 
 if failures:
     print(f"{len(failures)} check(s) failed")
