@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--out cases/round_jet]
       [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -79,6 +79,10 @@ density ("Rings that gather at a drop's axis").
 planar kernel sum where that exceeds 1 (domain.bound_ring_xsph): near the axis, where that sum
 reached 2-3.5, the correction cancelled or reversed a ring's own velocity, which the pressure
 then drove without the ring moving ("A ring held at the axis").
+--free-bodies (suffix _fb) takes the surface tension's net axial force off each free body, a
+drop or fragment that touches neither the jet nor the nozzle (surface_tension.balance_free_bodies):
+the CSF force of a fragment of a few rings does not sum to zero, and one shed by a slow falling
+jet at d0/dx 20 flew back up against gravity and broke the jet ("Fragments that fly").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -461,7 +465,7 @@ def plan(opts):
     starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
     fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
-    bound_xsph: domain.bound_ring_xsph."""
+    bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -501,6 +505,8 @@ def plan(opts):
         extra.append(f"domain.renormalise_margin_d0={opts.margin:g}")
     if opts.bound_xsph:
         extra.append("domain.bound_ring_xsph=true")
+    if opts.free_bodies:
+        extra.append("surface_tension.balance_free_bodies=true")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -552,7 +558,8 @@ def study_flags(opts):
             + ("" if opts.step_cap is None else f" --step-cap {opts.step_cap:g}")
             + (" --landed" if opts.landed else "")
             + ("" if opts.margin is None else f" --renormalise-margin {opts.margin:g}")
-            + (" --bound-xsph" if opts.bound_xsph else ""))
+            + (" --bound-xsph" if opts.bound_xsph else "")
+            + (" --free-bodies" if opts.free_bodies else ""))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -572,7 +579,7 @@ def study_dir(opts):
             + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}")
             + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
             + ("" if opts.margin is None else f"_margin{opts.margin:g}")
-            + ("_bx" if opts.bound_xsph else ""))
+            + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -967,6 +974,9 @@ def parse(argv=None):
         p.add_argument("--bound-xsph", action="store_true",
                        help="each ring's XSPH correction over its planar kernel sum where that exceeds 1 "
                             "(domain.bound_ring_xsph; a rings --axis-pair; suffix _bx)")
+        p.add_argument("--free-bodies", action="store_true",
+                       help="the surface tension's net axial force taken off each drop and fragment "
+                            "(surface_tension.balance_free_bodies; suffix _fb)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

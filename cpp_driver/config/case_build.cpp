@@ -358,6 +358,12 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
         p.curvature = static_cast<CurvatureModel>(
             choose_from<std::int64_t>(*f, find_param("surface_tension.curvature")->choices));
     }
+    if (const auto f = st.boolean("balance_free_bodies"); f && f->value && !(p.sigma > 0))
+        throw InputError(ctx.where(st.key_path("balance_free_bodies")),
+                         "surface_tension.balance_free_bodies balances the surface tension's force on free bodies "
+                         "but the surface tension is off",
+                         "surface_tension.sigma > 0 with surface_tension.balance_free_bodies = true",
+                         "surface_tension.sigma = " + num(p.sigma));
 }
 
 // [[obstacle]], [[wall]] and [gate]: boundary particles in the box.

@@ -238,6 +238,13 @@ const Param kParams[] = {
      .legacy = "(none)",
      .echo = "{choices} (surface_fit: a curve through the surface particles; no particle-scale waves grow)",
      .hand = kRead | kEcho, .h5_optional = true},
+    {.key = "surface_tension.balance_free_bodies", .attr = "balance_free_bodies", .type = K::Bool,
+     .member = member<&SimParams::balance_free_bodies>(), .def = "false", .allowed = "needs `sigma > 0`",
+     .doc = "the surface tension's net force on each free body (fluid joined by pairs closer than 2h that "
+            "touches no boundary particle and no driven nozzle fluid) taken off as a uniform acceleration of "
+            "that body: along z in the axisymmetric geometry, along x and z in the planar one. Under a uniform "
+            "sigma a closed surface's net force is zero; the CSF force of a fragment of a few particles is not",
+     .legacy = "(none)", .h5_optional = true},
 
     // [gravity]
     {.key = "gravity.gx", .attr = "gx", .type = K::Float, .unit = "m/s^2", .member = member<&SimParams::gx>(),

@@ -275,6 +275,9 @@ struct SimParams {
     CurvatureNormals curvature_normals = CurvatureNormals::All;
     // The free-surface curvature (case key surface_tension.curvature).
     CurvatureModel curvature = CurvatureModel::Normals;
+    // Each free body's net surface-tension force removed (case key
+    // surface_tension.balance_free_bodies; fortran_core/loops/surface_tension_loops.f90).
+    bool balance_free_bodies = false;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -1,9 +1,7 @@
 !> The driven nozzle of sphjet's jet cases (cases/jet/README.md): the fluid that fills the
 !> nozzle is a plug pushed out of the orifice at the jet speed u0. A fluid particle is in the
 !> plug while its position lies upstream of the orifice line and within the plug's half-width
-!> of the axis:
-!>   s = (r - r0) . e < 0   and   |(r - r0) x e| <= half_width,
-!> r0 the orifice centre, e the unit jet axis (flow direction). The test has no memory: fluid
+!> of the axis (physics/nozzle_geometry.f90, in_driven_nozzle). The test has no memory: fluid
 !> that comes back upstream into that strip is driven again (with the plug's velocity, see
 !> plug_step below); keep other fluid regions out of it. With a parabolic exit profile
 !> (profile_a > 0, a tube's fully developed laminar flow) the speed along the axis depends on
@@ -17,6 +15,7 @@ module nozzle_drive
   use sphjet_kinds, only: rp, NOZZLE_RELEASE_LANDED
   use sphjet_types, only: sph_params_t, state_t
   use fluid_update, only: moving_fluid
+  use nozzle_geometry, only: past_orifice, in_driven_nozzle
   implicit none
   private
   public :: in_driven_nozzle, plug_step, landed_step
@@ -30,21 +29,6 @@ module nozzle_drive
   real(rp), parameter :: LAND_SLACK = 1.0e-6_rp
 
 contains
-
-  !> The signed distance of (x, z) past the orifice line along the jet axis, s = (r - r0) . e.
-  pure real(rp) function past_orifice(prm, x, z)
-    type(sph_params_t), intent(in) :: prm
-    real(rp), intent(in) :: x, z
-    past_orifice = (x - prm%nozzle%x0) * prm%nozzle%ex + (z - prm%nozzle%z0) * prm%nozzle%ez
-  end function past_orifice
-
-  pure logical function in_driven_nozzle(prm, x, z)
-    type(sph_params_t), intent(in) :: prm
-    real(rp), intent(in) :: x, z
-    in_driven_nozzle = past_orifice(prm, x, z) < 0.0_rp .and. &
-                       abs((x - prm%nozzle%x0) * prm%nozzle%ez - (z - prm%nozzle%z0) * prm%nozzle%ex) &
-                       <= prm%nozzle%half_width
-  end function in_driven_nozzle
 
   !> A fluid particle whose start-of-step position lies in a driven nozzle (in_driven_nozzle),
   !> after the predictor-corrector's half_steps (or the leapfrog's kicks, with its whole step as

@@ -34,6 +34,7 @@ module surface_tension_loops
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, R_AX, R_AZ
   use particle_images, only: copy_to_images
+  use free_body_loops, only: balance_free_bodies
   use omp_team, only: team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
@@ -41,7 +42,8 @@ module surface_tension_loops
                              csf_curvature_pair, csf_curvature, csf_acceleration, &
                              csf_surface_weight, csf_tangential_pair, csf_depth_table, &
                              csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N, &
-                             DEPTH_FACTOR_MIN, CURV_BAND_H, csf_fit_point, csf_fit_curvature, N_FIT, FIT_DEPTH
+                             CURV_BAND_H, csf_fit_point, csf_fit_curvature, N_FIT, FIT_DEPTH, &
+                             depth_moved
   implicit none
   private
   public :: surface_tension_rates
@@ -150,7 +152,7 @@ contains
     type(csf_work_t), target :: wk
     real(rp) :: w0, eps
     real(rp), allocatable, target :: kappa(:)
-    real(rp), allocatable :: hoop(:)
+    real(rp), allocatable :: hoop(:), a0(:, :)   ! a0: the rates before the CSF force (free bodies)
     type(csf_loops_t) :: loops
     integer :: n, k
     logical :: colour_delta, axi, reuse, surface_mean
@@ -262,8 +264,10 @@ contains
         call sweep(PASS_SURFACE_FIT, kern, s, wk, .true., axi)
       end if
     end if
+    if (prm%surface_tension%free_bodies /= 0) a0 = s%rate(R_AX:R_AZ, 1:n)
     call in_team(loops, FORCE)
     if (surface_mean) call surface_mean_force(prm, kern, st, s, wk, kappa, w0, axi)
+    if (allocated(a0)) call balance_free_bodies(prm, s, a0, axi)
     if (prm%numerics%shifting > 0.0_rp) call shifting_velocity(prm, st, s, wk, axi)
 
     call fields_to_particles(st, s, wk, kappa)
@@ -533,15 +537,6 @@ contains
       den(b) = den(b) + wx(a) * v(a) * w(k)
     end do
   end subroutine surface_mean_pairs
-
-  !> A principal curvature k of a particle's row moved to the surface at depth delta:
-  !> k / (1 - k delta), the factor kept >= DEPTH_FACTOR_MIN as in csf_surface_curvature (whose tangential
-  !> denominator test has already zeroed an invalid k).
-  pure elemental function depth_moved(k, delta) result(ks)
-    real(rp), intent(in) :: k, delta
-    real(rp) :: ks
-    ks = k / max(DEPTH_FACTOR_MIN, 1.0_rp - k * delta)
-  end function depth_moved
 
   !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal): over the
   !> kept pairs of the last SWEEP_KEEP with PAIRS_ANY_FLUID when kept (the rates sweep's, or

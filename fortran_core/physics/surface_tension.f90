@@ -69,7 +69,7 @@ module surface_tension
   public :: csf_threshold, csf_normal_pair, csf_unit_normal, csf_curvature_pair, &
             csf_curvature, csf_acceleration, csf_dt, csf_surface_weight, &
             csf_tangential_pair, csf_depth_table, csf_depth, csf_surface_curvature, &
-            csf_fit_point, csf_fit_curvature, N_FIT, FIT_DEPTH, &
+            csf_fit_point, csf_fit_curvature, depth_moved, N_FIT, FIT_DEPTH, &
             ST_DELTA_PRESSURE, ST_DELTA_COLOUR, DEPTH_TABLE_N, DEPTH_FACTOR_MIN, CURV_BAND_H
 
   !> Values of sph_params_t%surface_tension%delta (case key surface_tension.delta).
@@ -350,5 +350,14 @@ contains
       dt = huge(1.0_rp)
     end if
   end function csf_dt
+
+  !> A principal curvature k of a particle's row moved to the surface at depth delta:
+  !> k / (1 - k delta), the factor kept >= DEPTH_FACTOR_MIN as in csf_surface_curvature (whose tangential
+  !> denominator test has already zeroed an invalid k).
+  pure elemental function depth_moved(k, delta) result(ks)
+    real(rp), intent(in) :: k, delta
+    real(rp) :: ks
+    ks = k / max(DEPTH_FACTOR_MIN, 1.0_rp - k * delta)
+  end function depth_moved
 
 end module surface_tension

@@ -377,6 +377,14 @@ def main():
               == " --eps 0.01 --d0-over-dx 10 --quiet-jets --bound-xsph", "the report's run command with --bound-xsph")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--bound-xsph"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair rings" in p.stderr, f"--bound-xsph alone: {p.stderr}")
+        # --free-bodies: every run's surface_tension.balance_free_bodies, in a directory of its own
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                            "--free-bodies", "--set-name", "mc"], capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all("--set surface_tension.balance_free_bodies=true" in ln for ln in steps)
+              and "_sink15_fb " in p.stdout, f"--free-bodies: {p.stdout[:400]}")
+        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--free-bodies"]))
+              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --free-bodies", "the report's run command with --free-bodies")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",

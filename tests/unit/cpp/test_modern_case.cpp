@@ -1069,6 +1069,19 @@ TEST(ModernCase, BoundRingXsph) {
     EXPECT_NE(e.find("domain.axis_pair = \"rings\""), std::string::npos) << e;
 }
 
+// surface_tension.balance_free_bodies (cases/CASE_FORMAT.md): off by default; read and written
+// back; refused without surface tension, naming the key and what it needs.
+TEST(ModernCase, BalanceFreeBodies) {
+    const std::string jet = round_jet_case();
+    EXPECT_FALSE(parse_modern_case(jet, "jet.toml").params.balance_free_bodies);
+    const CaseSpec s = parse_modern_case(jet, "jet.toml", {"surface_tension.balance_free_bodies=true"});
+    EXPECT_TRUE(s.params.balance_free_bodies);
+    expect_round_trip(s);
+    const std::string e = error_of(jet, {"surface_tension.balance_free_bodies=true", "surface_tension.sigma=0"});
+    EXPECT_NE(e.find("surface_tension.balance_free_bodies"), std::string::npos) << e;
+    EXPECT_NE(e.find("surface_tension.sigma > 0"), std::string::npos) << e;
+}
+
 // The renormalised continuity's reach along a jet (core/jet_run.hpp): the intact length less
 // the margin in nozzle diameters, never below 0, none while the jet is unbroken; margin 0
 // leaves the length itself (bit for bit: the runs made before the key are unchanged).
