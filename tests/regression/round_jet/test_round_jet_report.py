@@ -366,25 +366,19 @@ def main():
               "the report's run command with --renormalise-margin")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--renormalise-margin", "2"], capture_output=True, text=True)
         check(p.returncode == 2 and "with --gravity" in p.stderr, f"--renormalise-margin alone: {p.stderr}")
-        # --bound-xsph: every run's domain.bound_ring_xsph, in a directory of its own; refused
-        # without the rings pair
-        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
-                            "--bound-xsph", "--set-name", "mc"], capture_output=True, text=True)
-        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
-        check(len(steps) == 20 and all("--set domain.bound_ring_xsph=true" in ln for ln in steps)
-              and "_sink15_bx " in p.stdout, f"--bound-xsph: {p.stdout[:400]}")
-        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--bound-xsph"]))
-              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --bound-xsph", "the report's run command with --bound-xsph")
+        # --bound-xsph and --free-bodies: every run's key, in a directory of its own (suffix)
+        for flag, key, suffix in (("--bound-xsph", "domain.bound_ring_xsph", "_bx"),
+                                  ("--free-bodies", "surface_tension.balance_free_bodies", "_fb")):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                                flag, "--set-name", "mc"], capture_output=True, text=True)
+            steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+            check(len(steps) == 20 and all(f"--set {key}=true" in ln for ln in steps)
+                  and f"_sink15{suffix} " in p.stdout, f"{flag}: {p.stdout[:400]}")
+            check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", flag]))
+                  == f" --eps 0.01 --d0-over-dx 10 --quiet-jets {flag}", f"the report's run command with {flag}")
+        # --bound-xsph is refused without the rings pair
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--bound-xsph"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair rings" in p.stderr, f"--bound-xsph alone: {p.stderr}")
-        # --free-bodies: every run's surface_tension.balance_free_bodies, in a directory of its own
-        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
-                            "--free-bodies", "--set-name", "mc"], capture_output=True, text=True)
-        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
-        check(len(steps) == 20 and all("--set surface_tension.balance_free_bodies=true" in ln for ln in steps)
-              and "_sink15_fb " in p.stdout, f"--free-bodies: {p.stdout[:400]}")
-        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--free-bodies"]))
-              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --free-bodies", "the report's run command with --free-bodies")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
