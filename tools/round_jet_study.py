@@ -102,8 +102,11 @@ window is given beside it, the means over the first and the second half of the w
 samples (a length still drifting shows as two means apart), and the number of samples in the
 window (fewer where a run stopped within it). With --own-window (needs --quiet-exit; suffix
 _own) a run's window comes from its own length instead (own_window): from the first sample at
-t >= 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
-W L / U later; a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
+t >= t_q + 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
+W L / U later; t_q is when the start-up's disturbance left the orifice (quiet_since: the
+surface's wave amplitude 5 d0 below it has stopped falling), and a run that is not quiet by the
+time a jet as long as the box would have its window ends with no length ("start-up not
+cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
 10% of its mean, and each third of it within 10% of its mean), or until a window that is not
 steady spans 2 L / U (status "finished, unsteady window": a dripping jet's length wanders), so
@@ -180,6 +183,23 @@ OWN_PARTS = 3
 # unsteady, with its drift. The convective runs' windows became whole within 0.54-1.09 of their
 # own L / U from their start (the 0.78, 0.86, 0.88 and 0.96 m/s runs at c0 12 and 16 m/s).
 OWN_LONGEST = 2.0
+# The window's clock starts when the jet's start-up disturbance has left the orifice, not at t = 0.
+# A slow falling jet clears it slowly: at 0.40 m/s the disturbance amplitude 5 d0 below the orifice
+# fell by about 2 every 30 ms from 4e-2 a at 50 ms to 2e-6 a at 450 ms, while the jet broke at the
+# end of its pocket of local absolute instability (13-15 d0 up to 260 ms) and then at 23-24 d0; at
+# 0.49 m/s it reached its floor (7-12e-7 a) by 140 ms and the jet 30-32 d0 by 160 ms, from 16 d0 in
+# the window that a clock from t = 0 gave (cases/round_jet/README.md, "A window after the
+# start-up"). So: spans of OWN_MIN_D0 d0 / U from t = 0; the amplitude in a span is sqrt(2) times
+# the rms about its median of the surface radius at OWN_QUIET_D0 d0 over the span's samples (as
+# tools/jet_noise.py's envelope), where the intact jet reaches there in at least half of them. The
+# orifice is quiet from the start of the first of OWN_QUIET_SPANS spans whose last amplitude is at
+# least the first's over OWN_QUIET_FACTOR. Settled jets' amplitudes wander by up to a factor 2
+# either way over 4 spans (0.49 m/s: 6.1e-7 a to 1.25e-6 a), so only a fall counts; the start-up's
+# fell by a factor 5-11 over 4 spans at 0.40 m/s, and 2.6 at 0.42 m/s by 450 ms (over 2 spans of
+# 25 ms, one fall at 0.40 m/s was only 0.51). 5 d0 is past the nozzle's lattice (2 d0 holds it at
+# about 1e-6 a) and short of the breakup of every jet that does not drip. A run that has not gone
+# quiet by own_cap ends there with no length (status "start-up not cleared").
+OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -333,9 +353,55 @@ def own_check_every(l_ref, u):
     return l_ref / (OWN_CHECKS * u)
 
 
-def own_window(rows, u, d0, window, slack=0.0):
+def quiet_since(surface, u, d0):
+    """--own-window: when the orifice went quiet [s] (OWN_QUIET_D0's comment) from a run's
+    jet_surface.csv rows (time, s_over_d0, r_over_d0) for speed u and diameter d0; None while the
+    start-up's disturbance is still fading there, or the jet is short of OWN_QUIET_D0 in half of a
+    span's samples (a jet that drips)."""
+    span = OWN_MIN_D0 * d0 / u
+    times, at = {}, {}
+    width = None
+    for x in surface:
+        s = float(x["s_over_d0"])
+        if width is None:
+            width = 2.0 * s   # the first slice's centre is half a slice from the orifice
+        t = float(x["time"])
+        k = int(t // span)
+        times.setdefault(k, set()).add(t)
+        if abs(s - width * (math.floor(OWN_QUIET_D0 / width) + 0.5)) < 0.25 * width:
+            at.setdefault(k, []).append(float(x["r_over_d0"]))
+    if not times:
+        return None
+    complete = max(times) - 1   # the last span may still be filling
+    amp = {}
+    for k in range(complete + 1):
+        v = at.get(k, [])
+        if v and len(v) >= 0.5 * len(times.get(k, ())):
+            m = statistics.median(v)
+            amp[k] = math.sqrt(2.0 * sum((r - m) ** 2 for r in v) / len(v))
+    for k in range(complete + 2 - OWN_QUIET_SPANS):
+        ks = range(k, k + OWN_QUIET_SPANS)
+        if all(j in amp for j in ks):
+            first, last = amp[k], amp[k + OWN_QUIET_SPANS - 1]
+            if first > 0.0 and last >= first / OWN_QUIET_FACTOR:
+                return k * span
+    return None
+
+
+def run_quiet(run_dir, info):
+    """quiet_since of a run directory -> (quiet [s] or None, note): a run without
+    jet_surface.csv (the breakup checks off) is taken as quiet from t = 0, and says so."""
+    try:
+        surface = read_csv(os.path.join(run_dir, "jet_surface.csv"))
+    except (OSError, ValueError):
+        return 0.0, "no jet_surface.csv: its window's clock starts at t = 0, the orifice's quiet not judged"
+    return quiet_since(surface, info["U"], info["d0"]), None
+
+
+def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
     """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
-    W). The window starts at the first broken sample t_j with t_j >= OWN_START L_j / U, L_j the
+    W, quiet the time the orifice went quiet, quiet_since, None while it has not). The window
+    starts at the first broken sample t_j with t_j >= quiet + OWN_START L_j / U, L_j the
     mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
     needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their
     trend from t_j on must be flat (OWN_DRIFT) and each of its parts hold the window's mean
@@ -345,7 +411,7 @@ def own_window(rows, u, d0, window, slack=0.0):
     judged), need (the end [s] the window needs:
     OWN_MORE L_j / U past the last sample's time while it drifts; without a start, the end that
     a window of the recent length would need (each length at most the U t issued by then), at
-    least OWN_GROWTH times the last sample's time)."""
+    least OWN_GROWTH times the last sample's time); and quiet."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
     tail_sum = 0.0
     sums = []
@@ -356,8 +422,9 @@ def own_window(rows, u, d0, window, slack=0.0):
     for j, (t, _l) in enumerate(broken):
         mean = sums[j] / (len(broken) - j)
         tau = max(mean, OWN_MIN_D0) * d0 / u
-        if t >= OWN_START * tau:
-            out = {"start": t, "L": mean, "tau": tau, "drift": None, "need": t + window * tau}
+        if quiet is not None and t >= quiet + OWN_START * tau:
+            out = {"start": t, "L": mean, "tau": tau, "drift": None, "need": t + window * tau,
+                   "quiet": quiet}
             if float(rows[-1]["time"]) >= out["need"] - slack and len(broken) - j >= 3:
                 change, error = trend(broken[j:])
                 out["drift"] = change / mean
@@ -371,8 +438,9 @@ def own_window(rows, u, d0, window, slack=0.0):
     recent = [min(l, u * t / d0) for t, l in broken[-10:]]
     longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
     t_last = float(rows[-1]["time"]) if rows else 0.0
-    return {"start": None, "L": None, "drift": None,
-            "need": max((OWN_START + window) * longest * d0 / u, OWN_GROWTH * t_last)}
+    return {"start": None, "L": None, "drift": None, "quiet": quiet,
+            "need": max((0.0 if quiet is None else quiet) + (OWN_START + window) * longest * d0 / u,
+                        OWN_GROWTH * t_last)}
 
 
 def parts_off(samples, mean):
@@ -417,23 +485,27 @@ def no_longer(ow, verdict, info, window):
     """--own-window: why a run whose own_verdict is "capped" or "unsteady" is made no longer, as
     `run` prints it beside "done" and `report` notes it."""
     if verdict == "capped":
-        return (f"made as long as --own-window goes (t = {own_cap(info, window):.4g} s, a jet as long "
-                f"as the box) without a whole window" + unsteady(ow))
+        cap = own_cap(info, window, ow.get("quiet"))
+        return (f"made as long as --own-window goes (t = {cap:.4g} s, a jet as long "
+                f"as the box) without a whole window" + unsteady(ow)
+                + ("" if ow.get("quiet") is not None else
+                   f": the start-up's disturbance {OWN_QUIET_D0:g} d0 below the orifice still fading "
+                   f"(or the jet short of it), no steady length"))
     return (f"its window not steady over {max(OWN_LONGEST, window):g} of its own L / U (from t = "
             f"{ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow) + ": the length wanders, made no longer")
 
 
-def own_verdict(rows, info, window):
+def own_verdict(rows, info, window, quiet=0.0):
     """--own-window: what a run's jet.csv rows (at least one) say of its window, for `run` and
     `report` alike -> (own_window's dict, verdict, end): verdict "whole" (the rows reach the
     window's need within one check), "capped" (they do not, but reach own_cap within one check:
     the run is made no longer), "unsteady" (the window was judged and is still not steady when
     it spans OWN_LONGEST (or W, if more) of the jet's own L / U, within one check: made no
     longer) or "more", with the end [s] to resume it to (the need and one check more, at most
-    own_cap and the unsteady window's longest)."""
+    own_cap and the unsteady window's longest). quiet: as own_window's."""
     every = own_check_every(info["L_ref"], info["U"])
-    ow = own_window(rows, info["U"], info["d0"], window, every)
-    last, cap = float(rows[-1]["time"]), own_cap(info, window)
+    ow = own_window(rows, info["U"], info["d0"], window, every, quiet)
+    last, cap = float(rows[-1]["time"]), own_cap(info, window, quiet)
     if last >= ow["need"] - every:
         return ow, "whole", None
     if last >= cap - every:
@@ -446,10 +518,10 @@ def own_verdict(rows, info, window):
     return ow, "more", min(ow["need"] + every, cap)
 
 
-def own_cap(info, window):
+def own_cap(info, window, quiet=0.0):
     """--own-window: the latest end [s] a run is made longer to (a window of a jet as long as
-    the box)."""
-    return (OWN_START + window) * info["box"] / info["U"]
+    the box, its clock from quiet as own_window's; from t = 0 while the orifice is not quiet)."""
+    return (quiet or 0.0) + (OWN_START + window) * info["box"] / info["U"]
 
 
 def plan(opts):
@@ -603,12 +675,13 @@ def cmd_run(args):
             return None
         if not rows or blew_up(run_dir):
             return None
-        ow, verdict, end = own_verdict(rows, info, args.window)
+        ow, verdict, end = own_verdict(rows, info, args.window, run_quiet(run_dir, info)[0])
         if verdict == "whole":
             return None
         if verdict != "more":
             return None, no_longer(ow, verdict, info, args.window)
-        why = ("no window yet" if ow["start"] is None else
+        why = ("no window yet" + (", the orifice not yet quiet" if ow["quiet"] is None else "")
+               if ow["start"] is None else
                f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
                + unsteady(ow))
         return end, why
@@ -651,7 +724,7 @@ def read_run(run_dir, info):
          "L_first": None, "drops_main": None, "drops_median": None, "drops_mode": None, "n_main_window": 0,
          "n_drops": None, "n_sat": None, "notes": [],
          "wall_s": None, "particles": None, "particle_steps_per_s": None, "finished": False,
-         "unsteady": False}
+         "unsteady": False, "quiet": None, "not_quiet": False}
     t0 = window_start(info)
     r["t0"] = t0
     own_short = []   # --own-window: the end the window still needs [s], when the run is short of it
@@ -659,13 +732,29 @@ def read_run(run_dir, info):
     def first_and_window(rows):
         nonlocal t0
         if info.get("own") and rows:
-            ow, verdict, _end = own_verdict(rows, info, info["W"])
+            quiet, why = run_quiet(run_dir, info)
+            if why:
+                r["notes"].append(why)
+            ow, verdict, _end = own_verdict(rows, info, info["W"], quiet)
+            r["quiet"] = quiet
             if verdict == "more":
                 own_short.append(ow["need"])
                 return first_breakup(rows), []
             if verdict in ("capped", "unsteady"):
                 r["notes"].append(no_longer(ow, verdict, info, info["W"]))
                 r["unsteady"] = verdict == "unsteady"
+                if quiet is None:   # no window: the start-up never cleared
+                    r["not_quiet"] = True
+                    t_end = float(rows[-1]["time"])
+                    span = OWN_MIN_D0 * info["d0"] / info["U"]
+                    late = [float(x["L_over_d0"]) for x in rows
+                            if is_broken(x) and float(x["time"]) >= t_end - span]
+                    if late:
+                        m = sum(late) / len(late)
+                        sd = math.sqrt(sum((v - m) ** 2 for v in late) / len(late))
+                        r["notes"].append(f"over its last {OWN_MIN_D0:g} d0 / U ({t_end - span:.4g}-{t_end:.4g} s) "
+                                          f"the jet broke at L/d0 = {m:.1f} (std {sd:.1f}), not a steady length")
+                    return first_breakup(rows), []
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
@@ -725,6 +814,8 @@ def read_run(run_dir, info):
         r["notes"].append(boom)
     elif r["finished"] and own_short:
         r["status"] = "unfinished (its own window not reached)"
+    elif r["finished"] and r["not_quiet"]:
+        r["status"] = "finished, start-up not cleared"
     elif r["finished"]:
         r["status"] = ("finished, no steady breakup" if r["L"] is None else
                        "finished, unsteady window" if r["unsteady"] else "finished")
@@ -945,7 +1036,8 @@ def parse(argv=None):
                             f"them (default {WINDOW_LENGTH:g}; suffix _wW)")
         p.add_argument("--own-window", action="store_true",
                        help=f"each run's window from its own length: from the first sample at t >= "
-                            f"{OWN_START:g} L / U (L its mean from there on), W L / U long; runs are "
+                            f"t_q + {OWN_START:g} L / U (L its mean from there on, t_q when the "
+                            f"start-up's disturbance left the orifice), W L / U long; runs are "
                             f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it, an unsteady "
                             f"one for at most {OWN_LONGEST:g} L / U (needs "
                             f"--quiet-exit's refilling nozzle; suffix _own)")

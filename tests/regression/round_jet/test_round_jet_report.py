@@ -6,7 +6,8 @@ origin; the groups are the diameter ones; missing runs are listed; `run --dry-ru
 as its docstring says; `report --only --brief` prints the chosen run in lines (its theory line
 checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
-one that keeps growing); `--column` sizes each run's starting column from its L_ref; `--gravity`
+one that keeps growing), its clock from when the orifice went quiet (quiet_since, on synthetic
+surfaces whose start-up fades, holds or never reaches 5 d0); `--column` sizes each run's starting column from its L_ref; `--gravity`
 makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
 and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
 release on the orifice line, `--renormalise-margin` the margin of the renormalised continuity
@@ -492,6 +493,41 @@ def main():
         ow, verdict, end = rjs.own_verdict(wander(0.13), slow_info, 0.5)
         check(verdict == "unsteady" and end is None, f"wandering, 0.13 s: {verdict} {ow}")
         check(rjs.own_verdict(grow, info, 0.5)[1] == "whole", "a steady jet is never unsteady")
+        # quiet_since: a jet at 0.4014 m/s (spans of 10 d0 / U = 0.029746 s) whose surface 5 d0
+        # below the orifice (slices 0.1 d0 wide: the one centred at 5.05 d0) carries a wave of
+        # period 4 ms, sampled every 1 ms. Its amplitude halves every 30 ms up to 0.15 s and then
+        # holds: 4 spans from span 4 (0.119-0.149 s, a mean amplitude about 1.4 times the held
+        # one) end within a factor 2 of it, and from span 3 they do not (about 2.9 times): quiet
+        # from 4 spans, 0.11898 s. Halving throughout to 0.45 s: never quiet. Held throughout:
+        # quiet from 0. A jet that never reaches 5 d0 (it drips): never quiet.
+        def surface(amp, t_end=0.45, reach=True):
+            out = []
+            for k in range(1, round(t_end * 1000) + 1):
+                t = k / 1000
+                out.append({"time": f"{t:.4f}", "s_over_d0": "0.05", "r_over_d0": "0.5"})
+                if reach:
+                    out.append({"time": f"{t:.4f}", "s_over_d0": "5.05",
+                                "r_over_d0": f"{0.5 + amp(t) * math.sin(2 * math.pi * t / 0.004):.12f}"})
+            return out
+        span4 = 10 * d0 / u4
+        q = rjs.quiet_since(surface(lambda t: 1e-3 * 2 ** (-min(t, 0.15) / 0.03)), u4, d0)
+        check(q is not None and abs(q - 4 * span4) < 1e-12, f"quiet after a start-up that fades by 0.15 s: {q}")
+        check(rjs.quiet_since(surface(lambda t: 1e-3 * 2 ** (-t / 0.03)), u4, d0) is None,
+              "a start-up still fading at 0.45 s: not quiet")
+        check(rjs.quiet_since(surface(lambda t: 1e-6), u4, d0) == 0.0, "a jet quiet from the start")
+        check(rjs.quiet_since(surface(lambda t: 1e-6, reach=False), u4, d0) is None, "a jet short of 5 d0")
+        # own_window's clock from the quiet time: the grown jet quiet from 0.02 s has its window
+        # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s; not quiet, no window,
+        # and at the cap (the 150 d0 jet to 0.41 s) its run is made no longer
+        ow = rjs.own_window(grow, u, d0, 0.5, 0.0, 0.02)
+        check(ow["start"] == 0.168 and abs(ow["need"] - (0.168 + 0.5 * tau)) < 1e-12, f"quiet from 0.02 s: {ow}")
+        ow = rjs.own_window(grow, u, d0, 0.5, 0.0, None)
+        check(ow["start"] is None and ow["quiet"] is None, f"not quiet: {ow}")
+        ow, verdict, _end = rjs.own_verdict(long_jet, info, 0.5, None)
+        check(verdict == "capped" and "still fading" in rjs.no_longer(ow, verdict, info, 0.5),
+              f"not quiet at the cap: {verdict}")
+        check(abs(rjs.own_cap(info, 0.5, 0.02) - (0.02 + rjs.own_cap(info, 0.5))) < 1e-12,
+              "the cap's clock from the quiet time")
         # the runs: sized for 10 d0 (2.25 x 10 d0 / U), checks every L_ref / (200 U), a
         # refilling nozzle, in a directory of its own; without --quiet-exit refused
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--axis-pair",
@@ -509,6 +545,13 @@ def main():
         for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136]), ("mc_u0.3441", wander(0.13))):
             fake_run(os.path.join(osdir, name), [(float(x["time"]), k, 1, float(x["L_over_d0"]))
                                                  for k, x in enumerate(rows)])
+        # a jet at 0.4014 m/s of 24 d0 to its cap (0.4521 s, a 67.55 d0 box) whose start-up is
+        # still fading 5 d0 below the orifice: no window, no length
+        fake_run(os.path.join(osdir, "mc_u0.4014"), [(k / 1000, k, 1, 24.0) for k in range(5, 453)])
+        with open(os.path.join(osdir, "mc_u0.4014", "jet_surface.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, ["time", "step", "s_over_d0", "r_over_d0"])
+            w.writeheader()
+            w.writerows({"step": 0, **x} for x in surface(lambda t: 1e-3 * 2 ** (-t / 0.03), 0.452))
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", os.path.join(tmp, "own"), "--no-figures",
                             "--axis-pair", "rings_fit", "--quiet-exit", "--window", "0.5", "--own-window"],
                            capture_output=True, text=True)
@@ -524,6 +567,10 @@ def main():
         r = rows.get("mc_u0.3441", {})
         with open(os.path.join(tmp, "own", "round_jets.md")) as f:
             md = f.read()
+        r4 = rows.get("mc_u0.4014", {})
+        check(r4.get("status") == "finished, start-up not cleared" and r4.get("L/d0 SPH (std)") == "- (-)"
+              and "still fading" in md and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
+              f"not quiet by its cap: {r4}")
         check(r.get("status") == "finished, unsteady window" and "not steady over 2 of its own L / U" in md
               and r.get("L/d0 SPH (std)", "-").split()[0] != "-", f"unsteady window: {r}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
