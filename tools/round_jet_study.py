@@ -353,11 +353,11 @@ def own_check_every(l_ref, u):
     return l_ref / (OWN_CHECKS * u)
 
 
-def quiet_since(surface, u, d0):
-    """--own-window: when the orifice went quiet [s] (OWN_QUIET_D0's comment) from a run's
-    jet_surface.csv rows (time, s_over_d0, r_over_d0) for speed u and diameter d0; None while the
-    start-up's disturbance is still fading there, or the jet is short of OWN_QUIET_D0 in half of a
-    span's samples (a jet that drips)."""
+def quiet_spans(surface, u, d0):
+    """A run's jet_surface.csv rows (time, s_over_d0, r_over_d0), for speed u and diameter d0 ->
+    the wave amplitude [a] OWN_QUIET_D0 d0 below the orifice in each complete span of
+    OWN_MIN_D0 d0 / U from t = 0 (OWN_QUIET_D0's comment), None for a span in more than half of
+    whose samples the intact jet is shorter than that."""
     span = OWN_MIN_D0 * d0 / u
     times, at = {}, {}
     width = None
@@ -370,32 +370,50 @@ def quiet_since(surface, u, d0):
         times.setdefault(k, set()).add(t)
         if abs(s - width * (math.floor(OWN_QUIET_D0 / width) + 0.5)) < 0.25 * width:
             at.setdefault(k, []).append(float(x["r_over_d0"]))
-    if not times:
-        return None
-    complete = max(times) - 1   # the last span may still be filling
-    amp = {}
-    for k in range(complete + 1):
+    amps = []
+    for k in range(max(times, default=0)):   # the last span may still be filling
         v = at.get(k, [])
         if v and len(v) >= 0.5 * len(times.get(k, ())):
             m = statistics.median(v)
-            amp[k] = math.sqrt(2.0 * sum((r - m) ** 2 for r in v) / len(v))
-    for k in range(complete + 2 - OWN_QUIET_SPANS):
-        ks = range(k, k + OWN_QUIET_SPANS)
-        if all(j in amp for j in ks):
-            first, last = amp[k], amp[k + OWN_QUIET_SPANS - 1]
-            if first > 0.0 and last >= first / OWN_QUIET_FACTOR:
-                return k * span
+            amps.append(2.0 * math.sqrt(2.0 * sum((r - m) ** 2 for r in v) / len(v)))   # r/d0 -> r/a
+        else:
+            amps.append(None)
+    return amps
+
+
+def quiet_since(surface, u, d0):
+    """--own-window: when the orifice went quiet [s] (OWN_QUIET_D0's comment) from a run's
+    jet_surface.csv rows for speed u and diameter d0; None while the start-up's disturbance is
+    still fading there, or the jet is short of OWN_QUIET_D0 in half of a span's samples (a jet
+    that drips)."""
+    amps = quiet_spans(surface, u, d0)
+    for k in range(len(amps) + 1 - OWN_QUIET_SPANS):
+        part = amps[k:k + OWN_QUIET_SPANS]
+        if all(a is not None for a in part) and part[0] > 0.0 and part[-1] >= part[0] / OWN_QUIET_FACTOR:
+            return k * OWN_MIN_D0 * d0 / u
     return None
 
 
 def run_quiet(run_dir, info):
-    """quiet_since of a run directory -> (quiet [s] or None, note): a run without
-    jet_surface.csv (the breakup checks off) is taken as quiet from t = 0, and says so."""
+    """quiet_since of a run directory -> (quiet [s] or None, note or None): a run without
+    jet_surface.csv (the breakup checks off) is taken as quiet from t = 0 and its note says so;
+    one not quiet has a note of why (its last spans)."""
     try:
         surface = read_csv(os.path.join(run_dir, "jet_surface.csv"))
     except (OSError, ValueError):
         return 0.0, "no jet_surface.csv: its window's clock starts at t = 0, the orifice's quiet not judged"
-    return quiet_since(surface, info["U"], info["d0"]), None
+    quiet = quiet_since(surface, info["U"], info["d0"])
+    if quiet is not None:
+        return quiet, None
+    amps = quiet_spans(surface, info["U"], info["d0"])[-OWN_QUIET_SPANS:]
+    if not amps:
+        return None, None
+    if amps[-1] is None or amps[0] is None:
+        which = "its last span" if amps[-1] is None else f"one of its last {len(amps)} spans"
+        return None, (f"the intact jet short of {OWN_QUIET_D0:g} d0 in more than half of the samples of "
+                      f"{which} of {OWN_MIN_D0:g} d0 / U: not quiet")
+    return None, (f"the wave amplitude {OWN_QUIET_D0:g} d0 below the orifice fell from {amps[0]:.2g} a to "
+                  f"{amps[-1]:.2g} a over its last {len(amps)} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
 
 
 def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
@@ -489,8 +507,7 @@ def no_longer(ow, verdict, info, window):
         return (f"made as long as --own-window goes (t = {cap:.4g} s, a jet as long "
                 f"as the box) without a whole window" + unsteady(ow)
                 + ("" if ow.get("quiet") is not None else
-                   f": the start-up's disturbance {OWN_QUIET_D0:g} d0 below the orifice still fading "
-                   f"(or the jet short of it), no steady length"))
+                   f": the orifice not quiet ({OWN_QUIET_D0:g} d0 below it), no steady length"))
     return (f"its window not steady over {max(OWN_LONGEST, window):g} of its own L / U (from t = "
             f"{ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow) + ": the length wanders, made no longer")
 

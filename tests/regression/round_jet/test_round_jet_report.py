@@ -516,6 +516,12 @@ def main():
               "a start-up still fading at 0.45 s: not quiet")
         check(rjs.quiet_since(surface(lambda t: 1e-6), u4, d0) == 0.0, "a jet quiet from the start")
         check(rjs.quiet_since(surface(lambda t: 1e-6, reach=False), u4, d0) is None, "a jet short of 5 d0")
+        # the spans' amplitudes: a sine of 1e-6 d0 is 2e-6 a (sqrt 2 x its rms over whole periods,
+        # 7.4 periods a span: within 2%); 15 complete spans to 0.45 s; None where the jet is short
+        held = rjs.quiet_spans(surface(lambda t: 1e-6), u4, d0)
+        check(len(held) == 15 and all(abs(a / 2e-6 - 1) < 0.02 for a in held), f"held amplitudes: {held}")
+        check(all(a is None for a in rjs.quiet_spans(surface(lambda t: 1e-6, reach=False), u4, d0)),
+              "no amplitude where the jet is short of 5 d0")
         # own_window's clock from the quiet time: the grown jet quiet from 0.02 s has its window
         # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s; not quiet, no window,
         # and at the cap (the 150 d0 jet to 0.41 s) its run is made no longer
@@ -524,7 +530,7 @@ def main():
         ow = rjs.own_window(grow, u, d0, 0.5, 0.0, None)
         check(ow["start"] is None and ow["quiet"] is None, f"not quiet: {ow}")
         ow, verdict, _end = rjs.own_verdict(long_jet, info, 0.5, None)
-        check(verdict == "capped" and "still fading" in rjs.no_longer(ow, verdict, info, 0.5),
+        check(verdict == "capped" and "orifice not quiet" in rjs.no_longer(ow, verdict, info, 0.5),
               f"not quiet at the cap: {verdict}")
         check(abs(rjs.own_cap(info, 0.5, 0.02) - (0.02 + rjs.own_cap(info, 0.5))) < 1e-12,
               "the cap's clock from the quiet time")
@@ -569,7 +575,7 @@ def main():
             md = f.read()
         r4 = rows.get("mc_u0.4014", {})
         check(r4.get("status") == "finished, start-up not cleared" and r4.get("L/d0 SPH (std)") == "- (-)"
-              and "still fading" in md and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
+              and "orifice not quiet" in md and "over its last 4 spans of 10 d0 / U: not quiet" in md and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
               f"not quiet by its cap: {r4}")
         check(r.get("status") == "finished, unsteady window" and "not steady over 2 of its own L / U" in md
               and r.get("L/d0 SPH (std)", "-").split()[0] != "-", f"unsteady window: {r}")
