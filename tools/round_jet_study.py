@@ -854,6 +854,8 @@ def report(args):
               "main drops d/d0 window median (drop-samples)", "main drops d/d0 window mode",
               "drops (satellites)", "status",
               "particles", "wall [s]"]
+    if args.own_window:
+        header.insert(header.index("window from t [s] (its own L/U)") + 1, "orifice quiet from t [s]")
     falling = falling_c if args.gravity else None
     if falling:
         header.insert(header.index("instability without gravity"),
@@ -888,6 +890,9 @@ def report(args):
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
                      fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
+        if args.own_window:
+            rows[-1].insert(header.index("orifice quiet from t [s]"),
+                            "-" if r["status"] == "missing" else fmt(r["quiet"], ".4g"))
         if falling:
             rows[-1].insert(header.index("instability without gravity") - 1,
                             f"{fmt(falling(info, info['L_meas']), '.1f')} / {fmt(falling(info, r['L']), '.1f')}")

@@ -574,6 +574,8 @@ def main():
         with open(os.path.join(tmp, "own", "round_jets.md")) as f:
             md = f.read()
         r4 = rows.get("mc_u0.4014", {})
+        check(r.get("orifice quiet from t [s]") == "0" and r4.get("orifice quiet from t [s]") == "-",
+              f"the quiet column: a run without jet_surface.csv from 0, one never quiet: {r}, {r4}")
         check(r4.get("status") == "finished, start-up not cleared" and r4.get("L/d0 SPH (std)") == "- (-)"
               and "orifice not quiet" in md and "over its last 4 spans of 10 d0 / U: not quiet" in md and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
               f"not quiet by its cap: {r4}")
