@@ -195,8 +195,8 @@ OWN_LONGEST = 2.0
 # orifice is quiet from the start of the first of OWN_QUIET_SPANS spans whose last amplitude is at
 # least the first's over OWN_QUIET_FACTOR. Settled jets' amplitudes wander by up to a factor 2
 # either way over 4 spans (0.49 m/s: 6.1e-7 a to 1.25e-6 a), so only a fall counts; the start-up's
-# fell by a factor 5-11 over 4 spans at 0.40 m/s, and 2.6 at 0.42 m/s by 450 ms (over 2 spans of
-# 25 ms, one fall at 0.40 m/s was only 0.51). 5 d0 is past the nozzle's lattice (2 d0 holds it at
+# fell by a factor 6-14 over every 4 spans at 0.40 m/s up to 450 ms (over 2 spans of 25 ms, one
+# fall there was only 0.51). 5 d0 is past the nozzle's lattice (2 d0 holds it at
 # about 1e-6 a) and short of the breakup of every jet that does not drip. A run that has not gone
 # quiet by own_cap ends there with no length (status "start-up not cleared").
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
