@@ -104,7 +104,8 @@ window (fewer where a run stopped within it). With --own-window (needs --quiet-e
 _own) a run's window comes from its own length instead (own_window): from the first sample at
 t >= t_q + 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
 W L / U later; t_q is when the start-up's disturbance left the orifice (quiet_since: the
-surface's wave amplitude 5 d0 below it has stopped falling), and a run that is not quiet by the
+surface's wave amplitude 5 d0 below it has stopped falling, or the jet drips short of there), and
+a run that is not quiet by the
 time a jet as long as the box would have its window ends with no length ("start-up not
 cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
@@ -197,8 +198,11 @@ OWN_LONGEST = 2.0
 # either way over 4 spans (0.49 m/s: 6.1e-7 a to 1.25e-6 a), so only a fall counts; the start-up's
 # fell by a factor 6-14 over every 4 spans at 0.40 m/s up to 450 ms (over 2 spans of 25 ms, one
 # fall there was only 0.51). 5 d0 is past the nozzle's lattice (2 d0 holds it at
-# about 1e-6 a) and short of the breakup of every jet that does not drip. A run that has not gone
-# quiet by own_cap ends there with no length (status "start-up not cleared").
+# about 1e-6 a) and short of the breakup of every jet that does not drip. A dripping jet's
+# amplitude there is that of its breakup (0.2-0.8 a at 0.34 and 0.36 m/s falling), with spans in
+# most of whose samples it is shorter than 5 d0; such a span ends a quiet run as well (a jet that
+# drips waits for nothing), so that its window is judged and found unsteady, as before. A run
+# that has not gone quiet by own_cap ends there with no length (status "start-up not cleared").
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
@@ -384,12 +388,14 @@ def quiet_spans(surface, u, d0):
 def quiet_since(surface, u, d0):
     """--own-window: when the orifice went quiet [s] (OWN_QUIET_D0's comment) from a run's
     jet_surface.csv rows for speed u and diameter d0; None while the start-up's disturbance is
-    still fading there, or the jet is short of OWN_QUIET_D0 in half of a span's samples (a jet
-    that drips)."""
+    still fading there. A span in most of whose samples the jet is shorter than OWN_QUIET_D0 (it
+    drips, breaking at the orifice: no start-up to wait for there) ends a quiet run of spans as
+    well."""
     amps = quiet_spans(surface, u, d0)
     for k in range(len(amps) + 1 - OWN_QUIET_SPANS):
         part = amps[k:k + OWN_QUIET_SPANS]
-        if all(a is not None for a in part) and part[0] > 0.0 and part[-1] >= part[0] / OWN_QUIET_FACTOR:
+        if part[-1] is None or (all(a is not None for a in part) and part[0] > 0.0
+                                and part[-1] >= part[0] / OWN_QUIET_FACTOR):
             return k * OWN_MIN_D0 * d0 / u
     return None
 
@@ -405,15 +411,11 @@ def run_quiet(run_dir, info):
     quiet = quiet_since(surface, info["U"], info["d0"])
     if quiet is not None:
         return quiet, None
-    amps = quiet_spans(surface, info["U"], info["d0"])[-OWN_QUIET_SPANS:]
+    amps = [a for a in quiet_spans(surface, info["U"], info["d0"])[-OWN_QUIET_SPANS:] if a is not None]
     if not amps:
         return None, None
-    if amps[-1] is None or amps[0] is None:
-        which = "its last span" if amps[-1] is None else f"one of its last {len(amps)} spans"
-        return None, (f"the intact jet short of {OWN_QUIET_D0:g} d0 in more than half of the samples of "
-                      f"{which} of {OWN_MIN_D0:g} d0 / U: not quiet")
     return None, (f"the wave amplitude {OWN_QUIET_D0:g} d0 below the orifice fell from {amps[0]:.2g} a to "
-                  f"{amps[-1]:.2g} a over its last {len(amps)} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
+                  f"{amps[-1]:.2g} a over its last {OWN_QUIET_SPANS} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
 
 
 def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
