@@ -357,47 +357,52 @@ def own_check_every(l_ref, u):
     return l_ref / (OWN_CHECKS * u)
 
 
+def quiet_span(u, d0):
+    """--own-window: the span [s] over which quiet_spans takes each amplitude, OWN_MIN_D0 d0 / U."""
+    return OWN_MIN_D0 * d0 / u
+
+
 def quiet_spans(surface, u, d0):
     """A run's jet_surface.csv rows (time, s_over_d0, r_over_d0), for speed u and diameter d0 ->
-    the wave amplitude [a] OWN_QUIET_D0 d0 below the orifice in each complete span of
-    OWN_MIN_D0 d0 / U from t = 0 (OWN_QUIET_D0's comment), None for a span in more than half of
-    whose samples the intact jet is shorter than that."""
-    span = OWN_MIN_D0 * d0 / u
+    the wave amplitude [a] OWN_QUIET_D0 d0 below the orifice in each complete quiet_span from
+    t = 0 (tools/jet_noise.py's envelope at that slice over the span's samples; OWN_QUIET_D0's
+    comment), None for a span in more than half of whose samples the intact jet is shorter."""
+    span = quiet_span(u, d0)
     times, at = {}, {}
     width = None
     for x in surface:
         s = float(x["s_over_d0"])
         if width is None:
             width = 2.0 * s   # the first slice's centre is half a slice from the orifice
-        t = float(x["time"])
-        k = int(t // span)
-        times.setdefault(k, set()).add(t)
+        k = int(float(x["time"]) // span)
+        times.setdefault(k, set()).add(x["time"])
         if abs(s - width * (math.floor(OWN_QUIET_D0 / width) + 0.5)) < 0.25 * width:
-            at.setdefault(k, []).append(float(x["r_over_d0"]))
+            at.setdefault(k, []).append(x)
     amps = []
     for k in range(max(times, default=0)):   # the last span may still be filling
-        v = at.get(k, [])
-        if v and len(v) >= 0.5 * len(times.get(k, ())):
-            m = statistics.median(v)
-            amps.append(2.0 * math.sqrt(2.0 * sum((r - m) ** 2 for r in v) / len(v)))   # r/d0 -> r/a
-        else:
-            amps.append(None)
+        env = jet_noise.envelope(at.get(k, []), times[k], None) if k in times else []
+        amps.append(env[0][1] if env else None)
     return amps
 
 
-def quiet_since(surface, u, d0):
-    """--own-window: when the orifice went quiet [s] (OWN_QUIET_D0's comment) from a run's
-    jet_surface.csv rows for speed u and diameter d0; None while the start-up's disturbance is
-    still fading there. A span in most of whose samples the jet is shorter than OWN_QUIET_D0 (it
-    drips, breaking at the orifice: no start-up to wait for there) ends a quiet run of spans as
-    well."""
-    amps = quiet_spans(surface, u, d0)
+def first_quiet(amps):
+    """quiet_spans' amplitudes -> the index of the span the orifice is quiet from (OWN_QUIET_D0's
+    comment), None while the start-up's disturbance is still fading there. A span in most of
+    whose samples the jet is shorter than OWN_QUIET_D0 (it drips, breaking at the orifice: no
+    start-up to wait for there) ends a quiet run of spans as well."""
     for k in range(len(amps) + 1 - OWN_QUIET_SPANS):
         part = amps[k:k + OWN_QUIET_SPANS]
         if part[-1] is None or (all(a is not None for a in part) and part[0] > 0.0
                                 and part[-1] >= part[0] / OWN_QUIET_FACTOR):
-            return k * OWN_MIN_D0 * d0 / u
+            return k
     return None
+
+
+def quiet_since(surface, u, d0):
+    """--own-window: when the orifice went quiet [s] (first_quiet) from a run's jet_surface.csv
+    rows for speed u and diameter d0; None while it has not."""
+    k = first_quiet(quiet_spans(surface, u, d0))
+    return None if k is None else k * quiet_span(u, d0)
 
 
 def run_quiet(run_dir, info):
@@ -408,14 +413,15 @@ def run_quiet(run_dir, info):
         surface = read_csv(os.path.join(run_dir, "jet_surface.csv"))
     except (OSError, ValueError):
         return 0.0, "no jet_surface.csv: its window's clock starts at t = 0, the orifice's quiet not judged"
-    quiet = quiet_since(surface, info["U"], info["d0"])
-    if quiet is not None:
-        return quiet, None
-    amps = [a for a in quiet_spans(surface, info["U"], info["d0"])[-OWN_QUIET_SPANS:] if a is not None]
-    if not amps:
+    amps = quiet_spans(surface, info["U"], info["d0"])
+    k = first_quiet(amps)
+    if k is not None:
+        return k * quiet_span(info["U"], info["d0"]), None
+    last = [a for a in amps[-OWN_QUIET_SPANS:] if a is not None]
+    if not last:
         return None, None
-    return None, (f"the wave amplitude {OWN_QUIET_D0:g} d0 below the orifice fell from {amps[0]:.2g} a to "
-                  f"{amps[-1]:.2g} a over its last {OWN_QUIET_SPANS} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
+    return None, (f"the wave amplitude {OWN_QUIET_D0:g} d0 below the orifice fell from {last[0]:.2g} a to "
+                  f"{last[-1]:.2g} a over its last {OWN_QUIET_SPANS} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
 
 
 def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
@@ -431,7 +437,7 @@ def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
     judged), need (the end [s] the window needs:
     OWN_MORE L_j / U past the last sample's time while it drifts; without a start, the end that
     a window of the recent length would need (each length at most the U t issued by then), at
-    least OWN_GROWTH times the last sample's time); and quiet."""
+    least OWN_GROWTH times the last sample's time); quiet (as given)."""
     broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
     tail_sum = 0.0
     sums = []
@@ -765,12 +771,11 @@ def read_run(run_dir, info):
                 if quiet is None:   # no window: the start-up never cleared
                     r["not_quiet"] = True
                     t_end = float(rows[-1]["time"])
-                    span = OWN_MIN_D0 * info["d0"] / info["U"]
+                    span = quiet_span(info["U"], info["d0"])
                     late = [float(x["L_over_d0"]) for x in rows
                             if is_broken(x) and float(x["time"]) >= t_end - span]
                     if late:
-                        m = sum(late) / len(late)
-                        sd = math.sqrt(sum((v - m) ** 2 for v in late) / len(late))
+                        m, sd = statistics.fmean(late), statistics.pstdev(late)
                         r["notes"].append(f"over its last {OWN_MIN_D0:g} d0 / U ({t_end - span:.4g}-{t_end:.4g} s) "
                                           f"the jet broke at L/d0 = {m:.1f} (std {sd:.1f}), not a steady length")
                     return first_breakup(rows), []

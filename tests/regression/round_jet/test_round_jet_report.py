@@ -7,8 +7,8 @@ as its docstring says; `report --only --brief` prints the chosen run in lines (i
 checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-window` takes the
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
 one that keeps growing), its clock from when the orifice went quiet (quiet_since, on synthetic
-surfaces whose start-up fades, holds, or that drip short of 5 d0); `--column` sizes each run's starting column from its L_ref; `--gravity`
-makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
+surfaces whose start-up fades, holds, or that drip short of 5 d0); `--column` sizes each run's
+starting column from its L_ref; `--gravity` makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
 and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
 release on the orifice line, `--renormalise-margin` the margin of the renormalised continuity
 (with --gravity only).
@@ -584,7 +584,8 @@ def main():
         check(r.get("orifice quiet from t [s]") == "0" and r4.get("orifice quiet from t [s]") == "-",
               f"the quiet column: a run without jet_surface.csv from 0, one never quiet: {r}, {r4}")
         check(r4.get("status") == "finished, start-up not cleared" and r4.get("L/d0 SPH (std)") == "- (-)"
-              and "orifice not quiet" in md and "over its last 4 spans of 10 d0 / U: not quiet" in md and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
+              and "orifice not quiet" in md and "over its last 4 spans of 10 d0 / U: not quiet" in md
+              and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
               f"not quiet by its cap: {r4}")
         check(r.get("status") == "finished, unsteady window" and "not steady over 2 of its own L / U" in md
               and r.get("L/d0 SPH (std)", "-").split()[0] != "-", f"unsteady window: {r}")
