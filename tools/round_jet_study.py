@@ -102,10 +102,9 @@ window is given beside it, the means over the first and the second half of the w
 samples (a length still drifting shows as two means apart), and the number of samples in the
 window (fewer where a run stopped within it). With --own-window (needs --quiet-exit; suffix
 _own) a run's window comes from its own length instead (own_window): from the first sample at
-t >= 1.75 L / U and t >= t_q + L / U, L the mean length of the broken samples from there on (at
-least 10 d0), to W L / U later; t_q is when the start-up's disturbance left the orifice
-(quiet_since: the surface's wave amplitude 5 d0 below it has stopped falling, or the jet drips
-short of there; by t_q + L / U the intact jet is fluid that left after it), and
+t >= t_q + 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
+W L / U later; t_q is when the start-up's disturbance left the orifice (quiet_since: the
+surface's wave amplitude 5 d0 below it has stopped falling, or the jet drips short of there), and
 a run that is not quiet by the
 time a jet as long as the box would have its window ends with no length ("start-up not
 cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
@@ -205,16 +204,6 @@ OWN_LONGEST = 2.0
 # drips waits for nothing), so that its window is judged and found unsteady, as before. A run
 # that has not gone quiet by own_cap ends there with no length (status "start-up not cleared").
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
-# Once the orifice is quiet at t_q the window waits OWN_AFTER L / U more: by then the whole intact
-# jet is fluid that left the orifice after t_q (it flows at U, faster when it falls), and a jet
-# broken short at t_q has had the time to grow to L at U. The window starts at the later of that
-# and the start-up's OWN_START L / U from t = 0. Read on the same runs, a window so started gives
-# the length of one started at t_q + OWN_START L / U within its std: the falling study's by -1.8
-# to +1.7 d0 (std 2.1-5.1), the 0.40 and 0.42 m/s falling jets run on to 0.7 s by +0.2 and -0.1
-# d0; the slow jets without gravity, made again, drip as before (cases/round_jet/README.md, "A
-# window after the start-up"). The convective jets, quiet from 8-46 ms, keep the window (and the
-# cost) of their start-up.
-OWN_AFTER = 1.0
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -438,8 +427,8 @@ def run_quiet(run_dir, info):
 def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
     """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
     W, quiet the time the orifice went quiet, quiet_since, None while it has not). The window
-    starts at the first broken sample t_j with t_j >= max(OWN_START L_j / U, quiet + OWN_AFTER L_j
-    / U), L_j the mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
+    starts at the first broken sample t_j with t_j >= quiet + OWN_START L_j / U, L_j the
+    mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
     needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their
     trend from t_j on must be flat (OWN_DRIFT) and each of its parts hold the window's mean
     (OWN_PARTS, parts_off). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
@@ -459,7 +448,7 @@ def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
     for j, (t, _l) in enumerate(broken):
         mean = sums[j] / (len(broken) - j)
         tau = max(mean, OWN_MIN_D0) * d0 / u
-        if quiet is not None and t >= own_start(tau, quiet):
+        if quiet is not None and t >= quiet + OWN_START * tau:
             out = {"start": t, "L": mean, "tau": tau, "drift": None, "need": t + window * tau,
                    "quiet": quiet}
             if float(rows[-1]["time"]) >= out["need"] - slack and len(broken) - j >= 3:
@@ -476,14 +465,8 @@ def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
     longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
     t_last = float(rows[-1]["time"]) if rows else 0.0
     return {"start": None, "L": None, "drift": None, "quiet": quiet,
-            "need": max(own_start(longest * d0 / u, quiet or 0.0) + window * longest * d0 / u,
+            "need": max((0.0 if quiet is None else quiet) + (OWN_START + window) * longest * d0 / u,
                         OWN_GROWTH * t_last)}
-
-
-def own_start(tau, quiet):
-    """--own-window: the earliest start [s] of a window of a jet of own time tau = L / U [s] whose
-    orifice went quiet at quiet [s] (OWN_AFTER's comment)."""
-    return max(OWN_START * tau, quiet + OWN_AFTER * tau)
 
 
 def parts_off(samples, mean):
@@ -562,9 +545,8 @@ def own_verdict(rows, info, window, quiet=0.0):
 
 def own_cap(info, window, quiet=0.0):
     """--own-window: the latest end [s] a run is made longer to (a window of a jet as long as
-    the box, started as own_window's; from t = 0 while the orifice is not quiet)."""
-    tau = info["box"] / info["U"]
-    return own_start(tau, quiet or 0.0) + window * tau
+    the box, its clock from quiet as own_window's; from t = 0 while the orifice is not quiet)."""
+    return (quiet or 0.0) + (OWN_START + window) * info["box"] / info["U"]
 
 
 def plan(opts):
@@ -1083,8 +1065,8 @@ def parse(argv=None):
                             f"them (default {WINDOW_LENGTH:g}; suffix _wW)")
         p.add_argument("--own-window", action="store_true",
                        help=f"each run's window from its own length: from the first sample at t >= "
-                            f"{OWN_START:g} L / U and t >= t_q + {OWN_AFTER:g} L / U (L its mean from there "
-                            f"on, t_q when the start-up's disturbance left the orifice), W L / U long; runs are "
+                            f"t_q + {OWN_START:g} L / U (L its mean from there on, t_q when the "
+                            f"start-up's disturbance left the orifice), W L / U long; runs are "
                             f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it, an unsteady "
                             f"one for at most {OWN_LONGEST:g} L / U (needs "
                             f"--quiet-exit's refilling nozzle; suffix _own)")
