@@ -13,7 +13,7 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
       [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--out cases/round_jet]
-      [--only RUN ...] [--brief]
+      [--set-name mc paper] [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -851,7 +851,7 @@ def read_run(run_dir, info):
 def report(args):
     sdir = study_dir(args)
     open_report(sdir, args.out, "round_jet_study.py run" + study_flags(args))
-    chosen = select_runs(plan(args), SET_NAMES, args.only, None, dry_run=True)   # no binary needed
+    chosen = select_runs(plan(args), args.set_name or SET_NAMES, args.only, None, dry_run=True)   # no binary needed
     runs = [(s, name, info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
@@ -1106,6 +1106,8 @@ def parse(argv=None):
         else:
             p.add_argument("--out", default=os.path.join(REPO, "cases", "round_jet"))
             p.add_argument("--no-figures", action="store_true")
+            p.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES,
+                           help="only the runs of these sets, as `run --set-name` (default: all)")
             p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
                            help="only these runs (default: every run of the plan)")
             p.add_argument("--brief", action="store_true",

@@ -589,6 +589,16 @@ def main():
               f"not quiet by its cap: {r4}")
         check(r.get("status") == "finished, unsteady window" and "not steady over 2 of its own L / U" in md
               and r.get("L/d0 SPH (std)", "-").split()[0] != "-", f"unsteady window: {r}")
+        # --set-name mc: the report of the measured speeds only, the paper's four jets not listed
+        # as missing; the same rows as the report of both sets
+        p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", os.path.join(tmp, "own_mc"), "--no-figures",
+                            "--axis-pair", "rings_fit", "--quiet-exit", "--window", "0.5", "--own-window",
+                            "--set-name", "mc"], capture_output=True, text=True)
+        check(p.returncode == 0, f"report --set-name mc: {p.stderr}")
+        with open(os.path.join(tmp, "own_mc", "round_jets.csv")) as f:
+            mc_rows = {r["run"]: r for r in csv.DictReader(f)}
+        check(len(mc_rows) == 20 and all(k.startswith("mc_") for k in mc_rows)
+              and all(mc_rows[k] == rows[k] for k in mc_rows), f"report --set-name mc: {sorted(mc_rows)}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--quiet-exit"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair" in p.stderr, f"--quiet-exit without the rings pair: {p.stderr}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--size-c", "0"], capture_output=True, text=True)
