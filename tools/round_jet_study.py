@@ -144,8 +144,8 @@ import sys
 import tomllib
 
 import jet_noise
-from study_runs import (StudyError, add_numerics_arguments, add_run_arguments, blew_up, check_numerics,
-                        numerics_flags, numerics_sets, numerics_tag, dispatch, drops_at, first_breakup, fmt,
+from study_runs import (StudyError, add_numerics_arguments, add_run_arguments, add_set_argument, blew_up,
+                        check_numerics, numerics_flags, numerics_sets, numerics_tag, dispatch, drops_at, first_breakup, fmt,
                         is_broken, md_table, open_report, read_csv, run_all, run_summary, select_runs,
                         study_parser)
 
@@ -1106,8 +1106,7 @@ def parse(argv=None):
         else:
             p.add_argument("--out", default=os.path.join(REPO, "cases", "round_jet"))
             p.add_argument("--no-figures", action="store_true")
-            p.add_argument("--set-name", action="extend", nargs="+", choices=SET_NAMES,
-                           help="only the runs of these sets, as `run --set-name` (default: all)")
+            add_set_argument(p, SET_NAMES)
             p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
                            help="only these runs (default: every run of the plan)")
             p.add_argument("--brief", action="store_true",

@@ -117,12 +117,18 @@ def at_least_one(text):
     return n
 
 
+def add_set_argument(p, set_names):
+    """--set-name (of set_names) on the subparser p: which of the study's sets a command takes
+    (default: all)."""
+    p.add_argument("--set-name", action="extend", nargs="+", choices=set_names,
+                   help="which sets (default: all)")
+
+
 def add_run_arguments(p, set_names, repo):
-    """The options of a study's `run` command, on the subparser p: --set-name (of set_names),
+    """The options of a study's `run` command, on the subparser p: --set-name (add_set_argument),
     --only, --threads/-j, --parallel/-P, --sphjet (default: the build under repo), --dry-run,
     and a hidden --tmax that shortens every run (plumbing checks)."""
-    p.add_argument("--set-name", action="extend", nargs="+", choices=set_names,
-                   help="which sets to run (default: all)")
+    add_set_argument(p, set_names)
     p.add_argument("--only", action="extend", nargs="+", metavar="RUN",
                    help="only these runs of the chosen sets (names as `run --dry-run` lists them)")
     p.add_argument("--threads", "-j", type=int, default=2, help="OpenMP threads per run (default 2)")

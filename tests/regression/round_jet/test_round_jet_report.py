@@ -8,8 +8,8 @@ checked on test_jet_noise.py's synthetic run, whose answer is known); `--own-win
 window from a run's own length (own_window, on a synthetic jet that grows and then holds, and on
 one that keeps growing), its clock from when the orifice went quiet (quiet_since, on synthetic
 surfaces whose start-up fades, holds, or that drip short of 5 d0); `--column` sizes each run's
-starting column from its L_ref; `--gravity` makes the runs fall and its report gives Weber's growth along the falling jet; `--fixed-step`
-and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
+starting column from its L_ref; `--gravity` makes the runs fall and its report gives Weber's
+growth along the falling jet; `--fixed-step` and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
 release on the orifice line, `--renormalise-margin` the margin of the renormalised continuity
 (with --gravity only).
 
