@@ -152,6 +152,8 @@ from study_runs import (StudyError, add_numerics_arguments, add_run_arguments, a
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "round_jet", "round_jet.toml")
 MC_CSV = os.path.join(REPO, "cases", "round_jet", "mansour_chigier_1994.csv")
+# the same figure's jets from the tube's transitional flow (1.64-2.17 m/s): drawn, not run
+MC_TRANSITIONAL_CSV = os.path.join(REPO, "cases", "round_jet", "mansour_chigier_1994_transitional.csv")
 
 RHO, MU, SIGMA = 1000.0, 1.0e-3, 0.072       # the base case's water
 D0_MC, D0_PAPER = 0.001194, 0.01
@@ -1010,7 +1012,11 @@ def figure(out, runs, c_m, c_s):
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     mx = [groups(i["U"], i["d0"])["x"] for s, _n, i, _r in runs if s == "mc"]
     my = [i["L_meas"] for s, _n, i, _r in runs if s == "mc"]
-    ax.plot(mx, my, "ko", mfc="none", label="Mansour & Chigier (1994), measured")
+    ax.plot(mx, my, "ko", mfc="none", label="Mansour & Chigier (1994), measured, laminar tube flow")
+    if mx:
+        tr = read_mc(MC_TRANSITIONAL_CSV)
+        ax.plot([groups(u, D0_MC)["x"] for u, _l in tr], [l for _u, l in tr], "^", color="0.55", mfc="none",
+                label="the same, the tube's flow transitional (not run)")
     sx = [groups(i["U"], i["d0"])["x"] for s, _n, i, r in runs if s == "mc" and r["L"] is not None]
     sy = [r["L"] for s, _n, i, r in runs if s == "mc" and r["L"] is not None]
     se = [r["L_std"] for s, _n, i, r in runs if s == "mc" and r["L"] is not None]
