@@ -467,8 +467,14 @@ def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
     longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
     t_last = float(rows[-1]["time"]) if rows else 0.0
     return {"start": None, "L": None, "drift": None, "quiet": quiet,
-            "need": max((0.0 if quiet is None else quiet) + (OWN_START + window) * longest * d0 / u,
-                        OWN_GROWTH * t_last)}
+            "need": max(clock_end(longest * d0, u, window, quiet), OWN_GROWTH * t_last)}
+
+
+def clock_end(length, u, window, quiet):
+    """--own-window: the end [s] of a window of a jet length [m] long at speed u that starts as
+    soon as the clock lets it, OWN_START length / u after quiet (after t = 0 while quiet is None),
+    and is window length / u long (own_window's need before a start, own_cap)."""
+    return (quiet or 0.0) + (OWN_START + window) * length / u
 
 
 def parts_off(samples, mean):
@@ -548,7 +554,7 @@ def own_verdict(rows, info, window, quiet=0.0):
 def own_cap(info, window, quiet=0.0):
     """--own-window: the latest end [s] a run is made longer to (a window of a jet as long as
     the box, its clock from quiet as own_window's; from t = 0 while the orifice is not quiet)."""
-    return (quiet or 0.0) + (OWN_START + window) * info["box"] / info["U"]
+    return clock_end(info["box"], info["U"], window, quiet)
 
 
 def plan(opts):

@@ -9,9 +9,9 @@ window from a run's own length (own_window, on a synthetic jet that grows and th
 one that keeps growing), its clock from when the orifice went quiet (quiet_since, on synthetic
 surfaces whose start-up fades, holds, or that drip short of 5 d0); `--column` sizes each run's
 starting column from its L_ref; `--gravity` makes the runs fall and its report gives Weber's
-growth along the falling jet; `--fixed-step` and `--step-cap` give every run the fixed or capped step their docstring says, `--landed` the
-release on the orifice line, `--renormalise-margin` the margin of the renormalised continuity
-(with --gravity only).
+growth along the falling jet; `--fixed-step` and `--step-cap` give every run the fixed or capped
+step their docstring says, `--landed` the release on the orifice line, `--renormalise-margin`
+the margin of the renormalised continuity (with --gravity only).
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
