@@ -102,15 +102,17 @@ window is given beside it, the means over the first and the second half of the w
 samples (a length still drifting shows as two means apart), and the number of samples in the
 window (fewer where a run stopped within it). With --own-window (needs --quiet-exit; suffix
 _own) a run's window comes from its own length instead (own_window): from the first sample at
-t >= t_q + 1.75 L / U, L the mean length of the broken samples from there on (at least 10 d0), to
-W L / U later; t_q is when the start-up's disturbance left the orifice (quiet_since: the
+t >= t_q + 1.75 L / U to the first sample at or past W L / U later, L the mean length of the broken
+samples of that window (at least 10 d0), so that a window is decided by its own samples and the
+report is the same however the runs were staged; t_q is when the start-up's disturbance left the orifice (quiet_since: the
 surface's wave amplitude 5 d0 below it has stopped falling, or the jet drips short of there), and
 a run that is not quiet by the
 time a jet as long as the box would have its window ends with no length ("start-up not
 cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
-10% of its mean, and each third of it within 10% of its mean), or until a window that is not
-steady spans 2 L / U (status "finished, unsteady window": a dripping jet's length wanders), so
+10% of its mean, and each third of it within 10% of its mean; one that is not is made longer
+from the same start by L / (4 U) at a time), or until a window that is not steady spans 2 L / U
+(status "finished, unsteady window": a dripping jet's length wanders), so
 that the short jets of the slow speeds cost their own lengths and the long ones get a window
 past their own start-up. Drops
 (equivalent sphere diameters, satellites are drops smaller than d0): the mean of the main drops
@@ -161,15 +163,15 @@ PAPER_U0S = (0.07, 0.17, 0.20, 0.25)
 RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the fastest-growing wave
 LENGTH_TOL = 0.20     # the breakup lengths' target: within 20% of the measured ones
 WINDOW_T_FACTOR, WINDOW_LENGTH = 1.5, 1.0    # the window's start and (default) length, in L_ref / U
-# --own-window: the window starts at the first sample t with t >= OWN_START L / U, L the run's own
-# mean length from t on (at least OWN_MIN_D0 d0): the study's jets reach their steady lengths at
+# --own-window: the window starts at the first sample t with t >= OWN_START L / U, L the mean
+# length over the window itself (at least OWN_MIN_D0 d0): the study's jets reach their steady lengths at
 # 1.5-1.8 of their own L / U (cases/round_jet/README.md); a run is sized for OWN_MIN_D0 d0 and
 # made longer (resumed with a later end, at least OWN_GROWTH times the last) until its window is
 # W L / U long. Breakup checks every L_ref / (OWN_CHECKS U), whatever the run's end.
 OWN_START, OWN_MIN_D0, OWN_GROWTH, OWN_CHECKS = 1.75, 10.0, 1.25, 200
 # A window whose least-squares line rises (or falls) by more than OWN_DRIFT of its mean over the
 # window, and by more than twice that change's standard error, holds a jet still growing: the
-# run goes on by OWN_MORE L / U. A jet that grows slower than 0.57 U passes the start's test;
+# window is made longer by OWN_MORE L / U from the same start. A jet that grows slower than 0.57 U passes the start's test;
 # over a window of 0.5 L / U one growing at 0.2 U or more changes by 10% or more, while the
 # windows of finished runs (0.78 and 1.25 m/s at d0/dx 6, 1.25 m/s at d0/dx 10) changed by -5%
 # to +7% (cases/round_jet/README.md, "Each run's window from its own length").
@@ -178,7 +180,7 @@ OWN_DRIFT, OWN_MORE = 0.10, 0.25
 # regrowth cancel in it: a run whose jet a ring of start-up debris broke at 9 d0 and that grew back
 # to 31 d0 had a window of std 32% of its mean with a change of +0.6%). So each third of the
 # window (by time) must also hold its mean within OWN_DRIFT of the window's, or within twice that
-# third's standard error, else the run goes on by OWN_MORE L / U.
+# third's standard error, else the window is made longer by OWN_MORE L / U.
 OWN_PARTS = 3
 # A window that is still not steady once it spans OWN_LONGEST L / U from its start is not made
 # longer: the jet's length wanders rather than settles (the dripping jets below We_d = 2 pi, whose
@@ -426,48 +428,93 @@ def run_quiet(run_dir, info):
                   f"{last[-1]:.2g} a over its last {OWN_QUIET_SPANS} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
 
 
-def own_window(rows, u, d0, window, slack=0.0, quiet=0.0):
-    """--own-window: a run's window from its jet.csv rows (u, d0 its speed and diameter, window
-    W, quiet the time the orifice went quiet, quiet_since, None while it has not). The window
-    starts at the first broken sample t_j with t_j >= quiet + OWN_START L_j / U, L_j the
-    mean length of the broken samples from t_j on (at least OWN_MIN_D0 d0 in the bound), and
-    needs the run to reach t_j + W L_j / U; once the rows reach it (within slack [s]), their
-    trend from t_j on must be flat (OWN_DRIFT) and each of its parts hold the window's mean
-    (OWN_PARTS, parts_off). -> dict start (t_j, None when no sample qualifies yet), L (L_j in d0),
-    tau (max(L_j, OWN_MIN_D0) d0 / U [s], with a start), drift (the window's change along its
-    least-squares line over its mean, or None), parts (parts_off's departure, when the window is
-    judged), need (the end [s] the window needs:
-    OWN_MORE L_j / U past the last sample's time while it drifts; without a start, the end that
-    a window of the recent length would need (each length at most the U t issued by then), at
-    least OWN_GROWTH times the last sample's time); quiet (as given)."""
-    broken = [(float(x["time"]), float(x["L_over_d0"])) for x in rows if is_broken(x)]
-    tail_sum = 0.0
-    sums = []
-    for _t, l in reversed(broken):
-        tail_sum += l
-        sums.append(tail_sum)
-    sums.reverse()
-    for j, (t, _l) in enumerate(broken):
-        mean = sums[j] / (len(broken) - j)
-        tau = max(mean, OWN_MIN_D0) * d0 / u
-        if quiet is not None and t >= quiet + OWN_START * tau:
-            out = {"start": t, "L": mean, "tau": tau, "drift": None, "need": t + window * tau,
-                   "quiet": quiet}
-            if float(rows[-1]["time"]) >= out["need"] - slack and len(broken) - j >= 3:
-                change, error = trend(broken[j:])
-                out["drift"] = change / mean
-                out["parts"] = parts_off(broken[j:], mean)
-                if (abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error) or out["parts"]:
-                    out["need"] = float(rows[-1]["time"]) + OWN_MORE * tau
-            return out
+def own_window(rows, u, d0, window, quiet=0.0):
+    """--own-window: a run's window from its jet.csv rows alone, the same however the run was
+    staged (u, d0 its speed and diameter, window W, quiet the time the orifice went quiet,
+    quiet_since, None while it has not). A broken sample at t_j is a candidate start; its window
+    ends at the first row at or past t_j + W tau_j, tau_j = max(L_j, OWN_MIN_D0) d0 / U and L_j
+    the mean length of the broken samples from t_j to that row, so that the window is decided by
+    its own samples and none after it. The window starts at the first candidate with t_j >= quiet
+    + OWN_START tau_j. If its trend is not flat (OWN_DRIFT) or one of its parts does not hold
+    its mean (OWN_PARTS, parts_off), it ends instead at the first row past t_j + (W + m OWN_MORE)
+    tau_j for m = 1, 2, ..., the first such window that is steady, up to max(OWN_LONGEST, W)
+    tau_j, where a window still not steady is "unsteady". A candidate whose end the rows do not
+    reach yet is undecided: the first candidate after it that passes the start's test on the
+    rows so far (or, whose end is reached, on its own) is pending, and without one there is no
+    start yet.
+    -> dict start (t_j, None with no start yet), L (L_j in d0), tau (tau_j [s]), end (the
+    window's last row's time, None while the rows do not reach it), steady (True, False
+    (unsteady at the longest) or None while undecided), drift (the judged window's change along
+    its least-squares line over its mean, or None), parts (parts_off's departure), need (the end
+    [s] the rows are to reach next: the pending window's end; with no start yet, the end that a
+    window of the recent length would need (each length at most the U t issued by then), at
+    least OWN_GROWTH times the last sample's time), quiet (as given)."""
+    times = [float(x["time"]) for x in rows]
+    lengths = [float(x["L_over_d0"]) if is_broken(x) else None for x in rows]
+    if quiet is not None:
+        earliest = quiet + OWN_START * OWN_MIN_D0 * d0 / u   # tau_j is never less
+        blocked = None   # the end [s] of the first candidate the rows do not decide yet
+        for j, t in enumerate(times):
+            if lengths[j] is None or t < earliest:
+                continue
+            got = window_from(times, lengths, j, u, d0, window)
+            passes = t >= quiet + OWN_START * got["tau"]
+            if got["end"] is None and not passes:
+                blocked = got["need"] if blocked is None else blocked
+                continue
+            if not passes:
+                continue
+            out = {"start": t, "L": got["L"], "tau": got["tau"], "end": None, "steady": None,
+                   "drift": None, "parts": None, "need": max(got["need"], blocked or 0.0), "quiet": quiet}
+            if got["end"] is None or blocked is not None:
+                return out   # pending: the likely start, its end (or an earlier one's) not reached
+            return dict(out, **judge_window(times, lengths, j, got, window))
     # a length counts up to the fluid issued since the start, U t: the rest of a longer jet is
     # the starting column's (--column), not the jet's own (a jet started at the orifice was at
     # most 0.92 U t long in the study's runs)
+    broken = [(t, l) for t, l in zip(times, lengths) if l is not None]
     recent = [min(l, u * t / d0) for t, l in broken[-10:]]
     longest = max(sum(recent) / len(recent) if recent else 0.0, OWN_MIN_D0)
-    t_last = float(rows[-1]["time"]) if rows else 0.0
-    return {"start": None, "L": None, "drift": None, "quiet": quiet,
+    t_last = times[-1] if times else 0.0
+    return {"start": None, "L": None, "end": None, "steady": None, "drift": None, "quiet": quiet,
             "need": max(clock_end(longest * d0, u, window, quiet), OWN_GROWTH * t_last)}
+
+
+def window_from(times, lengths, j, u, d0, window):
+    """own_window's candidate window from row j (broken): -> dict L (the mean length [d0] of its
+    broken rows), tau (max(L, OWN_MIN_D0) d0 / U [s]), end (the index of the first row at or
+    past t_j + window tau, tau from the rows up to it; None when no row reaches it, L and tau
+    then over every row from j) and need (t_j + window tau [s])."""
+    total, n = 0.0, 0
+    for k in range(j, len(times)):
+        if lengths[k] is not None:
+            total, n = total + lengths[k], n + 1
+        tau = max(total / n, OWN_MIN_D0) * d0 / u
+        if times[k] >= times[j] + window * tau:
+            return {"L": total / n, "tau": tau, "end": k, "need": times[j] + window * tau}
+    return {"L": total / n, "tau": tau, "end": None, "need": times[j] + window * tau}
+
+
+def judge_window(times, lengths, j, got, window):
+    """own_window's window from row j whose first end (window_from's got) the rows reach: its
+    drift and parts, lengthened by OWN_MORE tau at a time while it is not steady (own_window).
+    -> the keys end, steady, drift, parts and need of own_window's dict."""
+    tau, e, extent = got["tau"], got["end"], window
+    while True:
+        win = [(times[k], lengths[k]) for k in range(j, e + 1) if lengths[k] is not None]
+        out = {"end": times[e], "need": times[e], "steady": True, "drift": None, "parts": 0.0}
+        if len(win) >= 3:
+            mean = statistics.fmean(l for _t, l in win)
+            change, error = trend(win)
+            out["drift"], out["parts"] = change / mean, parts_off(win, mean)
+            out["steady"] = not ((abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error) or out["parts"])
+        if out["steady"] or extent >= max(OWN_LONGEST, window) - 1e-9:
+            return out
+        extent += OWN_MORE
+        target = times[j] + extent * tau
+        e = next((k for k in range(e, len(times)) if times[k] >= target), None)
+        if e is None:
+            return dict(out, end=None, steady=None, need=target)
 
 
 def clock_end(length, u, window, quiet):
@@ -530,24 +577,18 @@ def no_longer(ow, verdict, info, window):
 
 def own_verdict(rows, info, window, quiet=0.0):
     """--own-window: what a run's jet.csv rows (at least one) say of its window, for `run` and
-    `report` alike -> (own_window's dict, verdict, end): verdict "whole" (the rows reach the
-    window's need within one check), "capped" (they do not, but reach own_cap within one check:
-    the run is made no longer), "unsteady" (the window was judged and is still not steady when
-    it spans OWN_LONGEST (or W, if more) of the jet's own L / U, within one check: made no
-    longer) or "more", with the end [s] to resume it to (the need and one check more, at most
-    own_cap and the unsteady window's longest). quiet: as own_window's."""
+    `report` alike -> (own_window's dict, verdict, end): verdict "whole" (a steady window),
+    "unsteady" (a window still not steady at max(OWN_LONGEST, W) of its own L / U: made no
+    longer), "capped" (neither, but the rows reach own_cap within one check: made no longer) or
+    "more", with the end [s] to resume it to (the need and one check more, at most own_cap).
+    quiet: as own_window's."""
     every = own_check_every(info["L_ref"], info["U"])
-    ow = own_window(rows, info["U"], info["d0"], window, every, quiet)
-    last, cap = float(rows[-1]["time"]), own_cap(info, window, quiet)
-    if last >= ow["need"] - every:
-        return ow, "whole", None
-    if last >= cap - every:
+    ow = own_window(rows, info["U"], info["d0"], window, quiet)
+    if ow["steady"] is not None:
+        return ow, "whole" if ow["steady"] else "unsteady", None
+    cap = own_cap(info, window, quiet)
+    if float(rows[-1]["time"]) >= cap - every:
         return ow, "capped", None
-    if ow["start"] is not None:
-        longest = ow["start"] + max(OWN_LONGEST, window) * ow["tau"]
-        if ow["drift"] is not None and last >= longest - every:
-            return ow, "unsteady", None
-        cap = min(cap, longest)
     return ow, "more", min(ow["need"] + every, cap)
 
 
@@ -789,6 +830,8 @@ def read_run(run_dir, info):
                     return first_breakup(rows), []
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
+            if ow["end"] is not None:   # the window's own end: the rows after it are not its
+                return first_breakup(rows), [x for x in rows if t0 <= float(x["time"]) <= ow["end"]]
         return first_breakup(rows), [x for x in rows if float(x["time"]) >= t0]
 
     got = run_summary(run_dir, r, first_and_window)
@@ -1077,8 +1120,9 @@ def parse(argv=None):
                             f"them (default {WINDOW_LENGTH:g}; suffix _wW)")
         p.add_argument("--own-window", action="store_true",
                        help=f"each run's window from its own length: from the first sample at t >= "
-                            f"t_q + {OWN_START:g} L / U (L its mean from there on, t_q when the "
-                            f"start-up's disturbance left the orifice), W L / U long; runs are "
+                            f"t_q + {OWN_START:g} L / U to the first at or past W L / U later (L the "
+                            f"window's own mean, t_q when the start-up's disturbance left the "
+                            f"orifice), whatever comes after it; runs are "
                             f"sized for {OWN_MIN_D0:g} d0 and made longer until they have it, an unsteady "
                             f"one for at most {OWN_LONGEST:g} L / U (needs "
                             f"--quiet-exit's refilling nozzle; suffix _own)")

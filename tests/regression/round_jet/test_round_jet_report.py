@@ -410,18 +410,25 @@ def main():
         # --own-window: the window from the run's own length (own_window's docstring). A jet at
         # 0.7814 m/s grows at 0.7 U to 55 d0 (t = 0.12 s), then holds it: tau = 55 d0 / U =
         # 0.084043 s; the window's first sample is the first at t >= 1.75 tau = 0.14707 s,
-        # 0.148 s (checks every 1 ms), and it needs the run to reach 0.148 + 0.5 tau = 0.19002 s.
+        # 0.148 s (checks every 1 ms), and it ends at the first at t >= 0.148 + 0.5 tau =
+        # 0.19002 s, 0.191 s: flat, so steady
         d0, u = 0.001194, 0.7814
         tau = 55 * d0 / u
         grow = [{"time": f"{k / 1000:.3f}", "broken": "1",
                  "L_over_d0": f"{min(55.0, 0.7 * u * (k / 1000) / d0):.6f}"} for k in range(5, 251)]
         ow = rjs.own_window(grow, u, d0, 0.5)
-        check(ow["start"] == 0.148 and abs(ow["L"] - 55) < 1e-9 and abs(ow["need"] - (0.148 + 0.5 * tau)) < 1e-12,
-              f"own window of the growing jet: {ow}")
-        # cut at 0.13 s: no sample qualifies; the window a 55 d0 jet needs, 2.25 tau = 0.18910 s
-        # (more than 1.25 times 0.13 s, the least a run is made longer by)
+        check(ow["start"] == 0.148 and abs(ow["L"] - 55) < 1e-9 and ow["end"] == 0.191 and ow["steady"] is True
+              and ow["drift"] == 0.0 and ow["parts"] == 0.0, f"own window of the growing jet: {ow}")
+        # cut at 0.13 s: no start yet (the candidates from 0.1 s on still growing, their ends not
+        # reached); the window a 55 d0 jet needs, 2.25 tau = 0.18910 s (more than 1.25 times 0.13 s,
+        # the least a run is made longer by)
         ow = rjs.own_window(grow[:126], u, d0, 0.5)
         check(ow["start"] is None and abs(ow["need"] - 2.25 * tau) < 1e-12, f"own window not yet: {ow}")
+        # cut at 0.17 s: the start is pending (0.148 s passes on the rows so far; the candidates
+        # from 0.140 s on do not yet, and their ends are not reached), its end 0.19002 s
+        ow = rjs.own_window(grow[:166], u, d0, 0.5)
+        check(ow["start"] == 0.148 and ow["end"] is None and ow["steady"] is None
+              and abs(ow["need"] - (0.148 + 0.5 * tau)) < 1e-12, f"own window pending: {ow}")
         # a starting column (--column) 68 d0 long, intact over its first 4 ms: its lengths count
         # only up to the U t issued by then (at most 2.6 d0), so the run is sized as a 10 d0 jet,
         # 2.25 x 10 d0 / U = 0.03438 s, and not as a 68 d0 one (0.2338 s)
@@ -429,38 +436,53 @@ def main():
         ow = rjs.own_window(column, u, d0, 0.5)
         check(ow["start"] is None and abs(ow["need"] - 2.25 * 10 * d0 / u) < 1e-12,
               f"own window of a starting column: {ow}")
-        # a jet that grows at 0.45 U throughout passes the start's test (from the first sample at
-        # t >= 0.65 T, T = 0.2 s its end: 0.13 s) and reaches its need (0.13 + 0.5 tau, tau =
-        # 0.45 (0.13 + 0.2) / 2 s = 0.07425 s); but its window's line rises by 0.07 / 0.165 = 42% of
-        # its mean: it goes on by a quarter of tau past its last sample
+        # a jet that grows at 0.45 U throughout: at 0.027 s it is 7.95 d0, so tau is the 10 d0
+        # floor's 0.015280 s and it passes the start's test (1.75 tau = 0.02674 s); its first
+        # window (to 0.035 s) rises by far more than 10% of its mean, and it stays rising as it is
+        # made longer by a quarter of tau at a time: cut at 0.038 s it waits for 0.027 + 0.75 tau;
+        # at 2 tau (0.058 s) it is unsteady, whatever the rows after it
         creep = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": f"{0.45 * u * (k / 1000) / d0:.9f}"}
                  for k in range(5, 201)]
+        tau_c = 10 * d0 / u
+        ow = rjs.own_window(creep[:34], u, d0, 0.5)
+        check(ow["start"] == 0.027 and ow["steady"] is None and ow["drift"] > 0.1
+              and abs(ow["need"] - (0.027 + 0.75 * tau_c)) < 1e-12, f"a jet still growing, pending: {ow}")
         ow = rjs.own_window(creep, u, d0, 0.5)
-        tau_c = 0.45 * (0.13 + 0.2) / 2
-        check(ow["start"] == 0.13 and abs(ow["drift"] - 0.07 / 0.165) < 1e-6
-              and abs(ow["need"] - (0.2 + 0.25 * tau_c)) < 1e-9, f"a jet still growing: {ow}")
-        check(abs(rjs.own_window(grow, u, d0, 0.5)["drift"]) < 1e-9, "the held jet's window is flat")
-        # a jet that fell and grew back within its window: held at 31 d0, broken at 9 d0 at 0.108 s,
-        # grown back at U to 31 d0 (0.1416 s) and held again, to 0.164 s. Its line is flat (-1.6%:
-        # the fall and the regrowth cancel) but its middle third is 28% below the mean
-        # (parts_off), so it goes on by a quarter of its own L / U; the held jet's thirds are
-        # equal (parts 0)
-        def dip(t):
-            return 31.0 if t < 0.108 else min(31.0, 9.0 + u * (t - 0.108) / d0)
-        vee = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": f"{dip(k / 2000):.6f}"} for k in range(10, 329)]
+        check(ow["start"] == 0.027 and ow["end"] == 0.058 and ow["steady"] is False and ow["drift"] > 0.1,
+              f"a jet still growing: {ow}")
+        # a jet held at 31 d0 that dips in a V to 11 d0 about t = 0.092 s (8 ms wide): its first
+        # window (from 0.0735 s, to 0.0945 s) falls; made longer to 0.75 of its own L / U its line
+        # falls by 8.9%, under OWN_DRIFT, but its middle third is 15% below the mean (parts_off), so
+        # (cut at 0.11 s) it waits for the whole of its own L / U
+        def vee_l(t):
+            return 31.0 - 20.0 * max(0.0, 1.0 - abs(t - 0.092) / 0.004)
+        vee = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": f"{vee_l(k / 2000):.6f}"} for k in range(10, 221)]
         ow = rjs.own_window(vee, u, d0, 0.5)
-        check(ow["start"] is not None and abs(ow["drift"]) < 0.1 and ow["parts"] > 0.1
-              and abs(ow["need"] - (0.164 + 0.25 * ow["L"] * d0 / u)) < 1e-9, f"a jet that fell and grew back: {ow}")
-        check(rjs.own_window(grow, u, d0, 0.5)["parts"] == 0.0, "the held jet's thirds hold its mean")
-        # the drift test within one check of the need: a 10 d0-floored jet at 0.4014 m/s (tau =
-        # 0.029747 s; window from 0.0525 s, need 0.06738 s) growing from 3 to 9.5 d0, its last
-        # check 0.2 ms short of the need: tested with a check's slack (0.5 ms), not without
-        u4 = 0.4014
-        short = [{"time": f"{k * 0.0005:.4f}", "broken": "1", "L_over_d0": f"{3 + 6.5 * k / 134:.6f}"}
-                 for k in range(10, 135)]
-        ow = rjs.own_window(short, u4, d0, 0.5, 0.0005)
-        check(ow["drift"] is not None and ow["drift"] > 0.1 and ow["need"] > 0.067, f"short jet, slack: {ow}")
-        check(rjs.own_window(short, u4, d0, 0.5)["drift"] is None, "short jet, no slack: not tested")
+        check(ow["start"] == 0.0735 and abs(ow["drift"]) < 0.1 and ow["parts"] > 0.1 and ow["steady"] is None
+              and abs(ow["need"] - (0.0735 + ow["tau"])) < 1e-12, f"a jet that fell and grew back: {ow}")
+
+        # the window is the same however the run was staged: for every cut of the rows, once the
+        # window is decided it is the one of all the rows; before, it is undecided. On the jets
+        # above and on a noisy one (lengths 40 +- 6 d0 from a fixed sequence, a fall to 20 d0 at
+        # 0.1 s); each decided as soon as the rows reach its end
+        noisy = [{"time": f"{k / 2000:.4f}", "broken": "1",
+                  "L_over_d0": f"{(20.0 if 0.1 <= k / 2000 < 0.11 else 40.0) + 6.0 * math.sin(k * k * 0.37):.6f}"}
+                 for k in range(10, 700)]
+        for name, rows in (("grow", grow), ("creep", creep), ("vee", vee), ("noisy", noisy)):
+            whole = rjs.own_window(rows, u, d0, 0.5)
+            seen = None
+            for n in range(1, len(rows) + 1):
+                ow = rjs.own_window(rows[:n], u, d0, 0.5)
+                if ow["steady"] is None:
+                    check(seen is None, f"{name}: undecided again at {n} rows")
+                    continue
+                key = (ow["start"], ow["end"], ow["steady"], ow["drift"], ow["parts"])
+                if seen is None:
+                    seen = key
+                    check(float(rows[n - 1]["time"]) == ow["end"], f"{name}: decided at its end ({n} rows)")
+                check(key == seen == (whole["start"], whole["end"], whole["steady"], whole["drift"],
+                                      whole["parts"]), f"{name}: {key} at {n} rows, {seen} before")
+            check(seen is not None or name == "vee", f"{name}: decided within its rows")
         # own_verdict (run and report alike), the 0.78 m/s run's checks every 67.52 d0 / (200 U):
         # whole; more (to the need and a check); capped (a 150 d0 jet in a 118 d0 box at 0.41 s)
         info = {"U": u, "d0": d0, "L_ref": 67.52 * d0, "box": rjs.box_below(67.52 * d0, d0), "own": True, "W": 0.5}
@@ -471,15 +493,16 @@ def main():
         long_jet = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "150"} for k in range(5, 411)]
         check(rjs.own_verdict(long_jet, info, 0.5)[1] == "capped" and abs(rjs.own_cap(info, 0.5) - 0.40574) < 1e-4,
               f"capped at {rjs.own_cap(info, 0.5)}")
-        # a jet of 4 d0 at 0.3441 m/s is taken as 10 d0 long: from 1.75 x 0.034698 s, 0.061 s
+        check(rjs.own_verdict(creep, info, 0.5)[1] == "unsteady", "the creeping jet is unsteady")
+        # a jet of 4 d0 at 0.3441 m/s is taken as 10 d0 long: from 1.75 x 0.034698 s, 0.061 s, to
+        # the first sample at 0.061 + 0.5 x 0.034698 s, 0.079 s
         slow = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "4"} for k in range(10, 120)]
         ow = rjs.own_window(slow, 0.3441, d0, 0.5)
-        check(ow["start"] == 0.061 and abs(ow["need"] - (0.061 + 5 * d0 / 0.3441)) < 1e-12,
-              f"own window of a short jet: {ow}")
+        check(ow["start"] == 0.061 and ow["end"] == 0.079 and ow["steady"] is True, f"own window of a short jet: {ow}")
         # a dripping jet at 0.3441 m/s whose length wanders between 4 and 8 d0 (a triangle of 60 ms):
         # its window (from 0.061 s, tau = 10 d0 / U = 0.034698 s) is made longer up to 2 tau from
-        # its start, 0.1304 s, and no further: "unsteady" within a check of it (checks every
-        # 31.85 d0 / (200 U) = 0.55 ms)
+        # its start, to the first sample at or past 0.13040 s, and no further: "unsteady" once the
+        # rows reach 0.1305 s (samples every 0.5 ms)
         slow_info = {"U": 0.3441, "d0": d0, "L_ref": 31.85 * d0, "box": rjs.box_below(31.85 * d0, d0),
                      "own": True, "W": 0.5}
 
@@ -491,7 +514,11 @@ def main():
         ow, verdict, end = rjs.own_verdict(wander(0.12), slow_info, 0.5)
         check(verdict == "more" and ow["parts"] > 0.1 and end <= longest + 0.00056, f"wandering, 0.12 s: {verdict} {end}")
         ow, verdict, end = rjs.own_verdict(wander(0.13), slow_info, 0.5)
-        check(verdict == "unsteady" and end is None, f"wandering, 0.13 s: {verdict} {ow}")
+        check(verdict == "more" and abs(ow["need"] - longest) < 1e-12, f"wandering, 0.13 s: {verdict} {ow}")
+        for t_end in (0.131, 0.2):
+            ow, verdict, end = rjs.own_verdict(wander(t_end), slow_info, 0.5)
+            check(verdict == "unsteady" and end is None and ow["end"] == 0.1305,
+                  f"wandering, {t_end} s: {verdict} {ow}")
         check(rjs.own_verdict(grow, info, 0.5)[1] == "whole", "a steady jet is never unsteady")
         # quiet_since: a jet at 0.4014 m/s (spans of 10 d0 / U = 0.029746 s) whose surface 5 d0
         # below the orifice (slices 0.1 d0 wide: the one centred at 5.05 d0) carries a wave of
@@ -509,6 +536,7 @@ def main():
                     out.append({"time": f"{t:.4f}", "s_over_d0": "5.05",
                                 "r_over_d0": f"{0.5 + amp(t) * math.sin(2 * math.pi * t / 0.004):.12f}"})
             return out
+        u4 = 0.4014
         span4 = 10 * d0 / u4
         q = rjs.quiet_since(surface(lambda t: 1e-3 * 2 ** (-min(t, 0.15) / 0.03)), u4, d0)
         check(q is not None and abs(q - 4 * span4) < 1e-12, f"quiet after a start-up that fades by 0.15 s: {q}")
@@ -530,11 +558,11 @@ def main():
         check(all(a is None for a in rjs.quiet_spans(surface(lambda t: 1e-6, reach=False), u4, d0)),
               "no amplitude where the jet is short of 5 d0")
         # own_window's clock from the quiet time: the grown jet quiet from 0.02 s has its window
-        # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s; not quiet, no window,
+        # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s, to 0.211 s; not quiet, no window,
         # and at the cap (the 150 d0 jet to 0.41 s) its run is made no longer
-        ow = rjs.own_window(grow, u, d0, 0.5, 0.0, 0.02)
-        check(ow["start"] == 0.168 and abs(ow["need"] - (0.168 + 0.5 * tau)) < 1e-12, f"quiet from 0.02 s: {ow}")
-        ow = rjs.own_window(grow, u, d0, 0.5, 0.0, None)
+        ow = rjs.own_window(grow, u, d0, 0.5, 0.02)
+        check(ow["start"] == 0.168 and ow["end"] == 0.211, f"quiet from 0.02 s: {ow}")
+        ow = rjs.own_window(grow, u, d0, 0.5, None)
         check(ow["start"] is None and ow["quiet"] is None, f"not quiet: {ow}")
         ow, verdict, _end = rjs.own_verdict(long_jet, info, 0.5, None)
         check(verdict == "capped" and "orifice not quiet" in rjs.no_longer(ow, verdict, info, 0.5),
@@ -551,11 +579,11 @@ def main():
               and "nozzle.refill=true" in p.stdout and "_quiet_w0.5_own" in p.stdout, f"--own-window: {p.stdout}")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--own-window"], capture_output=True, text=True)
         check(p.returncode == 2 and "--quiet-exit" in p.stderr, f"--own-window alone: {p.stderr}")
-        # report: the grown jet to 0.25 s has its window (from 0.148 s: 103 samples of 55 d0); the
+        # report: the grown jet to 0.25 s has its window (0.148-0.191 s: 44 samples of 55 d0); the
         # same lengths at 1.0179 m/s to 0.14 s fall short of their window (from 0.112 s, to 0.1439
         # s): unfinished
         osdir = os.path.join(root, "eps0.01_n10_rings_fit_quiet_w0.5_own")
-        for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136]), ("mc_u0.3441", wander(0.13))):
+        for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136]), ("mc_u0.3441", wander(0.131))):
             fake_run(os.path.join(osdir, name), [(float(x["time"]), k, 1, float(x["L_over_d0"]))
                                                  for k, x in enumerate(rows)])
         # a jet at 0.4014 m/s of 24 d0 to its cap (0.4521 s, a 67.55 d0 box) whose start-up is
@@ -572,7 +600,7 @@ def main():
         with open(os.path.join(tmp, "own", "round_jets.csv")) as f:
             rows = {r["run"]: r for r in csv.DictReader(f)}
         r = rows.get("mc_u0.7814", {})
-        check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "103"
+        check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "44"
               and r.get("window from t [s] (its own L/U)") == "0.148 (1.76)", f"own window's length: {r}")
         r = rows.get("mc_u1.0179", {})
         check(r.get("status") == "unfinished (its own window not reached)" and r.get("L/d0 SPH (std)") == "- (-)",
