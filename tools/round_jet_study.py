@@ -844,6 +844,7 @@ def read_run(run_dir, info):
     if first is not None:
         r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
     r["n_window"] = len(window)
+    r["t1"] = float(window[-1]["time"]) if window else None
     broken, intact, at_end = split_window(window, info["box"] / info["d0"])
     r["n_intact"] = len(intact)
     if window and not at_end and len(intact) <= INTACT_SKIP_MAX * len(window):
@@ -913,7 +914,7 @@ def report(args):
               "drops (satellites)", "status",
               "particles", "wall [s]"]
     if args.own_window:
-        header.insert(header.index("window from t [s] (its own L/U)") + 1, "orifice quiet from t [s]")
+        header[header.index("window from t [s] (its own L/U)") + 1:1] = ["window to t [s]", "orifice quiet from t [s]"]
     falling = falling_c if args.gravity else None
     if falling:
         header.insert(header.index("instability without gravity"),
@@ -949,8 +950,9 @@ def report(args):
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
                      fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
         if args.own_window:
-            rows[-1].insert(header.index("orifice quiet from t [s]"),
-                            "-" if r["status"] == "missing" else fmt(r["quiet"], ".4g"))
+            rows[-1][header.index("window to t [s]"):header.index("window to t [s]")] = [
+                "-" if r["L"] is None else f"{r['t1']:.4g}",
+                "-" if r["status"] == "missing" else fmt(r["quiet"], ".4g")]
         if falling:
             rows[-1].insert(header.index("instability without gravity") - 1,
                             f"{fmt(falling(info, info['L_meas']), '.1f')} / {fmt(falling(info, r['L']), '.1f')}")

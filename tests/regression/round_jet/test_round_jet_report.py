@@ -601,7 +601,8 @@ def main():
             rows = {r["run"]: r for r in csv.DictReader(f)}
         r = rows.get("mc_u0.7814", {})
         check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "44"
-              and r.get("window from t [s] (its own L/U)") == "0.148 (1.76)", f"own window's length: {r}")
+              and r.get("window from t [s] (its own L/U)") == "0.148 (1.76)" and r.get("window to t [s]") == "0.191",
+              f"own window's length: {r}")
         r = rows.get("mc_u1.0179", {})
         check(r.get("status") == "unfinished (its own window not reached)" and r.get("L/d0 SPH (std)") == "- (-)",
               f"short of its own window: {r}")

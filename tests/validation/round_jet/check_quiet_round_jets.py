@@ -13,7 +13,7 @@ from its own length (0.5 of its own L/U):
 About 1.5 h of one core (0.8 h on two; 5466 s of one core at 5e46a49), resumable (a killed
 test continues where it stopped);
 runs made by another build are made again. Each run is read over its own window (the report's
-"window from") by the study's report and by tools/jet_noise.py (its analyse()). Two modes:
+"window from" and "window to") by the study's report and by tools/jet_noise.py (its analyse()). Two modes:
 
 --noise-floor: the noise floor and the exit, the targets of the quiet jets.
   - every run has a breakup length over its window;
@@ -73,7 +73,8 @@ def main():
             continue
         measured = float(row["L/d0 measured"])
         try:
-            s = jet_noise.analyse(str(sdir / name), number(row["window from t [s] (its own L/U)"]))["summary"]
+            s = jet_noise.analyse(str(sdir / name), number(row["window from t [s] (its own L/U)"]),
+                                  t1=number(row["window to t [s]"]))["summary"]
         except jet_noise.NoiseError as e:
             failures.append(f"{name}: jet_noise.py: {e}")
             continue
