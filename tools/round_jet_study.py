@@ -102,10 +102,11 @@ window is given beside it, the means over the first and the second half of the w
 samples (a length still drifting shows as two means apart), and the number of samples in the
 window (fewer where a run stopped within it). With --own-window (needs --quiet-exit; suffix
 _own) a run's window comes from its own length instead (own_window): from the first sample at
-t >= t_q + 1.75 L / U to the first sample at or past W L / U later, L the mean length of the broken
-samples of that window (at least 10 d0), so that a window is decided by its own samples and the
-report is the same however the runs were staged; t_q is when the start-up's disturbance left the orifice (quiet_since: the
-surface's wave amplitude 5 d0 below it has stopped falling, or the jet drips short of there), and
+t >= t_q + 1.75 L / U to the first sample at or past W L / U later, L the mean length of the
+broken samples of that window (at least 10 d0), so that a window is decided by its own samples
+and the report is the same however the runs were staged; t_q is when the start-up's disturbance
+left the orifice (quiet_since: the surface's wave amplitude 5 d0 below it has stopped falling, or
+the jet drips short of there), and
 a run that is not quiet by the
 time a jet as long as the box would have its window ends with no length ("start-up not
 cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
@@ -164,17 +165,19 @@ RAYLEIGH_DROP = 1.89                          # d / d0 of the drops of the faste
 LENGTH_TOL = 0.20     # the breakup lengths' target: within 20% of the measured ones
 WINDOW_T_FACTOR, WINDOW_LENGTH = 1.5, 1.0    # the window's start and (default) length, in L_ref / U
 # --own-window: the window starts at the first sample t with t >= OWN_START L / U, L the mean
-# length over the window itself (at least OWN_MIN_D0 d0): the study's jets reach their steady lengths at
-# 1.5-1.8 of their own L / U (cases/round_jet/README.md); a run is sized for OWN_MIN_D0 d0 and
-# made longer (resumed with a later end, at least OWN_GROWTH times the last) until its window is
-# W L / U long. Breakup checks every L_ref / (OWN_CHECKS U), whatever the run's end.
+# length over the window itself (at least OWN_MIN_D0 d0): the study's jets reach their steady
+# lengths at 1.5-1.8 of their own L / U (cases/round_jet/README.md); a run is sized for
+# OWN_MIN_D0 d0 and made longer (resumed with a later end, at least OWN_GROWTH times the last)
+# until its window is W L / U long. Breakup checks every L_ref / (OWN_CHECKS U), whatever the
+# run's end.
 OWN_START, OWN_MIN_D0, OWN_GROWTH, OWN_CHECKS = 1.75, 10.0, 1.25, 200
 # A window whose least-squares line rises (or falls) by more than OWN_DRIFT of its mean over the
 # window, and by more than twice that change's standard error, holds a jet still growing: the
-# window is made longer by OWN_MORE L / U from the same start. A jet that grows slower than 0.57 U passes the start's test;
-# over a window of 0.5 L / U one growing at 0.2 U or more changes by 10% or more, while the
-# windows of finished runs (0.78 and 1.25 m/s at d0/dx 6, 1.25 m/s at d0/dx 10) changed by -5%
-# to +7% (cases/round_jet/README.md, "Each run's window from its own length").
+# window is made longer by OWN_MORE L / U from the same start. A jet that grows slower than
+# 0.57 U passes the start's test; over a window of 0.5 L / U one growing at 0.2 U or more
+# changes by 10% or more, while the windows of finished runs (0.78 and 1.25 m/s at d0/dx 6,
+# 1.25 m/s at d0/dx 10) changed by -5% to +7% (cases/round_jet/README.md, "Each run's window
+# from its own length").
 OWN_DRIFT, OWN_MORE = 0.10, 0.25
 # A straight line does not see a jet that fell and grew back within the window (a fall and a
 # regrowth cancel in it: a run whose jet a ring of start-up debris broke at 9 d0 and that grew back
@@ -465,7 +468,8 @@ def own_window(rows, u, d0, window, quiet=0.0):
             if not passes:
                 continue
             out = {"start": t, "L": got["L"], "tau": got["tau"], "end": None, "steady": None,
-                   "drift": None, "parts": None, "need": max(got["need"], blocked or 0.0), "quiet": quiet}
+                   "drift": None, "parts": None, "need": max(got["need"], blocked or 0.0),
+                   "quiet": quiet}
             if got["end"] is None or blocked is not None:
                 return out   # pending: the likely start, its end (or an earlier one's) not reached
             return dict(out, **judge_window(times, lengths, j, got, window))
@@ -507,7 +511,8 @@ def judge_window(times, lengths, j, got, window):
             mean = statistics.fmean(l for _t, l in win)
             change, error = trend(win)
             out["drift"], out["parts"] = change / mean, parts_off(win, mean)
-            out["steady"] = not ((abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error) or out["parts"])
+            drifts = abs(change) > OWN_DRIFT * mean and abs(change) > 2.0 * error
+            out["steady"] = not (drifts or out["parts"])
         if out["steady"] or extent >= max(OWN_LONGEST, window) - 1e-9:
             return out
         extent += OWN_MORE
@@ -914,7 +919,8 @@ def report(args):
               "drops (satellites)", "status",
               "particles", "wall [s]"]
     if args.own_window:
-        header[header.index("window from t [s] (its own L/U)") + 1:1] = ["window to t [s]", "orifice quiet from t [s]"]
+        at = header.index("window from t [s] (its own L/U)") + 1
+        header[at:at] = ["window to t [s]", "orifice quiet from t [s]"]
     falling = falling_c if args.gravity else None
     if falling:
         header.insert(header.index("instability without gravity"),

@@ -417,7 +417,8 @@ def main():
         grow = [{"time": f"{k / 1000:.3f}", "broken": "1",
                  "L_over_d0": f"{min(55.0, 0.7 * u * (k / 1000) / d0):.6f}"} for k in range(5, 251)]
         ow = rjs.own_window(grow, u, d0, 0.5)
-        check(ow["start"] == 0.148 and abs(ow["L"] - 55) < 1e-9 and ow["end"] == 0.191 and ow["steady"] is True
+        check(ow["start"] == 0.148 and abs(ow["L"] - 55) < 1e-9 and ow["end"] == 0.191
+              and ow["steady"] is True
               and ow["drift"] == 0.0 and ow["parts"] == 0.0, f"own window of the growing jet: {ow}")
         # cut at 0.13 s: no start yet (the candidates from 0.1 s on still growing, their ends not
         # reached); the window a 55 d0 jet needs, 2.25 tau = 0.18910 s (more than 1.25 times 0.13 s,
@@ -456,7 +457,8 @@ def main():
         # (cut at 0.11 s) it waits for the whole of its own L / U
         def vee_l(t):
             return 31.0 - 20.0 * max(0.0, 1.0 - abs(t - 0.092) / 0.004)
-        vee = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": f"{vee_l(k / 2000):.6f}"} for k in range(10, 221)]
+        vee = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": f"{vee_l(k / 2000):.6f}"}
+               for k in range(10, 221)]
         ow = rjs.own_window(vee, u, d0, 0.5)
         check(ow["start"] == 0.0735 and abs(ow["drift"]) < 0.1 and ow["parts"] > 0.1 and ow["steady"] is None
               and abs(ow["need"] - (0.0735 + ow["tau"])) < 1e-12, f"a jet that fell and grew back: {ow}")
@@ -465,8 +467,9 @@ def main():
         # window is decided it is the one of all the rows; before, it is undecided. On the jets
         # above and on a noisy one (lengths 40 +- 6 d0 from a fixed sequence, a fall to 20 d0 at
         # 0.1 s); each decided as soon as the rows reach its end
-        noisy = [{"time": f"{k / 2000:.4f}", "broken": "1",
-                  "L_over_d0": f"{(20.0 if 0.1 <= k / 2000 < 0.11 else 40.0) + 6.0 * math.sin(k * k * 0.37):.6f}"}
+        def noisy_l(k):
+            return (20.0 if 0.1 <= k / 2000 < 0.11 else 40.0) + 6.0 * math.sin(k * k * 0.37)
+        noisy = [{"time": f"{k / 2000:.4f}", "broken": "1", "L_over_d0": f"{noisy_l(k):.6f}"}
                  for k in range(10, 700)]
         for name, rows in (("grow", grow), ("creep", creep), ("vee", vee), ("noisy", noisy)):
             whole = rjs.own_window(rows, u, d0, 0.5)
@@ -498,7 +501,8 @@ def main():
         # the first sample at 0.061 + 0.5 x 0.034698 s, 0.079 s
         slow = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "4"} for k in range(10, 120)]
         ow = rjs.own_window(slow, 0.3441, d0, 0.5)
-        check(ow["start"] == 0.061 and ow["end"] == 0.079 and ow["steady"] is True, f"own window of a short jet: {ow}")
+        check(ow["start"] == 0.061 and ow["end"] == 0.079 and ow["steady"] is True,
+              f"own window of a short jet: {ow}")
         # a dripping jet at 0.3441 m/s whose length wanders between 4 and 8 d0 (a triangle of 60 ms):
         # its window (from 0.061 s, tau = 10 d0 / U = 0.034698 s) is made longer up to 2 tau from
         # its start, to the first sample at or past 0.13040 s, and no further: "unsteady" once the
@@ -558,8 +562,8 @@ def main():
         check(all(a is None for a in rjs.quiet_spans(surface(lambda t: 1e-6, reach=False), u4, d0)),
               "no amplitude where the jet is short of 5 d0")
         # own_window's clock from the quiet time: the grown jet quiet from 0.02 s has its window
-        # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s, to 0.211 s; not quiet, no window,
-        # and at the cap (the 150 d0 jet to 0.41 s) its run is made no longer
+        # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s, to 0.211 s; not quiet,
+        # no window, and at the cap (the 150 d0 jet to 0.41 s) its run is made no longer
         ow = rjs.own_window(grow, u, d0, 0.5, 0.02)
         check(ow["start"] == 0.168 and ow["end"] == 0.211, f"quiet from 0.02 s: {ow}")
         ow = rjs.own_window(grow, u, d0, 0.5, None)
@@ -601,7 +605,8 @@ def main():
             rows = {r["run"]: r for r in csv.DictReader(f)}
         r = rows.get("mc_u0.7814", {})
         check(r.get("L/d0 SPH (std)") == "55.00 (0.00)" and r.get("window samples") == "44"
-              and r.get("window from t [s] (its own L/U)") == "0.148 (1.76)" and r.get("window to t [s]") == "0.191",
+              and r.get("window from t [s] (its own L/U)") == "0.148 (1.76)"
+              and r.get("window to t [s]") == "0.191",
               f"own window's length: {r}")
         r = rows.get("mc_u1.0179", {})
         check(r.get("status") == "unfinished (its own window not reached)" and r.get("L/d0 SPH (std)") == "- (-)",
