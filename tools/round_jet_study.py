@@ -1011,6 +1011,7 @@ def report(args):
                ", where this model (no gravity) cannot form the measured jet.\n\n")
             + f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
             f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
+            + cost_text([r for _s, _n, _i, r in runs])
             + ("\nNotes:\n" + "".join(f"- {n}\n" for n in notes) if notes else ""))
     with open(os.path.join(args.out, "round_jets.md"), "w") as f:
         f.write(text)
@@ -1021,6 +1022,20 @@ def report(args):
         text = "\n\n".join(brief(sdir, args, name, info, r, c_all) for _s, name, info, r in runs)
     print(text)
     return 0
+
+
+def cost_text(summaries):
+    """The report's line on what the runs cost, from their read_run summaries (run.log's walls
+    and particle-steps, summed over every part of every run): '' without a run.log."""
+    walls = [r["wall_s"] for r in summaries if r.get("wall_s")]
+    if not walls:
+        return ""
+    steps = sum(r["wall_s"] * r["particle_steps_per_s"] for r in summaries
+                if r.get("wall_s") and r.get("particle_steps_per_s"))
+    mantissa, exponent = f"{steps:.2e}".split("e")
+    return (f"Cost: {mantissa}e{int(exponent)} particle-steps; the runs' walls sum to {sum(walls):.0f} s "
+            f"of one core ({sum(walls) / 7200:.2f} h on two cores if the runs pack, at the speed they "
+            f"ran at).\n")
 
 
 def brief(sdir, args, name, info, r, c_all):

@@ -621,6 +621,9 @@ def main():
               and "orifice not quiet" in md and "over its last 4 spans of 10 d0 / U: not quiet" in md
               and "the jet broke at L/d0 = 24.0 (std 0.0), not a steady length" in md,
               f"not quiet by its cap: {r4}")
+        # the cost line: four runs of 100 s at 9e4 particle-steps/s (fake_run's run.log)
+        check("Cost: 3.60e7 particle-steps; the runs' walls sum to 400 s of one core (0.06 h on two cores"
+              in md, f"the cost line: {md}")
         check(r.get("status") == "finished, unsteady window" and "not steady over 2 of its own L / U" in md
               and r.get("L/d0 SPH (std)", "-").split()[0] != "-", f"unsteady window: {r}")
         # --set-name mc: the report of the measured speeds only, the paper's four jets not listed
