@@ -1030,8 +1030,7 @@ def cost_text(summaries):
     walls = [r["wall_s"] for r in summaries if r.get("wall_s")]
     if not walls:
         return ""
-    steps = sum(r["wall_s"] * r["particle_steps_per_s"] for r in summaries
-                if r.get("wall_s") and r.get("particle_steps_per_s"))
+    steps = sum(r.get("particle_steps") or 0.0 for r in summaries)
     mantissa, exponent = f"{steps:.2e}".split("e")
     return (f"Cost: {mantissa}e{int(exponent)} particle-steps; the runs' walls sum to {sum(walls):.0f} s "
             f"of one core ({sum(walls) / 7200:.2f} h on two cores if the runs pack, at the speed they "

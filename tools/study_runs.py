@@ -71,12 +71,11 @@ def finished(run_dir):
 
 def parse_log(run_dir):
     """run.log -> dict particles, boundary, fluid, wall_s (summed over the parts), steps,
-    t_end, particle_steps_per_s, parts, finished."""
+    t_end, particle_steps (summed over the parts), particle_steps_per_s, parts, finished."""
     lines = read_lines(os.path.join(run_dir, "run.log"))
     out = {"particles": None, "boundary": None, "fluid": None, "wall_s": 0.0, "steps": 0,
-           "t_end": None, "particle_steps_per_s": None, "parts": 0,
+           "t_end": None, "particle_steps": 0.0, "particle_steps_per_s": None, "parts": 0,
            "finished": finished(run_dir)}
-    particle_steps = 0.0
     for line in lines:
         m = re.search(r"\| particles (\d+) \(boundary (\d+), fluid (\d+)\)", line)
         if line.startswith("case:") and m and out["particles"] is None:
@@ -88,9 +87,9 @@ def parse_log(run_dir):
             out["t_end"] = float(m.group(3))
             out["wall_s"] += float(m.group(4))
             out["parts"] += 1
-            particle_steps += float(m.group(4)) * float(m.group(5))   # its rate x its wall time
+            out["particle_steps"] += float(m.group(4)) * float(m.group(5))   # rate x wall time
     if out["wall_s"] > 0:
-        out["particle_steps_per_s"] = particle_steps / out["wall_s"]   # over all parts
+        out["particle_steps_per_s"] = out["particle_steps"] / out["wall_s"]   # over all parts
     if out["parts"] == 0:
         out["wall_s"] = None
     return out

@@ -81,6 +81,7 @@ class RunLogTests(unittest.TestCase):
         self.assertEqual((got["particles"], got["boundary"], got["fluid"]), (120, 20, 100))
         self.assertEqual((got["steps"], got["parts"], got["t_end"]), (12, 2, 0.02))
         self.assertEqual(got["wall_s"], 30.0)
+        self.assertEqual(got["particle_steps"], 1440.0)
         self.assertEqual(got["particle_steps_per_s"], 48.0)
         self.assertTrue(got["finished"])
 
