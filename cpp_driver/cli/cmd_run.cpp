@@ -58,7 +58,8 @@ void register_run(CLI::App& app) {
         ->check(CLI::IsMember({"legacy", "hdf5", "both"}));
     cmd->add_option("--set", args->sets,
                     "override a key of a modern case, e.g. --set surface_tension.sigma=0.05 "
-                    "(repeatable)");
+                    "(repeatable); with --resume, a key of time, surface_tension, breakup or "
+                    "numerics that does not build the particles, from the checkpoint on");
     cmd->add_flag("--force", args->force, "allow writing into a non-empty output directory");
     cmd->add_flag("--legacy-clock", args->legacy_clock,
                   "output cadence on SPHysics' clock (which adds the new dt after each step), "
@@ -73,11 +74,9 @@ void register_run(CLI::App& app) {
                 throw InputError("sphjet run", "--resume DIR and --out name different directories",
                                  "one run directory", args->out_dir);
             // a resumed run continues with its checkpoint's parameters (so that it ends
-            // bitwise as the uninterrupted run); a case or a --set would be ignored
-            if (!args->sets.empty())
-                throw InputError("sphjet run", "--set with --resume",
-                                 "no --set: a resumed run keeps the parameters of its checkpoint",
-                                 "--set " + args->sets.front());
+            // bitwise as the uninterrupted run), but for the keys --set changes (those of
+            // time, surface_tension, breakup and numerics that do not build the particles:
+            // core/simulation.cpp); a case would be ignored
             if (!args->case_path.empty())
                 throw InputError("sphjet run", "a case with --resume",
                                  "no case: a resumed run keeps the case of its checkpoint",

@@ -29,6 +29,7 @@
 #include "io/h5_util.hpp"
 #include "io/hdf5_output.hpp"
 #include "io/legacy_output.hpp"
+#include "model/case_params.hpp"
 #include "model/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -187,14 +188,77 @@ struct RunStart {
     std::optional<bool> legacy_clock;  // the checkpoint's output clock, where it says
 };
 
-RunStart start_from_checkpoint(const fs::path& dir) {
+// The keys a resumed run may change (--set with --resume): those that set how the particles
+// move and what the run reads of them, not what particles there are or how they were laid
+// out. The rest (the fluid, the nozzle, the resolution, the domain, the walls) built the
+// particles the checkpoint holds, and the kernel, the lattice, the boundary and the
+// integrator fix the arrays and the kept state the core resumes from.
+bool changes_on_resume(std::string_view key) {
+    static constexpr std::string_view kept[] = {"numerics.kernel", "numerics.lattice",
+                                                "numerics.boundary", "numerics.integrator"};
+    const std::string_view section = section_of(key);
+    if (section == "time" || section == "surface_tension" || section == "breakup") return true;
+    return section == "numerics" && std::find(std::begin(kept), std::end(kept), key) == std::end(kept);
+}
+
+// --set with --resume: each key is checked as above, the case copy read with and without the
+// changes, and every parameter the changes move (a derived one too, as the Tait B of c0)
+// taken into the checkpoint's parameters; the others stay the checkpoint's, bit for bit.
+void change_on_resume(RunStart& s, SimParams& params, std::int64_t n_outputs,
+                      const fs::path& case_copy, const std::vector<std::string>& sets) {
+    if (!fs::exists(case_copy))
+        throw InputError(case_copy.string(), "--set with --resume needs the run's case copy",
+                         "the case.toml that `sphjet run` wrote beside the checkpoint", "none");
+    for (const std::string& text : sets) {
+        const std::string key(text.substr(0, text.find('=')));
+        std::string pattern;   // "fluid.block[0].u0" -> "fluid.block[].u0"
+        for (std::size_t i = 0; i < key.size(); ++i) {
+            if (key[i] == '[') {
+                pattern += "[]";
+                i = key.find(']', i);
+                if (i == std::string::npos) break;
+            } else if (key[i] != ' ' && key[i] != '\t') {
+                pattern += key[i];
+            }
+        }
+        if (find_param(pattern) != nullptr && !changes_on_resume(pattern))
+            throw InputError("--set " + text, "a key that a resumed run cannot change",
+                             "a key of [time], [surface_tension], [breakup] or [numerics] other "
+                             "than numerics.kernel, lattice, boundary and integrator (the others "
+                             "built the particles the checkpoint holds)",
+                             pattern);
+    }
+    const CaseSpec before = read_modern_case(case_copy, {});
+    CaseSpec after = read_modern_case(case_copy, sets);
+    for (const Param& r : case_params()) {
+        if (r.attr.empty()) continue;
+        const Member& m = r.member;
+        if (m.store == Member::Store::Float) {
+            const double v = m.get_f(&after.params);
+            if (v != m.get_f(&before.params)) m.set_f(&params, v);
+        } else if (m.store != Member::Store::None) {
+            const std::int64_t v = m.get_i(&after.params);
+            if (v != m.get_i(&before.params)) m.set_i(&params, v);
+        }
+    }
+    // A new output interval starts from the last output: output n + 1 is due at trec_ini +
+    // out (n + 1) (step_until_done), so trec_ini moves by (out_before - out_after) n.
+    if (after.params.out != before.params.out && after.params.trec_ini == before.params.trec_ini)
+        params.trec_ini += (before.params.out - after.params.out) * static_cast<double>(n_outputs);
+    s.spec = std::move(after);
+}
+
+RunStart start_from_checkpoint(const fs::path& dir, const std::vector<std::string>& sets) {
     if (!fs::exists(checkpoint_path(dir)))
         throw InputError(checkpoint_path(dir).string(), "cannot resume: no checkpoint",
                          "a run directory written by `sphjet run`", "no checkpoint.h5");
     Checkpoint cp = read_checkpoint(dir);
     RunStart s;
     const fs::path case_copy = dir / "case.toml";
-    if (fs::exists(case_copy)) s.spec = read_modern_case(case_copy, {});
+    if (!sets.empty())
+        change_on_resume(s, cp.params, cp.state.n_outputs, case_copy, sets);
+    else if (fs::exists(case_copy))
+        s.spec = read_modern_case(case_copy, {});
     s.spec.params = cp.params;
     s.particles = std::move(cp.particles);
     s.resumed = cp.state;
@@ -207,7 +271,8 @@ RunStart start_from_checkpoint(const fs::path& dir) {
 void remove_run_files(const fs::path& dir) {
     for (const auto& e : fs::directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
-        if (name.rfind("PART_", 0) == 0 || name == "DT" || name == "steps.txt" ||
+        if (name.rfind("PART_", 0) == 0 || name.rfind("case.to_step", 0) == 0 ||
+            name == "DT" || name == "steps.txt" ||
             name == "EPART" || name == "run.log" || name == "checkpoint.h5" ||
             name == "case.toml" || name == "INDAT" || name == "IPART" ||
             name == "NORMALS.init" || name == "gate" || name == "jet.csv" || name == "drops.csv" ||
@@ -573,7 +638,8 @@ void finish_run(const RunOptions& opts, const CaseSpec& spec, Solver& solver, Ru
 
 RunSummary run_simulation(const RunOptions& options) {
     const fs::path dir = options.out_dir;
-    RunStart start = options.resume ? start_from_checkpoint(dir) : start_fresh(options);
+    RunStart start = options.resume ? start_from_checkpoint(dir, options.overrides)
+                                     : start_fresh(options);
     RunOptions opts = options;   // a resumed run writes on its checkpoint's output clock
     if (opts.resume && start.legacy_clock) {
         if (opts.legacy_clock && !*start.legacy_clock)
@@ -595,10 +661,19 @@ RunSummary run_simulation(const RunOptions& options) {
     if (opts.resume) restore_core_state(solver, start);
 
     RunLog log(dir / "run.log", opts.resume);
+    fs::path before_changes;   // the case copy a resume with --set replaced
     if (!opts.resume) {
+        write_file_atomically(dir / "case.toml", write_modern_case(spec), "the case copy");
+    } else if (!opts.overrides.empty()) {
+        // the case copy says what the run does from here on; the one it did so far is kept
+        before_changes = dir / fmt::format("case.to_step{}.toml", solver.state().step);
+        fs::copy_file(dir / "case.toml", before_changes, fs::copy_options::overwrite_existing);
         write_file_atomically(dir / "case.toml", write_modern_case(spec), "the case copy");
     }
     log_start(log, opts, spec.params, solver);
+    if (!before_changes.empty())
+        log.line(fmt::format("changed from here on: {} (the case copy up to here: {})",
+                             fmt::join(opts.overrides, ", "), before_changes.filename().string()));
 
     RunOutputs out(opts, spec, solver, log);
     std::optional<JetRun> jet;

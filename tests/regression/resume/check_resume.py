@@ -2,9 +2,16 @@
 """Kill -9 a run mid-way, resume it, and the final state equals the uninterrupted run.
 
 Both runs write on SPHysics' clock (--legacy-clock), which the resumed run, started without
-the flag, must take from its checkpoint: every snapshot's time is compared too. A --set, a case
-or a --format with --resume is refused, naming it, and leaves the run directory as it was; so is
-a --legacy-clock where the run writes on the simulated time (a short run of 40 steps).
+the flag, must take from its checkpoint: every snapshot's time is compared too. A case, a
+--format or a --set of a key that built the particles (fluid.c0) with --resume is refused, naming
+it, and leaves the run directory as it was; so is a --legacy-clock where the run writes on the
+simulated time (a short run of 40 steps).
+
+A --set of a key a resumed run may change: with the value the run already has (time.out=0.01) the
+resumed run is the uninterrupted one bit for bit; with time.out=0.02 and numerics.xsph_eps=0.25 the
+snapshots up to the checkpoint stay as they were, the later ones hold the new xsph_eps and follow
+the last output at 0.02 s on the run's clock, and the case copy holds the new values with the old
+copy kept beside it.
 
 Both runs use the same thread count; the core's pair traversal gives every particle its
 contributions in a fixed order (bitwise independent of the thread count), and a checkpoint
@@ -74,6 +81,9 @@ def main():
     proc.wait()
     log = open(os.path.join(killed, "run.log")).read()
     print("killed with SIGKILL; run.log ends:", log.strip().splitlines()[-1][:120])
+    same, changed = os.path.join(work, "same"), os.path.join(work, "changed")
+    shutil.copytree(killed, same)
+    shutil.copytree(killed, changed)
 
     # a resumed run keeps its checkpoint's case, parameters and format: the options that would
     # change them are refused, naming them, and the run directory left as it was
@@ -112,6 +122,41 @@ def main():
                 times[-1].append(h.attrs["time"])
     print(f"snapshot times equal: {times[0] == times[1]} (last {times[0][-1]!r} s)")
     ok = ok and times[0] == times[1]
+
+    # --set on resume: the value the run has changes nothing; new values apply from the checkpoint
+    subprocess.run([sphjet, "run", "--resume", same, "--tmax", TMAX, "-q", "--set", "time.out=0.01"],
+                   check=True, capture_output=True)
+    r = subprocess.run(["h5diff", "-r", os.path.join(ref, "checkpoint.h5"), os.path.join(same, "checkpoint.h5"),
+                        "/particles", "/particles"], capture_output=True, text=True)
+    snaps_s = sorted(f for f in os.listdir(same) if f.startswith("snap_"))
+    print(f"resumed with --set time.out=0.01 (its own value): h5diff /particles of final "
+          f"checkpoints: exit {r.returncode}; snapshots {len(snaps_s)}")
+    ok = ok and r.returncode == 0 and snaps_s == snaps
+    with h5py.File(os.path.join(changed, "checkpoint.h5"), "r") as h:
+        n_cp = int(h["run_state"].attrs["n_outputs"])
+    subprocess.run([sphjet, "run", "--resume", changed, "--tmax", TMAX, "-q", "--set", "time.out=0.02",
+                    "--set", "numerics.xsph_eps=0.25"], check=True, capture_output=True)
+    rows = []
+    for f in sorted(f for f in os.listdir(changed) if f.startswith("snap_")):
+        with h5py.File(os.path.join(changed, f), "r") as h:
+            rows.append((f, h.attrs["legacy_time"], h["parameters"].attrs["xsph_eps"]))
+    kept = [f for f, _t, _x in rows[:n_cp + 1]]
+    new = rows[n_cp + 1:]
+    gaps = [b[1] - a[1] for a, b in zip(rows[n_cp:], new)]
+    print(f"resumed with --set time.out=0.02 numerics.xsph_eps=0.25 after output {n_cp}: "
+          f"{len(new)} new snapshots, xsph_eps {sorted(set(x for _f, _t, x in new))}, gaps on the "
+          f"run's clock {min(gaps, default=0):.4g}-{max(gaps, default=0):.4g} s")
+    ok = ok and kept == snaps[:n_cp + 1] and new and all(x == 0.25 for _f, _t, x in new)
+    ok = ok and all(abs(g - 0.02) < 0.002 for g in gaps)   # an output on the first step past it
+    for f in kept[1:]:
+        r = subprocess.run(["h5diff", os.path.join(ref, f), os.path.join(changed, f), "/particles",
+                            "/particles"], capture_output=True)
+        ok = ok and r.returncode == 0
+    olds = [f for f in os.listdir(changed) if f.startswith("case.to_step")]
+    text_new = open(os.path.join(changed, "case.toml")).read()
+    text_old = open(os.path.join(changed, olds[0])).read() if olds else ""
+    print(f"case copies: {olds} and case.toml")
+    ok = ok and len(olds) == 1 and "xsph_eps = 0.25" in text_new and "xsph_eps = 0.25" not in text_old
 
     # a run on the simulated time (no --legacy-clock) resumed with --legacy-clock
     plain = os.path.join(work, "plain")
