@@ -364,6 +364,15 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
                          "but the surface tension is off",
                          "surface_tension.sigma > 0 with surface_tension.balance_free_bodies = true",
                          "surface_tension.sigma = " + num(p.sigma));
+    if (const auto f = st.boolean("thin_rings_normals"); f && f->value) {
+        if (p.geometry != Geometry::Axisymmetric || p.curvature != CurvatureModel::SurfaceFit)
+            throw InputError(ctx.where(st.key_path("thin_rings_normals")),
+                             "surface_tension.thin_rings_normals takes free rings off the surface fit",
+                             "domain.geometry = \"axisymmetric\" and surface_tension.curvature = "
+                             "\"surface_fit\" with surface_tension.thin_rings_normals = true",
+                             std::string("domain.geometry = \"") + to_string(p.geometry) +
+                                 "\", surface_tension.curvature = \"" + to_string(p.curvature) + "\"");
+    }
 }
 
 // [[obstacle]], [[wall]] and [gate]: boundary particles in the box.

@@ -245,6 +245,13 @@ const Param kParams[] = {
             "that body: along z in the axisymmetric geometry, along x and z in the planar one. Under a uniform "
             "sigma a closed surface's net force is zero; the CSF force of a fragment of a few particles is not",
      .legacy = "(none)", .h5_optional = true},
+    {.key = "surface_tension.thin_rings_normals", .attr = "thin_rings_normals", .type = K::Bool,
+     .member = member<&SimParams::thin_rings_normals>(), .def = "false",
+     .allowed = "needs the axisymmetric geometry and `curvature = \"surface_fit\"`",
+     .doc = "a free ring (a free body with no particle within h of the axis) whose meridian cross-section is "
+            "narrower than a tube of radius 1.5 h takes the normals' curvature instead of the surface fit, "
+            "which draws a tube narrower than the kernel's reach too sharply bent",
+     .legacy = "(none)", .h5_optional = true},
 
     // [gravity]
     {.key = "gravity.gx", .attr = "gx", .type = K::Float, .unit = "m/s^2", .member = member<&SimParams::gx>(),

@@ -278,6 +278,9 @@ struct SimParams {
     // Each free body's net surface-tension force removed (case key
     // surface_tension.balance_free_bodies; fortran_core/loops/surface_tension_loops.f90).
     bool balance_free_bodies = false;
+    // Free rings thinner than the kernel's reach take the normals' curvature (case key
+    // surface_tension.thin_rings_normals; fortran_core/loops/free_body_loops.f90).
+    bool thin_rings_normals = false;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -90,6 +90,7 @@ typedef struct sph_surface_tension_t {
     int curvature_normals;    /* free-surface curvature's normals: 0 all, 1 within h of the surface */
     int curvature;            /* free-surface curvature: 0 the normals' divergence, 1 surface fit */
     int free_bodies;          /* 1: each free body's net surface-tension force removed (surface_tension_loops.f90) */
+    int thin_rings;           /* 1: free rings thinner than the kernel take the normals' curvature (free_body_loops.f90) */
     double sigma;             /* surface tension [N/m]; 0 = off */
 } sph_surface_tension_t;
 

@@ -1082,6 +1082,20 @@ TEST(ModernCase, BalanceFreeBodies) {
     EXPECT_NE(e.find("surface_tension.sigma > 0"), std::string::npos) << e;
 }
 
+// surface_tension.thin_rings_normals (cases/CASE_FORMAT.md): off by default; read and written
+// back; refused without the surface fit, naming the key and what it needs.
+TEST(ModernCase, ThinRingsNormals) {
+    const std::string jet = round_jet_case();
+    EXPECT_FALSE(parse_modern_case(jet, "jet.toml").params.thin_rings_normals);
+    const CaseSpec s = parse_modern_case(
+        jet, "jet.toml", {"surface_tension.curvature=surface_fit", "surface_tension.thin_rings_normals=true"});
+    EXPECT_TRUE(s.params.thin_rings_normals);
+    expect_round_trip(s);
+    const std::string e = error_of(jet, {"surface_tension.curvature=normals", "surface_tension.thin_rings_normals=true"});
+    EXPECT_NE(e.find("surface_tension.thin_rings_normals"), std::string::npos) << e;
+    EXPECT_NE(e.find("surface_tension.curvature = \"surface_fit\""), std::string::npos) << e;
+}
+
 // The renormalised continuity's reach along a jet (core/jet_run.hpp): the intact length less
 // the margin in nozzle diameters, never below 0, none while the jet is unbroken; margin 0
 // leaves the length itself (bit for bit: the runs made before the key are unchanged).
