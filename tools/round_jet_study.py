@@ -83,6 +83,10 @@ then drove without the ring moving ("A ring held at the axis").
 drop or fragment that touches neither the jet nor the nozzle (surface_tension.balance_free_bodies):
 the CSF force of a fragment of a few rings does not sum to zero, and one shed by a slow falling
 jet at d0/dx 20 flew back up against gravity and broke the jet ("Fragments that fly").
+--thin-rings (with the surface fit: --axis-pair rings_fit or --quiet-jets; suffix _tr) gives a free
+ring narrower than a tube of radius 1.5 h the normals' curvature instead of the fit
+(surface_tension.thin_rings_normals): the fit pulled such a ring, flung out from a slow falling
+jet at d0/dx 20, back onto the jet and stopped the run ("Thin rings let go").
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -616,7 +620,8 @@ def plan(opts):
     starting column's length in L_ref (None: none); gravity: the jets fall (FALLING_SETS);
     fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
-    bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies."""
+    bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
+    thin_rings: surface_tension.thin_rings_normals."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
@@ -658,6 +663,8 @@ def plan(opts):
         extra.append("domain.bound_ring_xsph=true")
     if opts.free_bodies:
         extra.append("surface_tension.balance_free_bodies=true")
+    if opts.thin_rings:
+        extra.append("surface_tension.thin_rings_normals=true")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -710,7 +717,8 @@ def study_flags(opts):
             + (" --landed" if opts.landed else "")
             + ("" if opts.margin is None else f" --renormalise-margin {opts.margin:g}")
             + (" --bound-xsph" if opts.bound_xsph else "")
-            + (" --free-bodies" if opts.free_bodies else ""))
+            + (" --free-bodies" if opts.free_bodies else "")
+            + (" --thin-rings" if opts.thin_rings else ""))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -730,7 +738,8 @@ def study_dir(opts):
             + ("_g" if opts.gravity else "") + ("" if opts.fixed_step is None else f"_fix{opts.fixed_step:g}")
             + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
             + ("" if opts.margin is None else f"_margin{opts.margin:g}")
-            + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else ""))
+            + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else "")
+            + ("_tr" if opts.thin_rings else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -1176,6 +1185,10 @@ def parse(argv=None):
         p.add_argument("--free-bodies", action="store_true",
                        help="the surface tension's net axial force taken off each drop and fragment "
                             "(surface_tension.balance_free_bodies; suffix _fb)")
+        p.add_argument("--thin-rings", action="store_true",
+                       help="a free ring narrower than a tube of radius 1.5 h takes the normals' curvature "
+                            "instead of the surface fit (surface_tension.thin_rings_normals; with the "
+                            "surface fit: --axis-pair rings_fit or --quiet-jets; suffix _tr)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -1229,6 +1242,9 @@ def parse(argv=None):
     if args.bound_xsph and args.axis_pair not in RINGS_PAIRS:
         ap.error("--bound-xsph bounds the XSPH of the rings pair's rings (domain.bound_ring_xsph): "
                  "give --axis-pair rings, rings_own or rings_fit")
+    if args.thin_rings and args.axis_pair != "rings_fit":
+        ap.error("--thin-rings takes thin free rings off the surface fit (surface_tension.thin_rings_normals): "
+                 "give --axis-pair rings_fit or --quiet-jets")
     if args.leapfrog and not args.quiet_exit:
         ap.error("--leapfrog needs the bulk viscosity of --quiet-exit (numerics.integrator = \"leapfrog\" "
                  "is refused without numerics.bulk_viscosity > 0)")

@@ -367,9 +367,10 @@ def main():
               "the report's run command with --renormalise-margin")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--renormalise-margin", "2"], capture_output=True, text=True)
         check(p.returncode == 2 and "with --gravity" in p.stderr, f"--renormalise-margin alone: {p.stderr}")
-        # --bound-xsph and --free-bodies: every run's key, in a directory of its own (suffix)
+        # --bound-xsph, --free-bodies and --thin-rings: every run's key, in a directory of its own (suffix)
         for flag, key, suffix in (("--bound-xsph", "domain.bound_ring_xsph", "_bx"),
-                                  ("--free-bodies", "surface_tension.balance_free_bodies", "_fb")):
+                                  ("--free-bodies", "surface_tension.balance_free_bodies", "_fb"),
+                                  ("--thin-rings", "surface_tension.thin_rings_normals", "_tr")):
             p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
                                 flag, "--set-name", "mc"], capture_output=True, text=True)
             steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
@@ -380,6 +381,11 @@ def main():
         # --bound-xsph is refused without the rings pair
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--bound-xsph"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair rings" in p.stderr, f"--bound-xsph alone: {p.stderr}")
+        # --thin-rings is refused without the surface fit
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--axis-pair", "rings", "--thin-rings"],
+                           capture_output=True, text=True)
+        check(p.returncode == 2 and "--axis-pair rings_fit or --quiet-jets" in p.stderr,
+              f"--thin-rings without the fit: {p.stderr}")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
