@@ -19,7 +19,9 @@ module free_body_loops
   !> b = 0.2 mm at R = 0.6 mm flung outward at 1 m/s (cases/round_jet/torus_fragment.toml,
   !> h = 2 dx = 0.119 mm) was pulled back at 0.6-0.95 of its surface energy's sigma / (rho R b)
   !> while b > 1.3 h and at up to 3.9 times it below; with half the spacing, at 0.79-0.94
-  !> (cases/round_jet/README.md, "Fragments that fly").
+  !> (cases/round_jet/README.md, "Fragments that fly"). 1.5 h lies above where the excess starts:
+  !> there the fit still pulls at 0.6-0.7 of the rate and the normals at 0.5-0.8, and a ring that
+  !> flies on only thins.
   real(rp), parameter :: THIN_RING_H = 1.5_rp
 
 contains
