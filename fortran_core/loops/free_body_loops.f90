@@ -74,19 +74,19 @@ contains
     end function find
   end subroutine bodies_of
 
-  !> thin(k) = .true. for the slots (images too) of the free rings thinner than THIN_RING_H h
-  !> (above); v the slots' meridian areas m / rho.
-  subroutine thin_free_rings(prm, s, v, thin)
+  !> The slots (images too) of the free rings thinner than THIN_RING_H h (above) taken out of the
+  !> surface fit: outer(k) = 0 and fit(1, k) = 0, so that their particles keep the normals'
+  !> curvature; v the slots' meridian areas m / rho.
+  subroutine thin_free_rings(prm, s, v, outer, fit)
     type(sph_params_t), intent(in) :: prm
     type(sorted_t), intent(in) :: s
     real(rp), intent(in) :: v(:)
-    logical, intent(out) :: thin(:)
+    real(rp), intent(inout) :: outer(:), fit(:, :)
     integer, allocatable :: root(:)
     logical, allocatable :: held(:), on_axis(:)
     real(rp), allocatable :: area(:)
     integer :: n, k, a
     real(rp) :: h
-    thin = .false.
     if (.not. allocated(s%cache)) return
     n = s%n
     h = prm%numerics%h
@@ -102,7 +102,9 @@ contains
     end do
     do k = 1, n
       a = root(k)
-      thin(k) = .not. held(a) .and. .not. on_axis(a) .and. area(a) < pi * (THIN_RING_H * h)**2
+      if (held(a) .or. on_axis(a) .or. area(a) >= pi * (THIN_RING_H * h)**2) cycle
+      outer(k) = 0.0_rp
+      fit(1, k) = 0.0_rp
     end do
   end subroutine thin_free_rings
 

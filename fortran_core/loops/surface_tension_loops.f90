@@ -153,7 +153,6 @@ contains
     real(rp) :: w0, eps
     real(rp), allocatable, target :: kappa(:)
     real(rp), allocatable :: hoop(:), a0(:, :)   ! a0: the rates before the CSF force (free bodies)
-    logical, allocatable :: thin(:)              ! the slots of thin free rings (thin_rings)
     type(csf_loops_t) :: loops
     integer :: n, k
     logical :: colour_delta, axi, reuse, surface_mean
@@ -258,21 +257,12 @@ contains
           wk%outer(k) = merge(wk%flag(k), 0.0_rp, &
                               csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h) &
                               < FIT_DEPTH * sqrt(wk%v(k)))
-        end do
-        !$omp end parallel do
-        if (prm%surface_tension%thin_rings /= 0) then
-          ! a free ring thinner than the kernel's reach gives the fit no points: its particles
-          ! keep the normals' curvature (loops/free_body_loops.f90)
-          allocate(thin(n))
-          call thin_free_rings(prm, s, wk%v, thin)
-          where (thin) wk%outer = 0.0_rp
-        end if
-        !$omp parallel do schedule(static)
-        do k = 1, n
           wk%fit(:, k) = 0.0_rp
           wk%fit(1, k) = wk%outer(k) * wk%v(k) * w0
         end do
         !$omp end parallel do
+        ! a free ring thinner than the kernel's reach gives the fit no points (free_body_loops.f90)
+        if (prm%surface_tension%thin_rings /= 0) call thin_free_rings(prm, s, wk%v, wk%outer, wk%fit)
         call sweep(PASS_SURFACE_FIT, kern, s, wk, .true., axi)
       end if
     end if
