@@ -9,7 +9,7 @@ module free_body_loops
   use sorted_state, only: sorted_t, R_AX, R_AZ
   implicit none
   private
-  public :: balance_free_bodies, thin_free_rings
+  public :: bodies_of, balance_free_bodies, thin_free_rings
 
   !> surface_tension.thin_rings_normals: a free ring (a free body with no particle within h of
   !> the axis) whose meridian cross-section A is narrower than a tube of radius THIN_RING_H h,
@@ -30,15 +30,18 @@ contains
   !> source's), held(root) whether that body touches a boundary particle or a driven nozzle's
   !> plug. A body is a set of fluid particles joined by pairs closer than 2h (the pairs the
   !> colour pass kept, images standing for their sources). The union-find runs on one thread, in
-  !> slot order.
+  !> slot order. Found once per surface-tension evaluation, for balance_free_bodies and
+  !> thin_free_rings alike; left unallocated without the colour pass's pairs.
   subroutine bodies_of(prm, s, root, held)
     type(sph_params_t), intent(in) :: prm
     type(sorted_t), intent(in) :: s
-    integer, intent(out) :: root(:)
-    logical, intent(out) :: held(:)
+    integer, allocatable, intent(out) :: root(:)
+    logical, allocatable, intent(out) :: held(:)
     integer :: n, r, q, k, a, b
     logical :: nozzle
+    if (.not. allocated(s%cache)) return
     n = s%n
+    allocate(root(n), held(n))
     nozzle = prm%nozzle%u > 0.0_rp
     do k = 1, n
       root(k) = k
@@ -77,21 +80,20 @@ contains
   !> The slots (images too) of the free rings thinner than THIN_RING_H h (above) taken out of the
   !> surface fit: outer(k) = 0 and fit(1, k) = 0, so that their particles keep the normals'
   !> curvature; v the slots' meridian areas m / rho.
-  subroutine thin_free_rings(prm, s, v, outer, fit)
+  subroutine thin_free_rings(prm, s, v, root, held, outer, fit)
     type(sph_params_t), intent(in) :: prm
     type(sorted_t), intent(in) :: s
     real(rp), intent(in) :: v(:)
+    integer, intent(in) :: root(:)      ! bodies_of's
+    logical, intent(in) :: held(:)
     real(rp), intent(inout) :: outer(:), fit(:, :)
-    integer, allocatable :: root(:)
-    logical, allocatable :: held(:), on_axis(:)
+    logical, allocatable :: on_axis(:)
     real(rp), allocatable :: area(:)
     integer :: n, k, a
     real(rp) :: h
-    if (.not. allocated(s%cache)) return
     n = s%n
     h = prm%numerics%h
-    allocate(root(n), held(n), on_axis(n), area(n))
-    call bodies_of(prm, s, root, held)
+    allocate(on_axis(n), area(n))
     on_axis = .false.
     area = 0.0_rp
     do k = 1, n
@@ -122,20 +124,19 @@ contains
   !> along x and z. a0 holds the slots' accelerations before the surface tension was added. The
   !> union-find and the sums run on one thread, in slot order: the result does not depend on the
   !> thread count.
-  subroutine balance_free_bodies(prm, s, a0, axi)
+  subroutine balance_free_bodies(prm, s, a0, axi, root, held)
     type(sph_params_t), intent(in) :: prm
     type(sorted_t), intent(inout) :: s
     real(rp), intent(in) :: a0(:, :)
     logical, intent(in) :: axi
-    integer, allocatable :: root(:)
-    logical, allocatable :: held(:)
+    integer, intent(in) :: root(:)      ! bodies_of's
+    logical, intent(in) :: held(:)
     real(rp), allocatable :: fx(:), fz(:), mass(:)
     integer :: n, k, a
     real(rp) :: mk
-    if (.not. allocated(s%cache) .or. .not. prm%surface_tension%sigma > 0.0_rp) return
+    if (.not. prm%surface_tension%sigma > 0.0_rp) return
     n = s%n
-    allocate(root(n), held(n), fx(n), fz(n), mass(n))
-    call bodies_of(prm, s, root, held)
+    allocate(fx(n), fz(n), mass(n))
     fx = 0.0_rp
     fz = 0.0_rp
     mass = 0.0_rp

@@ -34,7 +34,7 @@ module surface_tension_loops
   use sphjet_kernels, only: kernel_t, kernel_eval, kernel_w0
   use sorted_state, only: sorted_t, R_AX, R_AZ
   use particle_images, only: copy_to_images
-  use free_body_loops, only: balance_free_bodies, thin_free_rings
+  use free_body_loops, only: bodies_of, balance_free_bodies, thin_free_rings
   use omp_team, only: team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
@@ -153,6 +153,8 @@ contains
     real(rp) :: w0, eps
     real(rp), allocatable, target :: kappa(:)
     real(rp), allocatable :: hoop(:), a0(:, :)   ! a0: the rates before the CSF force (free bodies)
+    integer, allocatable :: body(:)              ! the free bodies (free_body_loops.f90), once a call
+    logical, allocatable :: held(:)
     type(csf_loops_t) :: loops
     integer :: n, k
     logical :: colour_delta, axi, reuse, surface_mean
@@ -223,6 +225,7 @@ contains
     end if
     call in_team(loops, UNIT_NORMAL)
 
+    if (prm%surface_tension%free_bodies /= 0 .or. prm%surface_tension%thin_rings /= 0) call bodies_of(prm, s, body, held)
     ! curvature (eq 23) and acceleration (eq 24)
     if (colour_delta) then
       call sweep(PASS_CURVATURE, kern, s, wk, .true., axi)
@@ -261,15 +264,15 @@ contains
           wk%fit(1, k) = wk%outer(k) * wk%v(k) * w0
         end do
         !$omp end parallel do
-        ! a free ring thinner than the kernel's reach gives the fit no points (free_body_loops.f90)
-        if (prm%surface_tension%thin_rings /= 0) call thin_free_rings(prm, s, wk%v, wk%outer, wk%fit)
+        if (allocated(body) .and. prm%surface_tension%thin_rings /= 0) &   ! no fit points (free_body_loops.f90)
+          call thin_free_rings(prm, s, wk%v, body, held, wk%outer, wk%fit)
         call sweep(PASS_SURFACE_FIT, kern, s, wk, .true., axi)
       end if
     end if
     if (prm%surface_tension%free_bodies /= 0) a0 = s%rate(R_AX:R_AZ, 1:n)
     call in_team(loops, FORCE)
     if (surface_mean) call surface_mean_force(prm, kern, st, s, wk, kappa, w0, axi)
-    if (allocated(a0)) call balance_free_bodies(prm, s, a0, axi)
+    if (allocated(a0) .and. allocated(body)) call balance_free_bodies(prm, s, a0, axi, body, held)
     if (prm%numerics%shifting > 0.0_rp) call shifting_velocity(prm, st, s, wk, axi)
 
     call fields_to_particles(st, s, wk, kappa)
