@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--out cases/round_jet]
       [--set-name mc paper] [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -87,6 +87,11 @@ jet at d0/dx 20 flew back up against gravity and broke the jet ("Fragments that 
 ring narrower than a tube of radius 1.5 h the normals' curvature instead of the fit
 (surface_tension.thin_rings_normals): the fit pulled such a ring, flung out from a slow falling
 jet at d0/dx 20, back onto the jet and stopped the run ("Thin rings let go").
+--relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
+to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
+mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
+at 1.58), with d0/dx over the plug's diameter; the report gives the lengths over the tube's d0,
+as measured, and the drops over the jet's own diameter. The paper's jets keep their plugs.
 
 Each run is sized from a reference length L_ref (the measured L for mc, 13 sqrt(We_d)
 (1 + 3 Oh_d) d0 for paper, at least 10 d0; with --size-c C, C sqrt(We_d) (1 + 3 Oh_d) d0
@@ -287,6 +292,43 @@ def absolutely_unstable(we_d):
     return we_d < 2.0 * math.pi
 
 
+def relaxed_exit(u, d0):
+    """--relaxed-exit: the flat plug to which the fully developed laminar (parabolic) exit profile
+    of a tube of bore d0 and mean speed u relaxes -> (x = U_f / u, U_f, d_f = d0 x^(-1/2)).
+    Momentum and mass between the exit (momentum flux 4/3 rho u^2 A0, the Laplace pressure on the
+    cut and the surface tension on its rim) and the flat profile downstream give
+    x - (2/We_d) x^(-1/2) = 4/3 - 2/We_d (cases/round_jet/README.md, "The tube's parabolic exit
+    profile"); gravity and the viscous stresses over the relaxation are left out. The left side
+    rises with x, is -1/3 at x = 1 and positive at 4/3: one root between, by bisection."""
+    we = groups(u, d0)["We_d"]
+    lo, hi = 1.0, 4.0 / 3.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if mid - (2.0 / we) / math.sqrt(mid) < 4.0 / 3.0 - 2.0 / we:
+            lo = mid
+        else:
+            hi = mid
+    x = 0.5 * (lo + hi)
+    return x, u * x, d0 / math.sqrt(x)
+
+
+def as_tube(info, r):
+    """--relaxed-exit: a run's plan info and read_run summary r as the report gives them: U, d0 and
+    the lengths (L, its std and halves, the first breakup's) the tube's, the plug's speed and
+    diameter under "plug"; drops stay over the jet's own diameter (Rayleigh's 1.89 is of it).
+    Without a relaxed plug, (info, r) as they are."""
+    if "tube" not in info:
+        return info, r
+    (u, d0), scale = info["tube"], info["d0"] / info["tube"][1]
+    r = dict(r)
+    for k in ("L", "L_std", "L_first"):
+        if r.get(k) is not None:
+            r[k] *= scale
+    if r.get("L_halves") is not None:
+        r["L_halves"] = tuple(scale * v for v in r["L_halves"])
+    return dict(info, U=u, d0=d0, plug=(info["U"], info["d0"])), r
+
+
 def read_mc(path=MC_CSV):
     """-> list of (U, L/d0) of the measurements (comment lines start with #)."""
     try:
@@ -324,7 +366,8 @@ def falling_jet(u, d0):
 def falling_c(info, l_d0):
     """--gravity: ln(a/delta0) that Weber's growth along the falling jet reaches at the length
     l_d0 [d0] of a run of the plan (info: U, d0); None for no length."""
-    return None if l_d0 is None else falling_jet(info["U"], info["d0"]).exponent(l_d0 * info["d0"])
+    u, d = info.get("plug", (info["U"], info["d0"]))   # as_tube's info: the jet leaves at the plug's
+    return None if l_d0 is None else falling_jet(u, d).exponent(l_d0 * info["d0"])
 
 
 def box_below(l_ref, d0):
@@ -621,15 +664,19 @@ def plan(opts):
     fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
     bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
-    thin_rings: surface_tension.thin_rings_normals."""
+    thin_rings: surface_tension.thin_rings_normals; relaxed_exit: the mc runs' plugs at the tube's
+    relaxed state (relaxed_exit), their info with "tube": (U, d0) the measured jet's (L_meas is
+    over that d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
-        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u, D0_MC, l_ref, n, quiet, window, own),
-                     {"U": u, "d0": D0_MC, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, D0_MC),
-                      "own": own, "W": window}))
+        # --relaxed-exit: the run's plug at the tube's relaxed speed and diameter, d0/dx over that diameter
+        u_run, d_run = relaxed_exit(u, D0_MC)[1:] if opts.relaxed_exit else (u, D0_MC)
+        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u_run, d_run, l_ref, n, quiet, window, own),
+                     {"U": u_run, "d0": d_run, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, d_run),
+                      "own": own, "W": window} | ({"tube": (u, D0_MC)} if opts.relaxed_exit else {})))
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
@@ -718,7 +765,8 @@ def study_flags(opts):
             + ("" if opts.margin is None else f" --renormalise-margin {opts.margin:g}")
             + (" --bound-xsph" if opts.bound_xsph else "")
             + (" --free-bodies" if opts.free_bodies else "")
-            + (" --thin-rings" if opts.thin_rings else ""))
+            + (" --thin-rings" if opts.thin_rings else "")
+            + (" --relaxed-exit" if opts.relaxed_exit else ""))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -739,7 +787,7 @@ def study_dir(opts):
             + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
             + ("" if opts.margin is None else f"_margin{opts.margin:g}")
             + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else "")
-            + ("_tr" if opts.thin_rings else ""))
+            + ("_tr" if opts.thin_rings else "") + ("_rx" if opts.relaxed_exit else ""))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -918,7 +966,7 @@ def report(args):
     sdir = study_dir(args)
     open_report(sdir, args.out, "round_jet_study.py run" + study_flags(args))
     chosen = select_runs(plan(args), args.set_name or SET_NAMES, args.only, None, dry_run=True)   # no binary needed
-    runs = [(s, name, info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
+    runs = [(s, name) + as_tube(info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
               "window samples", "window from t [s] (its own L/U)",
@@ -955,7 +1003,7 @@ def report(args):
                      "-" if r["L_halves"] is None else f"{fmt(r['L_halves'][0])} / {fmt(r['L_halves'][1])}",
                      f"{r['n_window']}" + (f" ({r['n_intact']} intact)" if r["n_intact"] else ""),
                      "-" if r["L"] is None else
-                     f"{r['t0']:.4g} ({r['t0'] * info['U'] / (r['L'] * info['d0']):.2f})",
+                     f"{r['t0']:.4g} ({r['t0'] * info.get('plug', (info['U'],))[0] / (r['L'] * info['d0']):.2f})",
                      fmt(err, "+.0f") + ("%" if err is not None else ""),
                      f"{fmt(None if info['L_meas'] is None else info['L_meas'] / g['x'], '.1f')} / "
                      f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",
@@ -1189,6 +1237,11 @@ def parse(argv=None):
                        help="a free ring narrower than a tube of radius 1.5 h takes the normals' curvature "
                             "instead of the surface fit (surface_tension.thin_rings_normals; with the "
                             "surface fit: --axis-pair rings_fit or --quiet-jets; suffix _tr)")
+        p.add_argument("--relaxed-exit", action="store_true",
+                       help="the measured jets' plugs at the speed and diameter to which the tube's "
+                            "parabolic exit profile relaxes (x = U_f / U from x - (2/We_d) x^(-1/2) = "
+                            "4/3 - 2/We_d, d0 x^(-1/2)), d0/dx over that diameter; lengths reported over the "
+                            "tube's d0 (suffix _rx)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")

@@ -11,7 +11,8 @@ surfaces whose start-up fades, holds, or that drip short of 5 d0); `--column` si
 starting column from its L_ref; `--gravity` makes the runs fall and its report gives Weber's
 growth along the falling jet; `--fixed-step` and `--step-cap` give every run the fixed or capped
 step their docstring says, `--landed` the release on the orifice line, `--renormalise-margin`
-the margin of the renormalised continuity (with --gravity only).
+the margin of the renormalised continuity (with --gravity only), `--relaxed-exit` the measured
+jets' plugs at the tube's relaxed speed and diameter (relaxed_exit's root, as_tube's lengths).
 
 The answers are known by construction: run mc_u0.7814 (L_ref = 67.52 d0, window from
 t = 1.5 * 67.52 * 0.001194 / 0.7814 = 0.15476 s) has samples 60, 70 and 90 (before the window,
@@ -386,6 +387,41 @@ def main():
                            capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair rings_fit or --quiet-jets" in p.stderr,
               f"--thin-rings without the fit: {p.stderr}")
+        # --relaxed-exit: the measured jets' plugs at the tube's relaxed state. The root meets
+        # x - (2/We_d) x^(-1/2) = 4/3 - 2/We_d, keeps the flux (U_f d_f^2 = U d0^2) and tends to
+        # the inviscid 4/3 as the surface tension's share vanishes; each mc run's plug, spacing and
+        # step follow it (d0/dx over the plug's diameter), the paper's jets keep theirs
+        for u in (0.3441, 0.5806, 1.5842):
+            x, uf, df = rjs.relaxed_exit(u, rjs.D0_MC)
+            we = rjs.groups(u, rjs.D0_MC)["We_d"]
+            check(1.0 < x < 4.0 / 3.0 and abs(x - 2.0 / (we * math.sqrt(x)) - (4.0 / 3.0 - 2.0 / we)) < 1e-12
+                  and abs(uf * df * df - u * rjs.D0_MC ** 2) < 1e-15 * u, f"relaxed_exit({u}): {x}, {uf}, {df}")
+        check(abs(rjs.relaxed_exit(1000.0, rjs.D0_MC)[0] - 4.0 / 3.0) < 1e-6, "relaxed_exit at We_d 1.6e7")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                            "--step-cap", "0.6", "--relaxed-exit"], capture_output=True, text=True)
+        steps = {ln.split("--out ")[1].split()[0].rsplit("/", 1)[1]: ln for ln in p.stdout.splitlines()
+                 if "sphjet run" in ln}
+        x, uf, df = rjs.relaxed_exit(0.5806, rjs.D0_MC)
+        ln = steps.get("mc_u0.5806", "")
+        check(f"--set nozzle.u0={uf:g} " in ln and f"--set nozzle.d0={df:g} " in ln
+              and f"--set resolution.dx={df / 10:.9g} " in ln
+              and f"--set time.dt_max={0.6 * 0.25 * rjs.CASE_H_OVER_DX * df / 10 / 12:.6g}" in ln
+              and "_cap0.6_rx " in p.stdout, f"--relaxed-exit mc_u0.5806: {ln}")
+        ln = steps.get("paper_u0.07", "")
+        check("--set nozzle.u0=0.07 " in ln and "--set nozzle.d0=0.01 " in ln, f"--relaxed-exit paper_u0.07: {ln}")
+        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--relaxed-exit"]))
+              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --relaxed-exit", "the report's run command with --relaxed-exit")
+        # as_tube: lengths over the plug's d0 become the tube's, the drops stay over the jet's own
+        info = next(i for _s, n, _sets, i in rjs.plan(rjs.parse(["report", "--relaxed-exit"])) if n == "mc_u0.5806")
+        shown, r = rjs.as_tube(info, {"L": 50.0, "L_std": 2.0, "L_first": 20.0, "L_halves": (49.0, 51.0),
+                                      "drops_median": 1.9})
+        k = df / rjs.D0_MC
+        check(shown["U"] == 0.5806 and shown["d0"] == rjs.D0_MC and shown["plug"] == (uf, df)
+              and r["L"] == 50.0 * k and r["L_std"] == 2.0 * k and r["L_first"] == 20.0 * k
+              and r["L_halves"] == (49.0 * k, 51.0 * k) and r["drops_median"] == 1.9,
+              f"as_tube: {shown}, {r}")
+        plain = next(i for _s, n, _sets, i in rjs.plan(rjs.parse(["report"])) if n == "mc_u0.5806")
+        check(rjs.as_tube(plain, {"L": 50.0}) == (plain, {"L": 50.0}), "as_tube without --relaxed-exit")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
