@@ -329,6 +329,16 @@ def as_tube(info, r):
     return dict(info, U=u, d0=d0, plug=(info["U"], info["d0"])), r
 
 
+def length_text(info, l_d0, std=None):
+    """'L/d0 = l_d0 (std std)' of a run (plan's info), a length over the run's own d0; with
+    --relaxed-exit the same over the tube's d0 beside it, as the report's table gives it."""
+    text = f"L/d0 = {l_d0:.1f}" + ("" if std is None else f" (std {std:.1f})")
+    if "tube" in info:
+        k = info["d0"] / info["tube"][1]
+        text += f", {k * l_d0:.1f}" + ("" if std is None else f" (std {k * std:.1f})") + " over the tube's d0"
+    return text
+
+
 def read_mc(path=MC_CSV):
     """-> list of (U, L/d0) of the measurements (comment lines start with #)."""
     try:
@@ -624,7 +634,7 @@ def no_longer(ow, verdict, info, window):
                 + ("" if ow.get("quiet") is not None else
                    f": the orifice not quiet ({OWN_QUIET_D0:g} d0 below it), no steady length"))
     return (f"its window not steady over {max(OWN_LONGEST, window):g} of its own L / U (from t = "
-            f"{ow['start']:.4g} s, L/d0 = {ow['L']:.1f})" + unsteady(ow) + ": the length wanders, made no longer")
+            f"{ow['start']:.4g} s, {length_text(info, ow['L'])})" + unsteady(ow) + ": the length wanders, made no longer")
 
 
 def own_verdict(rows, info, window, quiet=0.0):
@@ -818,7 +828,7 @@ def cmd_run(args):
             return None, no_longer(ow, verdict, info, args.window)
         why = ("no window yet" + (", the orifice not yet quiet" if ow["quiet"] is None else "")
                if ow["start"] is None else
-               f"its window from t = {ow['start']:.4g} s, L/d0 = {ow['L']:.1f} so far"
+               f"its window from t = {ow['start']:.4g} s, {length_text(info, ow['L'])} so far"
                + unsteady(ow))
         return end, why
 
@@ -888,7 +898,7 @@ def read_run(run_dir, info):
                     if late:
                         m, sd = statistics.fmean(late), statistics.pstdev(late)
                         r["notes"].append(f"over its last {OWN_MIN_D0:g} d0 / U ({t_end - span:.4g}-{t_end:.4g} s) "
-                                          f"the jet broke at L/d0 = {m:.1f} (std {sd:.1f}), not a steady length")
+                                          f"the jet broke at {length_text(info, m, sd)}, not a steady length")
                     return first_breakup(rows), []
             if ow["start"] is not None:
                 t0 = r["t0"] = ow["start"]
