@@ -312,6 +312,11 @@ def relaxed_exit(u, d0):
     return x, u * x, d0 / math.sqrt(x)
 
 
+def tube_scale(info):
+    """A run's own d0 over the tube's (--relaxed-exit's "tube" in plan's info); 1 without it."""
+    return info["d0"] / info["tube"][1] if "tube" in info else 1.0
+
+
 def as_tube(info, r):
     """--relaxed-exit: a run's plan info and read_run summary r as the report gives them: U, d0 and
     the lengths (L, its std and halves, the first breakup's) the tube's, the plug's speed and
@@ -319,7 +324,7 @@ def as_tube(info, r):
     Without a relaxed plug, (info, r) as they are."""
     if "tube" not in info:
         return info, r
-    (u, d0), scale = info["tube"], info["d0"] / info["tube"][1]
+    (u, d0), scale = info["tube"], tube_scale(info)
     r = dict(r)
     for k in ("L", "L_std", "L_first"):
         if r.get(k) is not None:
@@ -334,7 +339,7 @@ def length_text(info, l_d0, std=None):
     --relaxed-exit the same over the tube's d0 beside it, as the report's table gives it."""
     text = f"L/d0 = {l_d0:.1f}" + ("" if std is None else f" (std {std:.1f})")
     if "tube" in info:
-        k = info["d0"] / info["tube"][1]
+        k = tube_scale(info)
         text += f", {k * l_d0:.1f}" + ("" if std is None else f" (std {k * std:.1f})") + " over the tube's d0"
     return text
 
