@@ -313,7 +313,10 @@ def relaxed_exit(u, d0):
 
 
 def tube_scale(info):
-    """A run's own d0 over the tube's (--relaxed-exit's "tube" in plan's info); 1 without it."""
+    """A run's own d0 over the tube's (--relaxed-exit's "tube" in plan's info, or "plug" in the
+    info as_tube gives); 1 without it."""
+    if "plug" in info:
+        return info["plug"][1] / info["d0"]
     return info["d0"] / info["tube"][1] if "tube" in info else 1.0
 
 
@@ -1115,8 +1118,11 @@ def brief(sdir, args, name, info, r, c_all):
     Rayleigh's."""
     g = groups(info["U"], info["d0"])
     t0 = r.get("t0", window_start(info))
+    k = tube_scale(info)
+    plug = (f", the plug at the tube's relaxed state: {info['plug'][0]:.4g} m/s, diameter {k:.3f} d0; lengths "
+            f"over the tube's d0, drops over the jet's own diameter" if "plug" in info else "")
     lines = [f"{name}: U = {info['U']:g} m/s (We_d = {g['We_d']:.3g}, Oh_d = {g['Oh_d']:.2g}), "
-             f"d0/dx = {args.d0_over_dx:g}, {r['status']}"]
+             f"d0/dx = {args.d0_over_dx:g}{plug}, {r['status']}"]
     if r["L"] is None:
         return "\n".join(lines + [f"  no breakup length: {'; '.join(r['notes']) or 'no samples'}"])
     lines.append(f"  breakup length L/d0 = {r['L']:.1f} (std {r['L_std']:.1f}) over {r['n_window']} samples "
@@ -1130,10 +1136,10 @@ def brief(sdir, args, name, info, r, c_all):
     except jet_noise.NoiseError as e:
         noise = {"error": str(e)}
     if "L_weber_over_d0" in noise:
-        lines.append(f"  theory: Weber's L = u0 ln(a/delta0) / omega_max = {noise['L_weber_over_d0']:.1f}, with "
+        lines.append(f"  theory: Weber's L = u0 ln(a/delta0) / omega_max = {k * noise['L_weber_over_d0']:.1f}, with "
                      f"this run's disturbance at the orifice, delta0 = {noise['delta0_over_a']:.2g} a "
                      f"(tools/jet_noise.py; its growth is {noise['omega_over_weber']:.2f} of Weber's)")
-        lines.append(f"  with its own growth too: L = ln(a/delta0) / k_s = {noise['L_fit_over_d0']:.1f} (where the "
+        lines.append(f"  with its own growth too: L = ln(a/delta0) / k_s = {k * noise['L_fit_over_d0']:.1f} (where the "
                      f"fitted envelope reaches a)")
     else:
         lines.append(f"  theory: no fit of the disturbance's growth ({noise.get('error', 'no growing stretch')})")

@@ -420,11 +420,14 @@ def main():
               and r["L"] == 50.0 * k and r["L_std"] == 2.0 * k and r["L_first"] == 20.0 * k
               and r["L_halves"] == (49.0 * k, 51.0 * k) and r["drops_median"] == 1.9,
               f"as_tube: {shown}, {r}")
+        # the scale from the run's own d0 to the tube's, read alike from the plan's info and as_tube's
+        check(abs(rjs.tube_scale(info) - k) < 1e-15 and abs(rjs.tube_scale(shown) - k) < 1e-15,
+              f"tube_scale: {rjs.tube_scale(info)}, {rjs.tube_scale(shown)}, {k}")
         plain = next(i for _s, n, _sets, i in rjs.plan(rjs.parse(["report"])) if n == "mc_u0.5806")
         check(rjs.as_tube(plain, {"L": 50.0}) == (plain, {"L": 50.0}), "as_tube without --relaxed-exit")
         # the notes' lengths (over the run's own d0) give the tube's beside them
         check(rjs.length_text(info, 50.0, 2.0) == f"L/d0 = 50.0 (std 2.0), {50 * k:.1f} (std {2 * k:.1f}) over the tube's d0"
-              and rjs.length_text(plain, 50.0) == "L/d0 = 50.0", f"length_text: {rjs.length_text(info, 50.0, 2.0)}")
+              and rjs.length_text(plain, 50.0) == "L/d0 = 50.0" and rjs.tube_scale(plain) == 1.0, f"length_text: {rjs.length_text(info, 50.0, 2.0)}")
         # report --only --brief: the chosen run alone, in lines; the theory needs jet_noise's
         # inputs (the fake run has no case.toml: said so, not a crash)
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", out, "--no-figures", "--only",
