@@ -315,9 +315,10 @@ def relaxed_exit(u, d0):
 def tube_scale(info):
     """A run's own d0 over the tube's (--relaxed-exit's "tube" in plan's info, or "plug" in the
     info as_tube gives); 1 without it."""
-    if "plug" in info:
-        return info["plug"][1] / info["d0"]
-    return info["d0"] / info["tube"][1] if "tube" in info else 1.0
+    if "tube" not in info:
+        return 1.0
+    own = info["plug"][1] if "plug" in info else info["d0"]
+    return own / info["tube"][1]
 
 
 def as_tube(info, r):
