@@ -116,9 +116,8 @@ broken samples of that window (at least 10 d0), so that a window is decided by i
 and the report is the same however the runs were staged; t_q is when the start-up's disturbance
 left the orifice (quiet_since: the surface's wave amplitude 5 d0 below it has stopped falling, or
 the jet drips short of there), and
-a run that is not quiet by the
-time a jet as long as the box would have its window ends with no length ("start-up not
-cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
+a run whose orifice is not quiet by twice the time a jet as long as the box would have its
+window (its start-up still fading) ends with no length ("start-up not cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
 10% of its mean, and each third of it within 10% of its mean; one that is not is made longer
 from the same start by L / (4 U) at a time), or until a window that is not steady spans 2 L / U
@@ -219,7 +218,13 @@ OWN_LONGEST = 2.0
 # most of whose samples it is shorter than 5 d0; such a span ends a quiet run as well (a jet that
 # drips waits for nothing), so that its window is judged and found unsteady, as before. A run
 # that has not gone quiet by own_cap ends there with no length (status "start-up not cleared").
+# While the orifice is not quiet the cap is OWN_NOT_QUIET_CAPS times a quiet-from-t = 0 run's: the
+# slowest jets' start-up outlasts one box's window (0.36 m/s falling from the tube's relaxed state
+# went quiet at 0.411 s, its cap 0.393 s; 0.40 and 0.42 m/s falling with the plug at 0.446 and
+# 0.395 s, their caps about 0.45 s), and once quiet each needs its window of a jet shorter than
+# the box (0.36 m/s: whole at 0.600 s). Twice bounds their cost and leaves the quiet runs alone.
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
+OWN_NOT_QUIET_CAPS = 2.0
 BOX_L_FACTOR = 1.6
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
@@ -638,8 +643,9 @@ def no_longer(ow, verdict, info, window):
     `run` prints it beside "done" and `report` notes it."""
     if verdict == "capped":
         cap = own_cap(info, window, ow.get("quiet"))
-        return (f"made as long as --own-window goes (t = {cap:.4g} s, a jet as long "
-                f"as the box) without a whole window" + unsteady(ow)
+        whose = ("a jet as long as the box" if ow.get("quiet") is not None else
+                 f"{OWN_NOT_QUIET_CAPS:g} times a box-long jet's window from t = 0")
+        return (f"made as long as --own-window goes (t = {cap:.4g} s, {whose}) without a whole window" + unsteady(ow)
                 + ("" if ow.get("quiet") is not None else
                    f": the orifice not quiet ({OWN_QUIET_D0:g} d0 below it), no steady length"))
     return (f"its window not steady over {max(OWN_LONGEST, window):g} of its own L / U (from t = "
@@ -665,7 +671,10 @@ def own_verdict(rows, info, window, quiet=0.0):
 
 def own_cap(info, window, quiet=0.0):
     """--own-window: the latest end [s] a run is made longer to (a window of a jet as long as
-    the box, its clock from quiet as own_window's; from t = 0 while the orifice is not quiet)."""
+    the box, its clock from quiet as own_window's; while the orifice is not quiet (quiet None),
+    OWN_NOT_QUIET_CAPS times that window's end from t = 0)."""
+    if quiet is None:
+        return OWN_NOT_QUIET_CAPS * clock_end(info["box"], info["U"], window, 0.0)
     return clock_end(info["box"], info["U"], window, quiet)
 
 

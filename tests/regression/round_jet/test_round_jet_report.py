@@ -611,14 +611,20 @@ def main():
               "no amplitude where the jet is short of 5 d0")
         # own_window's clock from the quiet time: the grown jet quiet from 0.02 s has its window
         # from the first sample at t >= 0.02 + 1.75 tau = 0.16707 s, 0.168 s, to 0.211 s; not quiet,
-        # no window, and at the cap (the 150 d0 jet to 0.41 s) its run is made no longer
+        # no window; at the quiet run's cap (the 150 d0 jet to 0.41 s) it is made longer, to at most
+        # twice that cap, 0.81148 s, and there it is made no longer
         ow = rjs.own_window(grow, u, d0, 0.5, 0.02)
         check(ow["start"] == 0.168 and ow["end"] == 0.211, f"quiet from 0.02 s: {ow}")
         ow = rjs.own_window(grow, u, d0, 0.5, None)
         check(ow["start"] is None and ow["quiet"] is None, f"not quiet: {ow}")
-        ow, verdict, _end = rjs.own_verdict(long_jet, info, 0.5, None)
-        check(verdict == "capped" and "orifice not quiet" in rjs.no_longer(ow, verdict, info, 0.5),
-              f"not quiet at the cap: {verdict}")
+        ow, verdict, end = rjs.own_verdict(long_jet, info, 0.5, None)
+        check(verdict == "more" and 0.41 < end <= 2 * rjs.own_cap(info, 0.5) + 1e-12,
+              f"not quiet at the quiet run's cap: {verdict}, {end}")
+        longer_jet = [{"time": f"{k / 1000:.3f}", "broken": "1", "L_over_d0": "150"} for k in range(5, 814)]
+        ow, verdict, _end = rjs.own_verdict(longer_jet, info, 0.5, None)
+        check(abs(rjs.own_cap(info, 0.5, None) - 2 * 0.40574) < 2e-4 and verdict == "capped"
+              and "orifice not quiet" in rjs.no_longer(ow, verdict, info, 0.5),
+              f"not quiet at twice the cap ({rjs.own_cap(info, 0.5, None)}): {verdict}")
         check(abs(rjs.own_cap(info, 0.5, 0.02) - (0.02 + rjs.own_cap(info, 0.5))) < 1e-12,
               "the cap's clock from the quiet time")
         # the runs: sized for 10 d0 (2.25 x 10 d0 / U), checks every L_ref / (200 U), a
@@ -638,13 +644,13 @@ def main():
         for name, rows in (("mc_u0.7814", grow), ("mc_u1.0179", grow[:136]), ("mc_u0.3441", wander(0.131))):
             fake_run(os.path.join(osdir, name), [(float(x["time"]), k, 1, float(x["L_over_d0"]))
                                                  for k, x in enumerate(rows)])
-        # a jet at 0.4014 m/s of 24 d0 to its cap (0.4521 s, a 67.55 d0 box) whose start-up is
-        # still fading 5 d0 below the orifice: no window, no length
-        fake_run(os.path.join(osdir, "mc_u0.4014"), [(k / 1000, k, 1, 24.0) for k in range(5, 453)])
+        # a jet at 0.4014 m/s of 24 d0 to its cap while not quiet (0.9042 s, twice a 67.55 d0 box's
+        # window) whose start-up is still fading 5 d0 below the orifice: no window, no length
+        fake_run(os.path.join(osdir, "mc_u0.4014"), [(k / 1000, k, 1, 24.0) for k in range(5, 905)])
         with open(os.path.join(osdir, "mc_u0.4014", "jet_surface.csv"), "w", newline="") as f:
             w = csv.DictWriter(f, ["time", "step", "s_over_d0", "r_over_d0"])
             w.writeheader()
-            w.writerows({"step": 0, **x} for x in surface(lambda t: 1e-3 * 2 ** (-t / 0.03), 0.452))
+            w.writerows({"step": 0, **x} for x in surface(lambda t: 1e-3 * 2 ** (-t / 0.03), 0.904))
         p = subprocess.run([PY, TOOL, "report", "--root", root, "--out", os.path.join(tmp, "own"), "--no-figures",
                             "--axis-pair", "rings_fit", "--quiet-exit", "--window", "0.5", "--own-window"],
                            capture_output=True, text=True)
