@@ -935,6 +935,8 @@ def read_run(run_dir, info):
         r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
     r["n_window"] = len(window)
     r["t1"] = float(window[-1]["time"]) if window else None
+    r["left_window"] = (None if not window or r.get("left") is None else
+                        sum(1 for t in r["left_at"].values() if r["t0"] <= t <= r["t1"]))
     broken, intact, at_end = split_window(window, info["box"] / info["d0"])
     r["n_intact"] = len(intact)
     if window and not at_end and len(intact) <= INTACT_SKIP_MAX * len(window):
@@ -1002,7 +1004,7 @@ def report(args):
               "first breakup t [s], L/d0", "main drop d/d0",
               "main drops d/d0 window median (drop-samples)", "main drops d/d0 window mode",
               "drops (satellites)", "status",
-              "particles", "wall [s]"]
+              "particles", "particles left the box (in the window)", "wall [s]"]
     if args.own_window:
         at = header.index("window from t [s] (its own L/U)") + 1
         header[at:at] = ["window to t [s]", "orifice quiet from t [s]"]
@@ -1039,7 +1041,9 @@ def report(args):
                      f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
-                     fmt(r["particles"], "d"), fmt(r["wall_s"], ".0f")])
+                     fmt(r["particles"], "d"),
+                     f"{fmt(r.get('left'), 'd')} ({fmt(r.get('left_window') if r['L'] is not None else None, 'd')})",
+                     fmt(r["wall_s"], ".0f")])
         if args.own_window:
             rows[-1][header.index("window to t [s]"):header.index("window to t [s]")] = [
                 "-" if r["L"] is None else f"{r['t1']:.4g}",
@@ -1096,6 +1100,7 @@ def report(args):
                ", where this model (no gravity) cannot form the measured jet.\n\n")
             + f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
             f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
+            + left_text([r for _s, _n, _i, r in runs])
             + cost_text([r for _s, _n, _i, r in runs])
             + ("\nNotes:\n" + "".join(f"- {n}\n" for n in notes) if notes else ""))
     with open(os.path.join(args.out, "round_jets.md"), "w") as f:
@@ -1107,6 +1112,18 @@ def report(args):
         text = "\n\n".join(brief(sdir, args, name, info, r, c_all) for _s, name, info, r in runs)
     print(text)
     return 0
+
+
+def left_text(summaries):
+    """The report's line on the particles that left the box (its radial edge or its end; the
+    sink's drops are not among them), from the read_run summaries: '' when none did."""
+    left = [r.get("left") or 0 for r in summaries]
+    if not any(left):
+        return ""
+    inside = [r["left_window"] for r in summaries if r["L"] is not None and r.get("left_window")]
+    return (f"Particles that left the box (through its side or its end; the drops the sink removed are "
+            f"not counted): {sum(left)} in {sum(1 for n in left if n)} of {len(left)} runs, "
+            f"{sum(inside)} of them within the windows of {len(inside)} runs with a length.\n")
 
 
 def cost_text(summaries):
@@ -1161,6 +1178,8 @@ def brief(sdir, args, name, info, r, c_all):
                      f"measured one (tools/jet_gravity_theory.py)")
     lines.append(f"  main drops: {fmt(r['drops_median'])} d0 (median over the window, {r['n_main_window']} "
                  f"drop-samples), most frequent {fmt(r.get('drops_mode'), '.1f')} d0; Rayleigh's: {RAYLEIGH_DROP} d0")
+    if r.get("left"):
+        lines.append(f"  particles that left the box: {r['left']}, {fmt(r.get('left_window'), 'd')} of them in the window")
     return "\n".join(lines)
 
 

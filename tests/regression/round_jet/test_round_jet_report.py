@@ -81,6 +81,16 @@ def main():
               "0.25,60,0,50,1e-9,1.8,0,0.01,80,0\n0.25,60,1,60,1e-9,2.0,0,0.01,75,0\n"
               "0.25,60,2,3,1e-11,0.4,0,0.01,72,1\n0.2,50,0,3,1e-11,5.0,0,0.01,72,0\n"
               "0.1,20,0,90,1e-9,9.0,0,0.01,70,0\n")   # before the window: not in the median
+        # three particles leave the box, two before the window (from 0.1548 s) and one in it; a
+        # part made again from an earlier checkpoint logs that one again
+        left = ("step 9 t = 0.1 s: 2 particle(s) left the domain and were removed (2 in all); ids 5 6\n"
+                "step 30 t = 0.17 s: 1 particle(s) left the domain and were removed (3 in all); ids 7\n")
+        write(os.path.join(d, "run.log"),
+              "sphjet 0.1.0 (abc) starting\n"
+              "case: x | particles 9000 (boundary 0, fluid 9000) | h | kernel wendland | threads 2\n" + left
+              + "sphjet 0.1.0 (abc) resuming\n" + left.split("\n")[1] + "\n"
+              "done: 1000 steps (1000 in all) to t = 0.25 s (SPHysics clock 0.25 s) in 100.00 s wall; "
+              "9e+04 particle-steps/s; 8 outputs; 3 particles left the domain; 0 drop(s) (0 particles) removed\n")
         fake_run(os.path.join(sdir, "mc_u1.0179"),
                  [(0.05, 10, 1, 80.0), (0.2, 20, 1, 90.0), (0.25, 30, 0, 0.0)])
         # mc_u1.5699 (L_ref 94.96 d0, box 1.6 L_ref + 10 d0 = 161.9 d0, window from 0.10834 s): one
@@ -116,6 +126,8 @@ def main():
         check(rjs.drop_mode([1.88, 1.91, 2.38, 2.41, 2.39, 1.02]) == 2.4 and rjs.drop_mode([]) is None,
               "mode: the 2.4 bin holds three")
         check(r.get("first breakup t [s], L/d0") == "0.0500, 60.00", r.get("first breakup t [s], L/d0"))
+        check(r.get("particles left the box (in the window)") == "3 (1)",
+              f"left the box: {r.get('particles left the box (in the window)')}")
         we_d = 1000 * 0.7814 ** 2 * 0.001194 / 0.072
         check(r.get("We_d") == f"{we_d:.3g}", f"We_d {r.get('We_d')} vs {we_d:.3g}")
         r2 = rows.get("mc_u1.0179", {})
@@ -139,6 +151,8 @@ def main():
         x3 = rjs.groups(1.5699, 0.001194)["x"]
         c_two = (x1 * 67.0 + x3 * 100.5) / (x1 * x1 + x3 * x3)
         check(f"| SPH (2 runs) | {c_two:.2f} |" in md, f"C through the origin of two SPH points: {md[-600:]}")
+        check("left the box (through its side or its end; the drops the sink removed are not counted): 3 in 1 of "
+              in md and "1 of them within the windows of 1 runs with a length" in md, f"the box's losses: {md[-900:]}")
         check("mc_u1.5699: 1 of 21 window samples intact short of the box's end (t = 0.2 s): skipped" in md,
               f"the skipped sample's note: {md[-900:]}")
         check("mc_u1.2545: 1 of 21 samples after t = 0.1378 s intact to the box's end" in md,

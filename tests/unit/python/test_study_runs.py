@@ -85,6 +85,18 @@ class RunLogTests(unittest.TestCase):
         self.assertEqual(got["particle_steps_per_s"], 48.0)
         self.assertTrue(got["finished"])
 
+    def test_parse_log_counts_the_particles_that_left(self):
+        # the last part's count is the run's; ids logged twice (a part made again) count once
+        gone = "step 3 t = 0.004 s: 2 particle(s) left the domain and were removed (2 in all); ids 11 12"
+        self.log("sphjet 1 starting", CASE_LINE, gone, "sphjet 1 resuming", CASE_LINE, gone,
+                 "step 9 t = 0.015 s: 1 particle(s) left the domain and were removed (3 in all); ids 4")
+        got = sr.parse_log(self.dir)
+        self.assertEqual(got["left"], 3)
+        self.assertEqual(got["left_at"], {11: 0.004, 12: 0.004, 4: 0.015})
+        self.log("sphjet 1 starting", CASE_LINE, gone,
+                 done_line(5, 5, 0.01, 10, 60.0).replace("0 particles left", "2 particles left"))
+        self.assertEqual(sr.parse_log(self.dir)["left"], 2)
+
     def test_parse_log_without_a_log(self):
         got = sr.parse_log(self.dir)
         self.assertIsNone(got["wall_s"])
