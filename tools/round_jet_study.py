@@ -1123,7 +1123,8 @@ def left_text(summaries):
     inside = [r["left_window"] for r in summaries if r["L"] is not None and r.get("left_window")]
     return (f"Particles that left the box (through its side or its end; the drops the sink removed are "
             f"not counted): {sum(left)} in {sum(1 for n in left if n)} of {len(left)} runs, "
-            f"{sum(inside)} of them within the windows of {len(inside)} runs with a length.\n")
+            + (f"{sum(inside)} of them within the windows of {len(inside)} runs with a length.\n" if inside else
+               "none within a run's window.\n"))
 
 
 def cost_text(summaries):
