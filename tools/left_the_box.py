@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Where a jet run's particles left the box, from its run.log, case.toml, jet.csv and snapshots.
+
+    /usr/bin/python3 tools/left_the_box.py RUN [--from T] [--to T1]
+
+sphjet removes a particle that leaves the domain and logs its time and id in run.log (a part
+made again from an earlier checkpoint logs an id again; its last time is kept). For each one
+that left from T to T1 (default: the whole run), found in the last snapshot before it left:
+- its place when it left, estimated from that snapshot's position moved on at its velocity over
+  the time between (a snapshot every few ms: within about a d0 at the round jets' speeds);
+- below_end: its distance below the orifice less the jet's length (jet.csv's last sample at or
+  before the time it left), in d0: negative beside the intact jet, positive among its drops;
+- radius: its distance from the axis (x), in d0;
+- mass: the found particles' mass over what the orifice issued by the last of them, rho pi
+  (d0/2)^2 u0 t for a round jet (domain.geometry = "axisymmetric": a particle's mass is its
+  ring's).
+Prints `key = value` lines and, last, `SUMMARY key=value ...`. Needs h5py (snap_*.h5).
+"""
+import argparse
+import bisect
+import csv
+import math
+import os
+import statistics
+import sys
+import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study_runs import parse_log  # noqa: E402  (tools/, beside this script)
+
+
+class LeftError(Exception):
+    """A run that cannot be read (the message names the file)."""
+
+
+def read_run(run):
+    """-> (case dict d0, u0, z0, rho, round; jet.csv (times, lengths in d0); left_at {id: t})."""
+    path = os.path.join(run, "case.toml")
+    try:
+        with open(path, "rb") as f:
+            case = tomllib.load(f)
+        nz = case["nozzle"]
+        info = {"d0": float(nz["d0"]), "u0": float(nz["u0"]), "z0": float(nz.get("z0", 0.0)),
+                "rho": float(case.get("fluid", {}).get("rho0", 1000.0)),
+                "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric"}
+    except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError, ValueError) as e:
+        raise LeftError(f"{path}: expected a sphjet case with a [nozzle] (d0, u0), found {e!r}")
+    path = os.path.join(run, "jet.csv")
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        times = [float(r["time"]) for r in rows]
+        lengths = [float(r["L_over_d0"]) for r in rows]
+    except (OSError, KeyError, ValueError) as e:
+        raise LeftError(f"{path}: expected the breakup record with time and L_over_d0, found {e!r}")
+    return info, (times, lengths), parse_log(run)["left_at"]
+
+
+def where_they_left(run, t0=0.0, t1=math.inf):
+    """-> dict logged (ids that left from t0 to t1), found, below_end and radius (lists, d0),
+    mass_fraction (None for a planar jet or none found), t_first, t_last."""
+    import h5py
+    info, (times, lengths), left_at = read_run(run)
+    gone = {i: t for i, t in left_at.items() if t0 <= t <= t1}
+    snaps = []
+    for name in sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5")):
+        with h5py.File(os.path.join(run, name), "r") as f:
+            snaps.append((float(f.attrs["time"]), name))
+    snaps.sort()
+    wanted = {}   # snapshot name -> {id: time it left}
+    for i, t in gone.items():
+        k = bisect.bisect_left([s[0] for s in snaps], t) - 1
+        if k >= 0:
+            wanted.setdefault(snaps[k][1], {})[i] = t
+    d0 = info["d0"]
+    below, radius, mass = [], [], 0.0
+    for name, ids in wanted.items():
+        with h5py.File(os.path.join(run, name), "r") as f:
+            t_snap = float(f.attrs["time"])
+            g = f["particles"]
+            pid = list(g["id"][:])
+            at = {p: k for k, p in enumerate(pid) if p in ids}
+            x, z, u, w, m = (g[c][:] for c in ("x", "z", "u", "w", "m"))
+        for i, k in at.items():
+            t = ids[i]
+            j = bisect.bisect_right(times, t) - 1
+            if j < 0:
+                continue
+            zl, xl = z[k] + w[k] * (t - t_snap), x[k] + u[k] * (t - t_snap)
+            below.append((info["z0"] - zl) / d0 - lengths[j])
+            radius.append(abs(xl) / d0)
+            mass += float(m[k])
+    t_last = max(gone.values()) if gone else None
+    issued = info["rho"] * math.pi * (d0 / 2) ** 2 * info["u0"] * t_last if gone else 0.0
+    return {"logged": len(gone), "found": len(below), "below_end": below, "radius": radius,
+            "mass_fraction": mass / issued if info["round"] and below and issued > 0 else None,
+            "t_first": min(gone.values()) if gone else None, "t_last": t_last}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap.add_argument("run", help="run directory (run.log, case.toml, jet.csv, snap_*.h5)")
+    ap.add_argument("--from", dest="t0", type=float, default=0.0, metavar="T", help="from t = T [s]")
+    ap.add_argument("--to", dest="t1", type=float, default=math.inf, metavar="T1", help="to t = T1 [s]")
+    args = ap.parse_args(argv)
+    try:
+        got = where_they_left(args.run, args.t0, args.t1)
+    except LeftError as e:
+        print(f"left_the_box: {e}", file=sys.stderr)
+        return 1
+    print(f"logged = {got['logged']} particle(s) left the box from t = {args.t0:g} s"
+          + ("" if math.isinf(args.t1) else f" to {args.t1:g} s"))
+    if got["logged"]:
+        print(f"times = {got['t_first']:.6g} to {got['t_last']:.6g} s")
+    print(f"found = {got['found']} in a snapshot before they left")
+    summary = {"logged": got["logged"], "found": got["found"]}
+    if got["found"]:
+        b, r = got["below_end"], got["radius"]
+        print(f"below_end = {min(b):.1f} to {max(b):.1f} d0, median {statistics.median(b):.1f} "
+              f"(distance below the orifice less the jet's length)")
+        print(f"radius = {statistics.median(r):.2f} d0 (median)")
+        summary.update(below_end_min=f"{min(b):.3g}", below_end_median=f"{statistics.median(b):.3g}",
+                       below_end_max=f"{max(b):.3g}", radius_median=f"{statistics.median(r):.3g}")
+    if got["mass_fraction"] is not None:
+        print(f"mass = {got['mass_fraction']:.3g} of what the orifice issued by t = {got['t_last']:.6g} s")
+        summary["mass_fraction"] = f"{got['mass_fraction']:.3g}"
+    print("SUMMARY " + " ".join(f"{k}={v}" for k, v in summary.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
