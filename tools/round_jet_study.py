@@ -127,7 +127,8 @@ past their own start-up. Drops
 (equivalent sphere diameters, satellites are drops smaller than d0): the mean of the main drops
 of the last sample of the window, and the median and the most frequent size (0.1 d0 bins) of the
 main drops of every sample of the window, with the number of drop-samples it is taken over (a
-drop counts once for each sample it is seen in).
+drop counts once for each sample it is seen in). The particles that left the box (run.log; not
+the sink's drops), in all and within the window (tools/left_the_box.py says where).
 
 Groups, with the diameter: We_d = rho U^2 d0 / sigma, Oh_d = mu / sqrt(rho sigma d0),
 x = sqrt(We_d) (1 + 3 Oh_d); theory L / d0 = ln(a / delta0) x (Weber 1931). The report fits
@@ -142,7 +143,7 @@ that runs made side by side (--parallel) end together. `report` reads what exist
 measured one, eq 37 and Weber's law with the measurements' C, beside Weber's length with the
 run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_noise.py over
 the window), and beside where that fitted envelope reaches a (its own delta0 and growth); its
-main drops beside Rayleigh's.
+main drops beside Rayleigh's, and the particles that left the box, if any.
 """
 import contextlib
 import csv
