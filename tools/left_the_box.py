@@ -8,12 +8,13 @@ made again from an earlier checkpoint logs an id again; its last time is kept). 
 that left from T to T1 (default: the whole run), found in the last snapshot before it left:
 - its place when it left, estimated from that snapshot's position moved on at its velocity over
   the time between (a snapshot every few ms: within about a d0 at the round jets' speeds);
-- below_end: its distance below the orifice less the jet's length (jet.csv's last sample at or
-  before the time it left), in d0: negative beside the intact jet, positive among its drops;
-- radius: its distance from the axis (x), in d0;
-- mass: the found particles' mass over what the orifice issued by the last of them, rho pi
-  (d0/2)^2 u0 t for a round jet (domain.geometry = "axisymmetric": a particle's mass is its
-  ring's).
+- below_end: its distance from the orifice along the jet (nozzle.axis "down" or "up") less the
+  jet's length (jet.csv's last sample at or before the time it left: the breakup length, or the
+  intact jet's tip), in d0: negative beside the intact jet, positive among its drops;
+- radius: its distance from the jet's axis (x - nozzle.x0), in d0;
+- mass: the found particles' mass over the fluid issued by the last of them, rho pi (d0/2)^2
+  (u0 t + nozzle.column_over_d0 d0) for a round jet (domain.geometry = "axisymmetric": a
+  particle's mass is its ring's).
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Needs h5py (snap_*.h5).
 """
 import argparse
@@ -41,57 +42,72 @@ def read_run(run):
             case = tomllib.load(f)
         nz = case["nozzle"]
         info = {"d0": float(nz["d0"]), "u0": float(nz["u0"]), "z0": float(nz.get("z0", 0.0)),
+                "x0": float(nz.get("x0", 0.0)), "axis": nz.get("axis", "down"),
+                "column": float(nz.get("column_over_d0", 0.0)),
                 "rho": float(case.get("fluid", {}).get("rho0", 1000.0)),
                 "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric"}
     except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError, ValueError) as e:
         raise LeftError(f"{path}: expected a sphjet case with a [nozzle] (d0, u0), found {e!r}")
+    if info["axis"] not in ("down", "up"):
+        raise LeftError(f"{path}: nozzle.axis: expected \"down\" or \"up\", found {info['axis']!r}")
     path = os.path.join(run, "jet.csv")
     try:
         with open(path, newline="") as f:
             rows = list(csv.DictReader(f))
         times = [float(r["time"]) for r in rows]
-        lengths = [float(r["L_over_d0"]) for r in rows]
+        lengths = [float(r["L_over_d0"] if int(float(r["broken"])) == 1 else r["jet_tip_over_d0"]) for r in rows]
     except (OSError, KeyError, ValueError) as e:
-        raise LeftError(f"{path}: expected the breakup record with time and L_over_d0, found {e!r}")
+        raise LeftError(f"{path}: expected the breakup record with time, broken, L_over_d0 and "
+                        f"jet_tip_over_d0, found {e!r}")
     return info, (times, lengths), parse_log(run)["left_at"]
 
 
 def where_they_left(run, t0=0.0, t1=math.inf):
     """-> dict logged (ids that left from t0 to t1), found, below_end and radius (lists, d0),
     mass_fraction (None for a planar jet or none found), t_first, t_last."""
-    import h5py
+    try:
+        import h5py
+    except ImportError:
+        raise LeftError("reading snap_*.h5 needs h5py (apt-get install -y python3-h5py)")
     info, (times, lengths), left_at = read_run(run)
     gone = {i: t for i, t in left_at.items() if t0 <= t <= t1}
-    snaps = []
-    for name in sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5")):
-        with h5py.File(os.path.join(run, name), "r") as f:
-            snaps.append((float(f.attrs["time"]), name))
-    snaps.sort()
+
+    def particles(name, fields=("id", "active", "x", "z", "u", "w", "m")):
+        path = os.path.join(run, name)
+        try:
+            with h5py.File(path, "r") as f:
+                g = f["particles"]
+                return float(f.attrs["time"]), {c: g[c][:] for c in fields}
+        except (OSError, KeyError, ValueError) as e:
+            raise LeftError(f"{path}: expected a sphjet snapshot (time; particles id, active, x, z, u, w, "
+                            f"m), found {e!r}")
+
+    snaps = sorted((particles(n, ())[0], n) for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
+    snap_times = [s[0] for s in snaps]
+    # the last snapshot before it left: run.log's times have 6 digits, so one written at the step
+    # it left (where it is already inactive) may read as a little earlier
     wanted = {}   # snapshot name -> {id: time it left}
     for i, t in gone.items():
-        k = bisect.bisect_left([s[0] for s in snaps], t) - 1
+        k = bisect.bisect_left(snap_times, t * (1.0 - 1e-5)) - 1
         if k >= 0:
             wanted.setdefault(snaps[k][1], {})[i] = t
-    d0 = info["d0"]
+    d0, sign = info["d0"], (1.0 if info["axis"] == "down" else -1.0)
     below, radius, mass = [], [], 0.0
     for name, ids in wanted.items():
-        with h5py.File(os.path.join(run, name), "r") as f:
-            t_snap = float(f.attrs["time"])
-            g = f["particles"]
-            pid = list(g["id"][:])
-            at = {p: k for k, p in enumerate(pid) if p in ids}
-            x, z, u, w, m = (g[c][:] for c in ("x", "z", "u", "w", "m"))
-        for i, k in at.items():
-            t = ids[i]
-            j = bisect.bisect_right(times, t) - 1
-            if j < 0:
+        t_snap, g = particles(name)
+        for k, p in enumerate(g["id"]):
+            t = ids.get(int(p))
+            j = bisect.bisect_right(times, t) - 1 if t is not None else -1
+            if j < 0 or g["active"][k] != 1:
                 continue
-            zl, xl = z[k] + w[k] * (t - t_snap), x[k] + u[k] * (t - t_snap)
-            below.append((info["z0"] - zl) / d0 - lengths[j])
-            radius.append(abs(xl) / d0)
-            mass += float(m[k])
+            zl = g["z"][k] + g["w"][k] * (t - t_snap)
+            xl = g["x"][k] + g["u"][k] * (t - t_snap)
+            below.append(sign * (info["z0"] - zl) / d0 - lengths[j])
+            radius.append(abs(xl - info["x0"]) / d0)
+            mass += float(g["m"][k])
     t_last = max(gone.values()) if gone else None
-    issued = info["rho"] * math.pi * (d0 / 2) ** 2 * info["u0"] * t_last if gone else 0.0
+    issued = (info["rho"] * math.pi * (d0 / 2) ** 2 * (info["u0"] * t_last + info["column"] * d0)
+              if gone else 0.0)
     return {"logged": len(gone), "found": len(below), "below_end": below, "radius": radius,
             "mass_fraction": mass / issued if info["round"] and below and issued > 0 else None,
             "t_first": min(gone.values()) if gone else None, "t_last": t_last}

@@ -223,7 +223,8 @@ OWN_LONGEST = 2.0
 # slowest jets' start-up outlasts one box's window (0.36 m/s falling from the tube's relaxed state
 # went quiet at 0.411 s, its cap 0.393 s; 0.40 and 0.42 m/s falling with the plug at 0.446 and
 # 0.395 s, their caps about 0.45 s), and once quiet each needs its window of a jet shorter than
-# the box (0.36 m/s: whole at 0.600 s). Twice bounds their cost and leaves the quiet runs alone.
+# the box (0.36 m/s: whole at 0.600 s). A run quiet from t_q has the cap t_q plus one cap, so one
+# that goes quiet just before twice the cap may run to about three; the quiet runs are not moved.
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
 OWN_NOT_QUIET_CAPS = 2.0
 BOX_L_FACTOR = 1.6
@@ -1118,14 +1119,16 @@ def report(args):
 def left_text(summaries):
     """The report's line on the particles that left the box (its radial edge or its end; the
     sink's drops are not among them), from the read_run summaries: '' when none did."""
-    left = [r.get("left") or 0 for r in summaries]
+    made = [r for r in summaries if r["status"] != "missing"]
+    left = [r.get("left") or 0 for r in made]
     if not any(left):
         return ""
-    inside = [r["left_window"] for r in summaries if r["L"] is not None and r.get("left_window")]
+    inside = [r["left_window"] for r in made if r["L"] is not None and r.get("left_window")]
+    n_left = sum(1 for n in left if n)
     return (f"Particles that left the box (through its side or its end; the drops the sink removed are "
-            f"not counted): {sum(left)} in {sum(1 for n in left if n)} of {len(left)} runs, "
-            + (f"{sum(inside)} of them within the windows of {len(inside)} runs with a length.\n" if inside else
-               "none within a run's window.\n"))
+            f"not counted): {sum(left)} in {n_left} of the {len(made)} runs made, "
+            + (f"{sum(inside)} of them within the windows of {len(inside)} of the runs with a length.\n"
+               if inside else "none within the window of a run with a length.\n"))
 
 
 def cost_text(summaries):

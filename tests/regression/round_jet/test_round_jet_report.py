@@ -152,7 +152,8 @@ def main():
         c_two = (x1 * 67.0 + x3 * 100.5) / (x1 * x1 + x3 * x3)
         check(f"| SPH (2 runs) | {c_two:.2f} |" in md, f"C through the origin of two SPH points: {md[-600:]}")
         check("left the box (through its side or its end; the drops the sink removed are not counted): 3 in 1 of "
-              in md and "1 of them within the windows of 1 runs with a length" in md, f"the box's losses: {md[-900:]}")
+              "the 4 runs made" in md and "1 of them within the windows of 1 of the runs with a length" in md,
+              f"the box's losses: {md[-900:]}")
         check("mc_u1.5699: 1 of 21 window samples intact short of the box's end (t = 0.2 s): skipped" in md,
               f"the skipped sample's note: {md[-900:]}")
         check("mc_u1.2545: 1 of 21 samples after t = 0.1378 s intact to the box's end" in md,

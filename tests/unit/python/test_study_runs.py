@@ -96,6 +96,18 @@ class RunLogTests(unittest.TestCase):
         self.log("sphjet 1 starting", CASE_LINE, gone,
                  done_line(5, 5, 0.01, 10, 60.0).replace("0 particles left", "2 particles left"))
         self.assertEqual(sr.parse_log(self.dir)["left"], 2)
+        # a part killed after id 13 left, resumed from a checkpoint before it: 13 is not kept,
+        # and the last count is the resumed part's, which ends without a `done:` (it blew up)
+        self.log("sphjet 1 starting", CASE_LINE, gone,
+                 done_line(5, 5, 0.01, 10, 60.0).replace("0 particles left", "2 particles left"),
+                 "sphjet 1 resuming", "resuming at step 5 t = 0.01 s from checkpoint.h5",
+                 "step 7 t = 0.012 s: 1 particle(s) left the domain and were removed (3 in all); ids 13",
+                 "sphjet 1 resuming", "resuming at step 5 t = 0.01 s from checkpoint.h5",
+                 "step 8 t = 0.013 s: 2 particle(s) left the domain and were removed (4 in all); ids 14 15",
+                 "FAILED: state check at step 9 (t = 0.014 s): density out of band")
+        got = sr.parse_log(self.dir)
+        self.assertEqual(got["left"], 4)
+        self.assertEqual(got["left_at"], {11: 0.004, 12: 0.004, 14: 0.013, 15: 0.013})
 
     def test_parse_log_without_a_log(self):
         got = sr.parse_log(self.dir)
