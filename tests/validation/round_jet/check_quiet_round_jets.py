@@ -30,9 +30,10 @@ runs made by another build are made again. Each run is read over its own window 
   report's interval). This test fails until the model changes; it is not widened.
 --relaxed-exit (after the mode): the same jets leaving as the plug to which the tube's parabolic
   profile relaxes (round_jet_study.py --relaxed-exit; cases/round_jet/README.md, "A plug at the
-  tube's relaxed state"), lengths over the tube's d0, a the plug's radius. On the study's runs
-  (45c1071's binary): C = 15.9, 15.8, 15.7, 15.6, exit pressure 0.968-0.971 sigma/a, std
-  0.091-0.109; lengths -3%, -8%, +2%, +31% (NOT MET at 1.57 m/s, as above).
+  tube's relaxed state"), lengths over the tube's d0, a the plug's radius. Measured with
+  cfa665b's build (2720 s on two cores, shared for part of it): C = 15.9, 15.8, 15.7, 15.6,
+  exit pressure 0.968-0.971 sigma/a, std 0.091-0.109; lengths -3%, -8%, +2%, +31% (NOT MET at
+  1.57 m/s, as above).
 Usage: check_quiet_round_jets.py SPHJET SOURCE_DIR WORK_DIR --noise-floor|--mansour-chigier [--relaxed-exit]
 """
 import importlib.util
