@@ -79,7 +79,8 @@ def read_case(run):
     rho = fl.get("rho0", 1000.0)
     nu = fl["mu"] / rho if "mu" in fl else fl.get("nu", 0.0)
     return {
-        "d0": nz["d0"], "u0": nz["u0"], "z0": nz.get("z0", 0.0), "rho": rho, "nu": nu,
+        "d0": nz["d0"], "u0": nz["u0"], "z0": nz.get("z0", 0.0), "x0": nz.get("x0", 0.0),
+        "axis": nz.get("axis", "down"), "column": nz.get("column_over_d0", 0.0), "rho": rho, "nu": nu,
         "sigma": case.get("surface_tension", {}).get("sigma", 0.0),
         "ka": nz.get("disturbance_ka", 0.697), "eps": nz.get("disturbance", 0.0),
         "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric",

@@ -19,7 +19,6 @@ Prints `key = value` lines and, last, `SUMMARY key=value ...`. Needs h5py (snap_
 """
 import argparse
 import bisect
-import csv
 import math
 import os
 import statistics
@@ -27,7 +26,8 @@ import sys
 import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from study_runs import parse_log  # noqa: E402  (tools/, beside this script)
+from jet_noise import read_case  # noqa: E402  (tools/, beside this script)
+from study_runs import is_broken, parse_log, read_csv  # noqa: E402
 
 
 class LeftError(Exception):
@@ -35,27 +35,19 @@ class LeftError(Exception):
 
 
 def read_run(run):
-    """-> (case dict d0, u0, z0, rho, round; jet.csv (times, lengths in d0); left_at {id: t})."""
+    """-> (jet_noise.read_case's dict; jet.csv (times, lengths in d0); left_at {id: t})."""
     path = os.path.join(run, "case.toml")
     try:
-        with open(path, "rb") as f:
-            case = tomllib.load(f)
-        nz = case["nozzle"]
-        info = {"d0": float(nz["d0"]), "u0": float(nz["u0"]), "z0": float(nz.get("z0", 0.0)),
-                "x0": float(nz.get("x0", 0.0)), "axis": nz.get("axis", "down"),
-                "column": float(nz.get("column_over_d0", 0.0)),
-                "rho": float(case.get("fluid", {}).get("rho0", 1000.0)),
-                "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric"}
+        info = read_case(run)
     except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError, ValueError) as e:
-        raise LeftError(f"{path}: expected a sphjet case with a [nozzle] (d0, u0), found {e!r}")
+        raise LeftError(f"{path}: expected a sphjet case with a [nozzle] (d0, u0) and [fluid], found {e!r}")
     if info["axis"] not in ("down", "up"):
         raise LeftError(f"{path}: nozzle.axis: expected \"down\" or \"up\", found {info['axis']!r}")
     path = os.path.join(run, "jet.csv")
     try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
+        rows = read_csv(path)
         times = [float(r["time"]) for r in rows]
-        lengths = [float(r["L_over_d0"] if int(float(r["broken"])) == 1 else r["jet_tip_over_d0"]) for r in rows]
+        lengths = [float(r["L_over_d0"] if is_broken(r) else r["jet_tip_over_d0"]) for r in rows]
     except (OSError, KeyError, ValueError) as e:
         raise LeftError(f"{path}: expected the breakup record with time, broken, L_over_d0 and "
                         f"jet_tip_over_d0, found {e!r}")

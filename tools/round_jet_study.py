@@ -117,7 +117,8 @@ and the report is the same however the runs were staged; t_q is when the start-u
 left the orifice (quiet_since: the surface's wave amplitude 5 d0 below it has stopped falling, or
 the jet drips short of there), and
 a run whose orifice is not quiet by twice the time a jet as long as the box would have its
-window (its start-up still fading) ends with no length ("start-up not cleared"); a run is started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
+window (its start-up still fading) ends with no length ("start-up not cleared"); a run is
+started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
 end (`sphjet run --resume RUN --tmax T`) until its window is whole and flat (its trend within
 10% of its mean, and each third of it within 10% of its mean; one that is not is made longer
 from the same start by L / (4 U) at a time), or until a window that is not steady spans 2 L / U
@@ -937,8 +938,6 @@ def read_run(run_dir, info):
         r["t_first"], r["L_first"] = float(first["time"]), float(first["L_over_d0"])
     r["n_window"] = len(window)
     r["t1"] = float(window[-1]["time"]) if window else None
-    r["left_window"] = (None if not window or r.get("left") is None else
-                        sum(1 for t in r["left_at"].values() if r["t0"] <= t <= r["t1"]))
     broken, intact, at_end = split_window(window, info["box"] / info["d0"])
     r["n_intact"] = len(intact)
     if window and not at_end and len(intact) <= INTACT_SKIP_MAX * len(window):
@@ -978,6 +977,9 @@ def read_run(run_dir, info):
     elif window:
         r["notes"].append(f"{len(intact)} of {len(window)} samples after t = {t0:.4g} s intact (more than "
                           f"{INTACT_SKIP_MAX:.0%}): no steady breakup length")
+    # the particles that left the box within the window of a run with a length
+    r["left_window"] = (None if r["L"] is None else
+                        sum(1 for t in r["left_at"].values() if r["t0"] <= t <= r["t1"]))
     boom = blew_up(run_dir)
     if boom:
         r["status"] = "blew up"
@@ -1044,7 +1046,7 @@ def report(args):
                      f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
                      f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
                      fmt(r["particles"], "d"),
-                     f"{fmt(r.get('left'), 'd')} ({fmt(r.get('left_window') if r['L'] is not None else None, 'd')})",
+                     f"{fmt(r.get('left'), 'd')} ({fmt(r.get('left_window'), 'd')})",
                      fmt(r["wall_s"], ".0f")])
         if args.own_window:
             rows[-1][header.index("window to t [s]"):header.index("window to t [s]")] = [
@@ -1123,7 +1125,7 @@ def left_text(summaries):
     left = [r.get("left") or 0 for r in made]
     if not any(left):
         return ""
-    inside = [r["left_window"] for r in made if r["L"] is not None and r.get("left_window")]
+    inside = [r["left_window"] for r in made if r.get("left_window")]
     n_left = sum(1 for n in left if n)
     return (f"Particles that left the box (through its side or its end; the drops the sink removed are "
             f"not counted): {sum(left)} in {n_left} of the {len(made)} runs made, "

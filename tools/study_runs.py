@@ -71,28 +71,21 @@ def finished(run_dir):
 
 def parse_log(run_dir):
     """run.log -> dict particles, boundary, fluid, wall_s (summed over the parts), steps,
-    t_end, particle_steps (summed over the parts), particle_steps_per_s, parts, finished, left
-    (the particles that left the domain over the whole run: the count "in all" of the last line
-    that gives one, an event's or a part's `done:`) and left_at (the time [s] each particle id
-    left at; a resumed part drops the ids logged after its checkpoint's time, which it makes
-    again)."""
+    t_end, particle_steps (summed over the parts), particle_steps_per_s, parts, finished, left_at
+    (the time [s] each particle id left the domain at; a resumed part drops the ids logged after
+    its checkpoint's time, which it makes again) and left (their number)."""
     lines = read_lines(os.path.join(run_dir, "run.log"))
     out = {"particles": None, "boundary": None, "fluid": None, "wall_s": 0.0, "steps": 0,
            "t_end": None, "particle_steps": 0.0, "particle_steps_per_s": None, "parts": 0,
-           "finished": finished(run_dir), "left": None, "left_at": {}}
+           "finished": finished(run_dir), "left_at": {}}
     for line in lines:
         m = re.match(r"resuming at step \d+ t = ([-+0-9.eE]+) s", line)
         if m:
             t = float(m.group(1))
             out["left_at"] = {i: ti for i, ti in out["left_at"].items() if ti <= t}
-        m = re.match(r"step \d+ t = ([-+0-9.eE]+) s: \d+ particle\(s\) left the domain and were removed "
-                     r"\((\d+) in all\); ids ([0-9 ]+)$", line)
+        m = re.match(r"step \d+ t = ([-+0-9.eE]+) s: \d+ particle\(s\) left the domain .*; ids ([0-9 ]+)$", line)
         if m:
-            out["left_at"].update((int(i), float(m.group(1))) for i in m.group(3).split())
-            out["left"] = int(m.group(2))
-        m = re.match(r"done: .*; (\d+) particles left the domain", line)
-        if m:
-            out["left"] = int(m.group(1))   # the run's count so far: a resumed part carries it
+            out["left_at"].update((int(i), float(m.group(1))) for i in m.group(2).split())
         m = re.search(r"\| particles (\d+) \(boundary (\d+), fluid (\d+)\)", line)
         if line.startswith("case:") and m and out["particles"] is None:
             out["particles"], out["boundary"], out["fluid"] = map(int, m.groups())
@@ -108,6 +101,7 @@ def parse_log(run_dir):
         out["particle_steps_per_s"] = out["particle_steps"] / out["wall_s"]   # over all parts
     if out["parts"] == 0:
         out["wall_s"] = None
+    out["left"] = len(out["left_at"])
     return out
 
 
