@@ -53,7 +53,7 @@ MC_TOL = 0.20
 
 def main():
     modes = ("--noise-floor", "--mansour-chigier")
-    if len(sys.argv) not in (5, 6) or sys.argv[4] not in modes or sys.argv[5:] not in ([], ["--relaxed-exit"]):
+    if len(sys.argv) < 5 or sys.argv[4] not in modes or sys.argv[5:] not in ([], ["--relaxed-exit"]):
         sys.exit(__doc__)
     sphjet, src, work = map(pathlib.Path, sys.argv[1:4])
     mode = sys.argv[4]
