@@ -99,7 +99,7 @@ for every run, at least 10 d0, in a study directory of its own: runs sized for j
 break well before the measured length, at a fraction of the cost): it runs to T = (1.5 + W) L_ref / U
 (W = --window, 1 by default; another W has a study directory of its own, suffix _wW), the nozzle holds
 the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d0 below the
-orifice (drops beyond leave the run). The breakup length of a run is the mean of the jet's
+orifice and 2.5 d0 from the axis (--box-radius R: R d0, suffix _boxR; drops beyond leave the run). The breakup length of a run is the mean of the jet's
 intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.5 L_ref / U,
 by when the start-up has gone (the first breakup comes at about L / U, and the unforced jets
 of 0.78 and 1.57 m/s reach their steady lengths at 1.55 and 1.53 L_ref / U). A window sample
@@ -229,6 +229,9 @@ OWN_LONGEST = 2.0
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
 OWN_NOT_QUIET_CAPS = 2.0
 BOX_L_FACTOR = 1.6
+# The box's reach from the axis in d0 (domain.lx): a drop thrown past it leaves the run. 2.5 d0 is
+# five jet radii; 5 and 7.5 d0 were measured (cases/round_jet/README.md, "Particles that leave the box").
+BOX_RADIUS_D0 = 2.5
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
 # length is the mean over the broken ones (more: no steady length). One reaching within
@@ -402,11 +405,12 @@ def box_below(l_ref, d0):
     return BOX_L_FACTOR * l_ref + 10.0 * d0
 
 
-def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False):
+def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False, radius=BOX_RADIUS_D0):
     """The overrides that size one run: nozzle length, box, orifice height, end time, sampling.
     refill: a nozzle of REFILL_NOZZLE d0 that refills (nozzle.refill) instead of one that holds
     the fluid of the whole run; window: the window's length in L_ref / U (the run ends at
-    WINDOW_T_FACTOR + window of them); own: --own-window's first end and checks (own_window)."""
+    WINDOW_T_FACTOR + window of them); own: --own-window's first end and checks (own_window);
+    radius: the box's reach from the axis in d0 (domain.lx)."""
     dx = d0 / n
     if own:
         t_end, every, refill = (OWN_START + window) * OWN_MIN_D0 * d0 / u, own_check_every(l_ref, u), True
@@ -419,7 +423,7 @@ def sizing(u, d0, l_ref, n, refill=False, window=WINDOW_LENGTH, own=False):
     lz = below + nozzle * d0 + 2.0 * dx
     return [f"resolution.dx={dx:.9g}", f"nozzle.d0={d0:g}", f"nozzle.u0={u:g}",
             f"nozzle.length_over_d0={nozzle:.6g}", f"nozzle.z0={z0:.9g}", f"domain.lz={lz:.9g}",
-            f"domain.lx={2.5 * d0:.9g}", f"time.tmax={t_end:.6g}",
+            f"domain.lx={radius * d0:.9g}", f"time.tmax={t_end:.6g}",
             f"breakup.check_every={every:.4g}", f"time.out={(20 * every if own else t_end / 20):.4g}"] + \
         (["nozzle.refill=true"] if refill else [])
 
@@ -700,18 +704,19 @@ def plan(opts):
     over that d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
+    radius = opts.box_radius
     runs = []
     for u, l_meas in read_mc():
         l_ref = max(l_meas if size_c is None else size_c * groups(u, D0_MC)["x"], 10.0) * D0_MC
         # --relaxed-exit: the run's plug at the tube's relaxed speed and diameter, d0/dx over that diameter
         u_run, d_run = relaxed_exit(u, D0_MC)[1:] if opts.relaxed_exit else (u, D0_MC)
-        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u_run, d_run, l_ref, n, quiet, window, own),
+        runs.append(("mc", f"mc_{u_tag(u)}", sizing(u_run, d_run, l_ref, n, quiet, window, own, radius),
                      {"U": u_run, "d0": d_run, "L_ref": l_ref, "L_meas": l_meas, "box": box_below(l_ref, d_run),
                       "own": own, "W": window} | ({"tube": (u, D0_MC)} if opts.relaxed_exit else {})))
     for u in PAPER_U0S:
         g = groups(u, D0_PAPER)
         l_ref = max(g["eq37_d"] if size_c is None else size_c * g["x"], 10.0) * D0_PAPER
-        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window, own) + [f"fluid.c0={PAPER_C0:g}"],
+        runs.append(("paper", f"paper_{u_tag(u)}", sizing(u, D0_PAPER, l_ref, n, quiet, window, own, radius) + [f"fluid.c0={PAPER_C0:g}"],
                      {"U": u, "d0": D0_PAPER, "L_ref": l_ref, "L_meas": None, "box": box_below(l_ref, D0_PAPER),
                       "own": own, "W": window}))
     if opts.column is not None:
@@ -797,7 +802,8 @@ def study_flags(opts):
             + (" --bound-xsph" if opts.bound_xsph else "")
             + (" --free-bodies" if opts.free_bodies else "")
             + (" --thin-rings" if opts.thin_rings else "")
-            + (" --relaxed-exit" if opts.relaxed_exit else ""))
+            + (" --relaxed-exit" if opts.relaxed_exit else "")
+            + ("" if opts.box_radius == BOX_RADIUS_D0 else f" --box-radius {opts.box_radius:g}"))
     if is_quiet_jets(opts):
         for _attr, value, flag in QUIET_JETS:
             flags = flags.replace(" " + flag_text(flag, value), "", 1)
@@ -818,7 +824,8 @@ def study_dir(opts):
             + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
             + ("" if opts.margin is None else f"_margin{opts.margin:g}")
             + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else "")
-            + ("_tr" if opts.thin_rings else "") + ("_rx" if opts.relaxed_exit else ""))
+            + ("_tr" if opts.thin_rings else "") + ("_rx" if opts.relaxed_exit else "")
+            + ("" if opts.box_radius == BOX_RADIUS_D0 else f"_box{opts.box_radius:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
 
@@ -1299,6 +1306,9 @@ def parse(argv=None):
                             "parabolic exit profile relaxes (x = U_f / U from x - (2/We_d) x^(-1/2) = "
                             "4/3 - 2/We_d, d0 x^(-1/2)), d0/dx over that diameter; lengths reported over the "
                             "tube's d0 (suffix _rx)")
+        p.add_argument("--box-radius", type=float, default=BOX_RADIUS_D0, metavar="R",
+                       help=f"the box reaches R d0 from the axis (domain.lx = R d0; default {BOX_RADIUS_D0:g}): "
+                            "a drop thrown farther leaves the run (suffix _boxR)")
         p.add_argument("--size-c", type=float, default=None, metavar="C",
                        help="size every run for L_ref = C sqrt(We_d)(1 + 3 Oh_d) d0 (default: the "
                             "measured length, eq 37 for the paper's jets)")
@@ -1322,6 +1332,8 @@ def parse(argv=None):
             setattr(args, attr, value)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
+    if not args.box_radius >= 1.0:
+        ap.error(f"--box-radius {args.box_radius}: expected R >= 1 (in d0 from the axis; the jet's radius is 0.5 d0)")
     if args.remove_h is not None and not args.remove_h > 0:
         ap.error(f"--remove-drops-below-h {args.remove_h}: expected a positive number")
     if args.size_c is not None and not args.size_c > 0:

@@ -300,6 +300,20 @@ def main():
             check(p.returncode == 2 and "--column" in p.stderr, f"--column {bad}: exit {p.returncode}")
         check(rjs.study_flags(rjs.parse(["report", "--column", "0.5"])) == " --eps 0.01 --d0-over-dx 10 --column 0.5",
               "the report's run command with --column")
+        # --box-radius 5: the box reaches 5 d0 from the axis instead of 2.5 (0.7814 m/s: d0 =
+        # 1.194 mm, domain.lx = 5.97 mm), in a directory of its own; below 1 d0 refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--box-radius", "5",
+                            "--only", "mc_u0.7814"], capture_output=True, text=True)
+        check(f"--set domain.lx={5 * rjs.D0_MC:.9g} " in p.stdout and "eps0.01_n10_box5" in p.stdout,
+              f"--box-radius: {p.stdout}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--only", "mc_u0.7814"],
+                           capture_output=True, text=True)
+        check(f"--set domain.lx={2.5 * rjs.D0_MC:.9g} " in p.stdout, f"the default box: {p.stdout}")
+        for bad in ("0.5", "-1"):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--box-radius", bad], capture_output=True, text=True)
+            check(p.returncode == 2 and "--box-radius" in p.stderr, f"--box-radius {bad}: exit {p.returncode}")
+        check(rjs.study_flags(rjs.parse(["report", "--box-radius", "5"])) == " --eps 0.01 --d0-over-dx 10 --box-radius 5",
+              "the report's run command with --box-radius")
         # --gravity: every run falls (gravity.gz = -9.81) with the renormalised continuity and the
         # release at the crossing, in a directory of its own; refused without a rings pair; its
         # report adds the falling C of tools/jet_gravity_theory.py at the measured length (0.7814
