@@ -99,8 +99,9 @@ for every run, at least 10 d0, in a study directory of its own: runs sized for j
 break well before the measured length, at a fraction of the cost): it runs to T = (1.5 + W) L_ref / U
 (W = --window, 1 by default; another W has a study directory of its own, suffix _wW), the nozzle holds
 the fluid of that time (length U T + 2 d0), and the box reaches 1.6 L_ref + 10 d0 below the
-orifice and 2.5 d0 from the axis (--box-radius R: R d0, suffix _boxR; drops beyond leave the run). The breakup length of a run is the mean of the jet's
-intact length (jet.csv L, the paper's 1.5 h rule) over the samples with t >= 1.5 L_ref / U,
+orifice and 2.5 d0 from the axis (--box-radius R: R d0, suffix _boxR; drops beyond leave the
+run). The breakup length of a run is the mean of the jet's intact length (jet.csv L, the
+paper's 1.5 h rule) over the samples with t >= 1.5 L_ref / U,
 by when the start-up has gone (the first breakup comes at about L / U, and the unforced jets
 of 0.78 and 1.57 m/s reach their steady lengths at 1.55 and 1.53 L_ref / U). A window sample
 with the jet intact to within 1 d0 of the box's end means a jet longer than the box: no length.
@@ -230,7 +231,8 @@ OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
 OWN_NOT_QUIET_CAPS = 2.0
 BOX_L_FACTOR = 1.6
 # The box's reach from the axis in d0 (domain.lx): a drop thrown past it leaves the run. 2.5 d0 is
-# five jet radii; 5 and 7.5 d0 were measured (cases/round_jet/README.md, "Particles that leave the box").
+# five jet radii; 5 and 7.5 d0 were measured (cases/round_jet/README.md, "A plug at the tube's
+# relaxed state": "A wider box").
 BOX_RADIUS_D0 = 2.5
 # A window sample with the jet intact short of the box's end is a drop touching the jet's end or
 # a neck held by a thread of axis rings at one check; up to this fraction of such samples the
