@@ -49,10 +49,11 @@ GRID = 1200        # points along the jet, 0 .. 2 L_max: N by the trapezoid rule
 L_MAX_D0 = 400.0   # the longest jet it integrates [d0]
 
 
-def omega_max(a):
-    """Weber's fastest growth rate [1/s] of a water column of radius a [m]: golden-section
-    search over ka in [0.3, 0.99] (one maximum there)."""
-    oh = MU / math.sqrt(RHO * SIGMA * a)  # on the radius, as weber_omega takes it
+def omega_max(a, rho=RHO, sigma=SIGMA, mu=MU):
+    """Weber's fastest growth rate [1/s] of a column of radius a [m] (water unless rho [kg/m^3],
+    sigma [N/m] and mu [Pa s] say otherwise): golden-section search over ka in [0.3, 0.99] (one
+    maximum there)."""
+    oh = mu / math.sqrt(rho * sigma * a)  # on the radius, as weber_omega takes it
     lo, hi = 0.3, 0.99
     r = (math.sqrt(5.0) - 1.0) / 2.0
     x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
@@ -66,7 +67,7 @@ def omega_max(a):
             hi, x2, f2 = x2, x1, f1
             x1 = hi - r * (hi - lo)
             f1 = weber_omega(x1, oh)
-    return max(f1, f2) * math.sqrt(SIGMA / (RHO * a ** 3))
+    return max(f1, f2) * math.sqrt(sigma / (rho * a ** 3))
 
 
 def unstable_reach(u, d0, g):
@@ -96,15 +97,16 @@ def critical_weber(d_in, d_out, g):
 
 
 class Jet:
-    """N(z) of one jet (speed u [m/s], radius a0 [m], gravity g [m/s^2] along it) on a grid."""
+    """N(z) of one jet (speed u [m/s], radius a0 [m], gravity g [m/s^2] along it; water unless
+    rho, sigma and mu say otherwise, as omega_max) on a grid."""
 
-    def __init__(self, u, a0, g):
+    def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU):
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
         self.n = [0.0]
         prev = None
         for i in range(GRID):
             uz = math.sqrt(u * u + 2.0 * g * i * self.dz)
-            rate = omega_max(a0 * math.sqrt(u / uz)) / uz
+            rate = omega_max(a0 * math.sqrt(u / uz), rho, sigma, mu) / uz
             if prev is not None:
                 self.n.append(self.n[-1] + 0.5 * (prev + rate) * self.dz)
             prev = rate

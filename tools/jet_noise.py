@@ -20,6 +20,11 @@ over the same times while one of them goes on.
 - theory: Weber's (1931) viscous growth rate, the largest over ka and at the case's forcing
   wavenumber (nozzle.disturbance_ka), and the breakup length C u0 / omega_Weber that the
   measured C gives with it.
+- falling (a round jet with gravity along it, the case's [gravity] on its nozzle.axis): the
+  envelope's growth over the fit's stretch, ln(A(s1)/A(s0)), over Weber's growth integrated
+  along a jet that gravity speeds up and thins, N(s1) - N(s0) (tools/jet_gravity_theory.py's
+  N(z), at the case's u0, radius and fluid), and the same over the stretch's four quarters:
+  1 where the jet grows as the falling theory says, everywhere along it.
 - spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
   at least 4 d0 long), and its peak ka.
 - noise along the jet (from the snapshots snap_*.h5 at T <= t <= T1, where the run wrote them): the
@@ -76,6 +81,9 @@ def read_case(run):
     with open(os.path.join(run, "case.toml"), "rb") as f:
         case = tomllib.load(f)
     nz, fl = case["nozzle"], case["fluid"]
+    grav = case.get("gravity", {})
+    along = {"down": (0.0, -1.0), "up": (0.0, 1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+    ax, az = along.get(nz.get("axis", "down"), (0.0, -1.0))
     rho = fl.get("rho0", 1000.0)
     nu = fl["mu"] / rho if "mu" in fl else fl.get("nu", 0.0)
     return {
@@ -85,6 +93,7 @@ def read_case(run):
         "ka": nz.get("disturbance_ka", 0.697), "eps": nz.get("disturbance", 0.0),
         "round": case.get("domain", {}).get("geometry", "planar") == "axisymmetric",
         "dx": case.get("resolution", {}).get("dx"),
+        "g_along": ax * grav.get("gx", 0.0) + az * grav.get("gz", -9.81),   # along the jet (CASE_FORMAT's defaults)
     }
 
 
@@ -138,6 +147,25 @@ def fit_growth(env):
         return None
     k, ln_d = statistics.linear_regression([p[0] for p in pts], [p[1] for p in pts])
     return k, ln_d, pts[0][0], pts[-1][0]
+
+
+def falling_growth(env, s0, s1, c):
+    """The envelope's growth over [s0, s1] d0 over Weber's growth integrated along a jet that
+    gravity (c["g_along"] > 0) speeds up and thins (tools/jet_gravity_theory.py's N(z), at the
+    case's u0, radius and fluid): (the ratio over the whole stretch, [the ratios over its four
+    quarters]), or None with fewer than five slices in it."""
+    from jet_gravity_theory import Jet   # here: it imports round_jet_study, which imports this module
+    d0 = c["d0"]
+    jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"])
+    pts = [(s, A) for s, A, _ in env if s0 <= s <= s1 and A > 0]
+    if len(pts) < 5:
+        return None
+
+    def ratio(p, q):
+        return math.log(q[1] / p[1]) / (jet.exponent(q[0] * d0) - jet.exponent(p[0] * d0))
+
+    ends = [round(i * (len(pts) - 1) / 4) for i in range(5)]
+    return ratio(pts[0], pts[-1]), [ratio(pts[ends[i]], pts[ends[i + 1]]) for i in range(4)]
 
 
 def spectrum(surface, d0, a):
@@ -369,6 +397,13 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
               f"the fitted line reaches a at s = C / k_s = {c_fit / k:.4g} d0")
         summary.update({"k_s_per_d0": k, "omega": omega, "omega_over_weber": omega * t_cap / w_max,
                         "delta0_over_a": math.exp(ln_d), "C": c_fit, "L_fit_over_d0": c_fit / k})
+        falling = falling_growth(env, s0, s1, c) if c["round"] and sig > 0 and c["g_along"] > 0 else None
+        if falling is not None:
+            print(f"growth along the falling jet (g = {c['g_along']:g} m/s^2 along it) over Weber's growth "
+                  f"integrated along it (the local radius and speed; tools/jet_gravity_theory.py): "
+                  f"{falling[0]:.3f} over s = {s0:.2f}-{s1:.2f} d0; by quarters of it "
+                  + ", ".join(f"{q:.3f}" for q in falling[1]))
+            summary["growth_over_falling_theory"] = falling[0]
     else:
         print("growth fit: no growing stretch found (envelope too short or flat)")
     if c["round"] and sig > 0:

@@ -43,6 +43,11 @@ rows 1, 3 at 0.6) and, from s = 8 d0 on, +-0.5 sigma/a alternating along each ro
 must read 0 d0; about the rows' means the slices must print 0 up to 8 d0 and 0.5 beyond (within
 5e-4, the three digits printed) and `quiet about the rows' means` 8 d0 (exact by construction).
 
+A run falling at 300 m/s^2 whose envelope grows as Weber's growth integrated along the falling
+jet (tools/jet_gravity_theory.py's N) must read 1 within 1% over the fit's stretch and each of its
+quarters; without gravity no such line; the constant growth above must read above 2
+(check_falling).
+
 With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
 before `--from` refused with a message naming both.
 
@@ -70,7 +75,10 @@ KA = 0.7                        # the wave: k d0 = 2 ka
 PERIODS, SAMPLES = 40, 400
 
 
-def write_run(d):
+def write_run(d, gz=0.0, growth=None):
+    """The synthetic run in d: gravity gz [m/s^2] along z (the jet flows down, -z), the envelope
+    delta0 exp(growth(s)) (s in d0; default k_s s)."""
+    growth = growth or (lambda s: KS * s)
     with open(os.path.join(d, "case.toml"), "w") as f:
         f.write(f"""format_version = 1
 [fluid]
@@ -90,6 +98,8 @@ d0 = {D0}
 u0 = {U0}
 disturbance = 0.0
 disturbance_ka = {KA}
+[gravity]
+gz = {gz}
 """)
     k = 2 * KA  # per d0
     omega = 1.0  # per sample unit: the periods are whole over the samples
@@ -103,7 +113,7 @@ disturbance_ka = {KA}
         jet.append(f"{t},{n},0,0,{U0},{U0},1,{12 * D0},12,13,1,1.9,1.9,0,0.4,5,100,130,20,0.01")
         for i in range(120):
             s = (i + 0.5) * 0.1
-            r = A * (1 + DELTA0 * math.exp(KS * s) * math.sin(phase - k * s + 0.3 * omega))
+            r = A * (1 + DELTA0 * math.exp(growth(s)) * math.sin(phase - k * s + 0.3 * omega))
             surf.append(f"{t},{n},{s:.6g},{r / D0:.12g}")
     with open(os.path.join(d, "jet.csv"), "w") as f:
         f.write("\n".join(jet) + "\n")
@@ -250,6 +260,42 @@ def check_rows_noise():
     return failures
 
 
+def check_falling():
+    """The growth over Weber's growth along a falling jet: a run falling at G = 300 m/s^2 (its speed
+    3.9 times u0 at 12 d0, so the local rate falls from 0.285 to 0.215 per d0) whose envelope is
+    delta0 exp(N(s)), N from tools/jet_gravity_theory.py's Jet at the run's u0, radius and fluid.
+    The whole stretch and each quarter must read 1 within 1%, the tolerance of k_s above for the
+    same sampling (N grows by 2.7 over the stretch). The same envelope read without gravity must
+    print no such line, and with the constant growth of the run above (k_s = 0.8 per d0, 2.8-3.7
+    times the falling rate) the ratio must be above 2. A list of failures."""
+    sys.path.insert(0, os.path.join(REPO, "tools"))
+    from jet_gravity_theory import Jet
+    g = 300.0
+    jet = Jet(U0, A, g, RHO, SIGMA, MU)
+    failures = []
+    for gz, growth, want in ((-g, lambda s: jet.exponent(s * D0), 1.0), (0.0, lambda s: jet.exponent(s * D0), None),
+                             (-g, None, "above 2")):
+        with tempfile.TemporaryDirectory() as d:
+            write_run(d, gz, growth)
+            out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
+            val = summary(out.stdout) or {}
+            got = val.get("growth_over_falling_theory")
+            m = re.search(r"^growth along the falling jet .*?: ([0-9.]+) over .*by quarters of it (.*)$",
+                          out.stdout, re.M)
+            if want is None:
+                if got is not None or m:
+                    failures.append(f"without gravity: growth over the falling theory printed ({got})")
+            elif want == "above 2":
+                if got is None or not got > 2.0:
+                    failures.append(f"constant growth read as {got} of the falling theory, built 2.8-3.7 times it")
+            else:
+                quarters = [float(q) for q in m.group(2).split(", ")] if m else []
+                if got is None or not abs(got - 1) < 0.01 or len(quarters) != 4 \
+                        or any(not abs(q - 1) < 0.01 for q in quarters):
+                    failures.append(f"falling: growth over the theory {got}, quarters {quarters}; built 1 (1%)")
+    return failures
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -317,6 +363,7 @@ def main():
     failures += check_front()
     failures += check_rows()
     failures += check_rows_noise()
+    failures += check_falling()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
