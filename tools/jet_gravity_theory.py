@@ -23,7 +23,10 @@ number rho U(z)^2 d(z) / sigma = We_d (U(z) / U)^(3/2) stays below 2 pi:
 (0 at and above We_d = 2 pi; the whole jet without gravity), the pocket of local absolute
 instability of a plug leaving a tube with no face (a local criterion, as N is; whether a pocket
 that long makes the jet drip is a global question it does not answer). With --c C it also
-prints the lengths that C gives with and without gravity.
+prints the lengths that C gives with and without gravity. It prints whether one C puts every
+measured length within 20% (each speed asks for N(0.8 L) <= C <= N(1.2 L)), and with --relaxed
+it takes each jet as the flat plug its tube's parabolic profile relaxes to (round_jet_study.py's
+relaxed_exit, the study's --relaxed-exit).
 
 Whether a slow jet forms at all, or the tube drips, it prints from Clanet & Lasheras (1999, JFM
 383, 307): a liquid injected downward jets above the Weber number
@@ -41,7 +44,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from axisymmetric import weber_omega  # noqa: E402
-from round_jet_study import D0_MC, G_FALL, MU, RHO, SIGMA, read_mc  # noqa: E402
+from round_jet_study import D0_MC, G_FALL, MU, RHO, SIGMA, read_mc, relaxed_exit  # noqa: E402
 
 K_CL = 0.37        # Clanet & Lasheras's constant for water in air
 D_OUT_16G = 1.651e-3  # outer diameter of 16-gauge regular-wall hypodermic tubing [m] (bore 1.194 mm)
@@ -125,7 +128,23 @@ class Jet:
         return None
 
 
-def table(g, c=None, d_out=D_OUT_16G):
+def one_c(jets, band=0.2):
+    """The ln(a/delta0) that puts every jet's length within band of its measured one: jets is
+    [(U, L [m], Jet)]; each asks for N(L (1 - band)) <= C <= N(L (1 + band)). -> (lowest C, its U,
+    highest C, its U): no such C where lowest > highest."""
+    lo = max((jet.exponent((1.0 - band) * l), u) for u, l, jet in jets)
+    hi = min((jet.exponent((1.0 + band) * l), u) for u, l, jet in jets)
+    return lo[0], lo[1], hi[0], hi[1]
+
+
+def one_c_line(jets, band=0.2):
+    lo, u_lo, hi, u_hi = one_c(jets, band)
+    if lo > hi:
+        return (f"none: {u_lo:.4f} m/s asks for at least {lo:.2f}, {u_hi:.4f} m/s for at most {hi:.2f}")
+    return f"{lo:.2f} to {hi:.2f} (set by {u_lo:.4f} and {u_hi:.4f} m/s)"
+
+
+def table(g, c=None, d_out=D_OUT_16G, relaxed=False):
     a0 = 0.5 * D0_MC
     head = ("| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity | "
             "absolutely unstable to [d0], falling |")
@@ -134,10 +153,16 @@ def table(g, c=None, d_out=D_OUT_16G):
         head += f" L/d0 at C = {c:g} without / with gravity |"
         sep += "---|"
     lines = [head, sep]
-    cs0, csg = [], []
+    cs0, csg, flats, fallings = [], [], [], []
     for u, l_d0 in read_mc():
         we = RHO * u * u * D0_MC / SIGMA
-        flat, falling = Jet(u, a0, 0.0), Jet(u, a0, g)
+        u_j, a_j = u, a0
+        if relaxed:
+            _x, u_j, d_j = relaxed_exit(u, D0_MC)
+            a_j = 0.5 * d_j
+        flat, falling = Jet(u_j, a_j, 0.0), Jet(u_j, a_j, g)
+        flats.append((u, l_d0 * D0_MC, flat))
+        fallings.append((u, l_d0 * D0_MC, falling))
         c0 = flat.exponent(l_d0 * D0_MC)
         cg = falling.exponent(l_d0 * D0_MC)
         cs0.append(c0)
@@ -157,6 +182,9 @@ def table(g, c=None, d_out=D_OUT_16G):
     lines.append(f"C = ln(a/delta0) the measured lengths ask for (g = {g:g} m/s^2 along the jet):")
     lines.append(f"  without gravity: {spread(cs0)}")
     lines.append(f"  with gravity:    {spread(csg)}")
+    lines.append("One C that puts every measured length within 20% (N(0.8 L) <= C <= N(1.2 L) at every speed):")
+    lines.append(f"  without gravity: {one_c_line(flats)}")
+    lines.append(f"  with gravity:    {one_c_line(fallings)}")
     if g > 0:
         lines.append("")
         lines.append(f"Dripping or jetting (Clanet & Lasheras 1999, K = {K_CL:g}): a tube jets above We_c")
@@ -174,6 +202,10 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--g", type=float, default=G_FALL, help=f"gravity along the jet [m/s^2] (default {G_FALL:g})")
     ap.add_argument("--c", type=float, default=None, help="also print the lengths this ln(a/delta0) gives")
+    ap.add_argument("--relaxed", action="store_true",
+                    help="each jet leaves as the flat plug its tube's parabolic profile relaxes to "
+                         "(round_jet_study.py --relaxed-exit: speed and diameter); lengths and C "
+                         "still over the tube's d0 and measured as such")
     ap.add_argument("--d-out", type=float, default=D_OUT_16G,
                     help=f"the tube's outer diameter [m] for the dripping criterion (default {D_OUT_16G:g})")
     args = ap.parse_args(argv)
@@ -183,7 +215,7 @@ def main(argv=None):
         ap.error(f"--g {args.g}: expected >= 0 (along the jet)")
     if args.c is not None and not args.c > 0:
         ap.error(f"--c {args.c}: expected a positive number")
-    print(table(args.g, args.c, args.d_out))
+    print(table(args.g, args.c, args.d_out, args.relaxed))
     return 0
 
 

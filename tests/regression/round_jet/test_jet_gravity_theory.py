@@ -24,6 +24,11 @@
   sqrt(U^2 + 2 g z) and a(z) = a0 sqrt(U / U(z)), must be 2 pi to 1e-12 relative (rounding
   only; a slip in the exponent 4/3 moves it by tens of per cent), at 0.3441 and 0.4946 m/s; 0 for
   a jet that leaves at We_d >= 2 pi (0.7814 m/s); inf without gravity for one that leaves below.
+- one_c() (one C for every length within 20%) on jets without gravity, whose N = k z is linear:
+  each asks for 0.8 k L <= C <= 1.2 k L, so for two jets the answer is max of the lower ends and
+  min of the upper ends, to 1e-9 relative (the grid's N is exact for a linear N, above), with
+  the speeds that set them; two lengths 1.6 times apart in N leave none (lower end above the
+  upper).
 """
 import math
 import os
@@ -91,6 +96,19 @@ for u in (0.3441, 0.4946):
           f"{u} m/s falling: local We_d at z_a = {za / jgt.D0_MC:.2f} d0 is {we_local:.12g} (2 pi)")
 check(jgt.unstable_reach(0.7814, jgt.D0_MC, 9.81) == 0.0, "0.7814 m/s (We_d > 2 pi): no pocket")
 check(jgt.unstable_reach(0.4946, jgt.D0_MC, 0.0) == math.inf, "0.4946 m/s without gravity: the whole jet")
+
+slow, fast = jgt.Jet(0.5, a0, 0.0), jgt.Jet(1.0, a0, 0.0)
+k_slow, k_fast = jgt.omega_max(a0) / 0.5, jgt.omega_max(a0) / 1.0
+l_slow, l_fast = 30 * jgt.D0_MC, 50 * jgt.D0_MC   # N(L) = 60 and 50 omega_max d0: C from 48 to 60 of it
+lo, u_lo, hi, u_hi = jgt.one_c([(0.5, l_slow, slow), (1.0, l_fast, fast)])
+want_lo = max((0.8 * k_slow * l_slow, 0.5), (0.8 * k_fast * l_fast, 1.0))
+want_hi = min((1.2 * k_slow * l_slow, 0.5), (1.2 * k_fast * l_fast, 1.0))
+check(abs(lo / want_lo[0] - 1) < 1e-9 and abs(hi / want_hi[0] - 1) < 1e-9 and (u_lo, u_hi) == (want_lo[1], want_hi[1]),
+      f"one C: {lo:.6g} ({u_lo}) to {hi:.6g} ({u_hi}), closed form {want_lo[0]:.6g} ({want_lo[1]}) "
+      f"to {want_hi[0]:.6g} ({want_hi[1]})")
+lo, _u, hi, _v = jgt.one_c([(0.5, l_slow, slow), (1.0, 1.6 * l_slow * k_slow / k_fast, fast)])
+check(lo > hi and "none" in jgt.one_c_line([(0.5, l_slow, slow), (1.0, 1.6 * l_slow * k_slow / k_fast, fast)]),
+      f"lengths 1.6 times apart in N: no one C ({lo:.4g} > {hi:.4g})")
 
 if failures:
     print(f"{len(failures)} check(s) failed")
