@@ -167,7 +167,7 @@ def table(g, c=None, d_out=D_OUT_16G, relaxed=False):
         cg = falling.exponent(l_d0 * D0_MC)
         cs0.append(c0)
         csg.append(cg)
-        reach = unstable_reach(u, D0_MC, g) / D0_MC
+        reach = unstable_reach(u_j, 2.0 * a_j, g) / D0_MC   # the plug the jet leaves as
         row = f"| {u:.4f} | {we:.2f} | {l_d0:.2f} | {c0:.2f} | {cg:.2f} | {reach:.1f} |"
         if c is not None:
             row += f" {flat.length(c) / D0_MC:.1f} / {falling.length(c) / D0_MC:.1f} |"
@@ -204,8 +204,8 @@ def main(argv=None):
     ap.add_argument("--c", type=float, default=None, help="also print the lengths this ln(a/delta0) gives")
     ap.add_argument("--relaxed", action="store_true",
                     help="each jet leaves as the flat plug its tube's parabolic profile relaxes to "
-                         "(round_jet_study.py --relaxed-exit: speed and diameter); lengths and C "
-                         "still over the tube's d0 and measured as such")
+                         "(round_jet_study.py --relaxed-exit: speed and diameter), its growth and its "
+                         "pocket of absolute instability from there; lengths still over the tube's d0")
     ap.add_argument("--d-out", type=float, default=D_OUT_16G,
                     help=f"the tube's outer diameter [m] for the dripping criterion (default {D_OUT_16G:g})")
     args = ap.parse_args(argv)
