@@ -21,10 +21,11 @@ over the same times while one of them goes on.
   wavenumber (nozzle.disturbance_ka), and the breakup length C u0 / omega_Weber that the
   measured C gives with it.
 - falling (a round jet with gravity along it, the case's [gravity] on its nozzle.axis): the
-  envelope's growth over the fit's stretch, ln(A(s1)/A(s0)), over Weber's growth integrated
-  along a jet that gravity speeds up and thins, N(s1) - N(s0) (tools/jet_gravity_theory.py's
-  N(z), at the case's u0, radius and fluid), and the same over the stretch's four quarters:
-  1 where the jet grows as the falling theory says, everywhere along it.
+  envelope's growth over the fit's stretch against Weber's growth integrated along a jet that
+  gravity speeds up and thins (tools/jet_gravity_theory.py's N(z), at the case's u0, radius and
+  fluid): the slope of the straight line through ln A(s) against N(s) over the stretch's
+  slices, and over each of its four quarters; 1 where the jet grows as the falling theory
+  says, everywhere along it.
 - spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
   at least 4 d0 long), and its peak ka.
 - noise along the jet (from the snapshots snap_*.h5 at T <= t <= T1, where the run wrote them): the
@@ -152,20 +153,21 @@ def fit_growth(env):
 def falling_growth(env, s0, s1, c):
     """The envelope's growth over [s0, s1] d0 over Weber's growth integrated along a jet that
     gravity (c["g_along"] > 0) speeds up and thins (tools/jet_gravity_theory.py's N(z), at the
-    case's u0, radius and fluid): (the ratio over the whole stretch, [the ratios over its four
-    quarters]), or None with fewer than five slices in it."""
+    case's u0, radius and fluid): the slope of the straight line through ln A against N over the
+    stretch's slices, and over each of its four quarters -> (slope, [four slopes]), or None with
+    fewer than nine slices in it (three a quarter, the quarters sharing their ends)."""
     from jet_gravity_theory import Jet   # here: it imports round_jet_study, which imports this module
     d0 = c["d0"]
     jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"])
-    pts = [(s, A) for s, A, _ in env if s0 <= s <= s1 and A > 0]
-    if len(pts) < 5:
+    pts = [(jet.exponent(s * d0), math.log(A)) for s, A, _ in env if s0 <= s <= s1 and A > 0]
+    if len(pts) < 9:
         return None
 
-    def ratio(p, q):
-        return math.log(q[1] / p[1]) / (jet.exponent(q[0] * d0) - jet.exponent(p[0] * d0))
+    def slope(part):
+        return statistics.linear_regression([p[0] for p in part], [p[1] for p in part])[0]
 
     ends = [round(i * (len(pts) - 1) / 4) for i in range(5)]
-    return ratio(pts[0], pts[-1]), [ratio(pts[ends[i]], pts[ends[i + 1]]) for i in range(4)]
+    return slope(pts), [slope(pts[ends[i]:ends[i + 1] + 1]) for i in range(4)]
 
 
 def spectrum(surface, d0, a):

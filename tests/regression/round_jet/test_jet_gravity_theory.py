@@ -29,6 +29,9 @@
   min of the upper ends, to 1e-9 relative (the grid's N is exact for a linear N, above), with
   the speeds that set them; two lengths 1.6 times apart in N leave none (lower end above the
   upper).
+- table(relaxed=True) (--relaxed): the 0.3441 m/s row must carry the relaxed plug's numbers,
+  the falling C its Jet's N at the measured length and the pocket its unstable_reach (16.2 d0,
+  against the tube's plug's 18.8), to the digits printed; its one-C line must read "none".
 """
 import math
 import os
@@ -109,6 +112,17 @@ check(abs(lo / want_lo[0] - 1) < 1e-9 and abs(hi / want_hi[0] - 1) < 1e-9 and (u
 lo, _u, hi, _v = jgt.one_c([(0.5, l_slow, slow), (1.0, 1.6 * l_slow * k_slow / k_fast, fast)])
 check(lo > hi and "none" in jgt.one_c_line([(0.5, l_slow, slow), (1.0, 1.6 * l_slow * k_slow / k_fast, fast)]),
       f"lengths 1.6 times apart in N: no one C ({lo:.4g} > {hi:.4g})")
+
+text = jgt.table(9.81, relaxed=True)
+row = next(line for line in text.splitlines() if line.startswith("| 0.3441 |"))
+cells = [c.strip() for c in row.strip("|").split("|")]
+_x, u_r, d_r = jgt.relaxed_exit(0.3441, jgt.D0_MC)
+want_c = jgt.Jet(u_r, 0.5 * d_r, 9.81).exponent(31.85 * jgt.D0_MC)
+want_pocket = jgt.unstable_reach(u_r, d_r, 9.81) / jgt.D0_MC
+check(cells[4] == f"{want_c:.2f}" and cells[5] == f"{want_pocket:.1f}",
+      f"--relaxed 0.3441 m/s: falling C {cells[4]} (relaxed plug {want_c:.2f}), pocket {cells[5]} d0 "
+      f"(relaxed plug {want_pocket:.1f}, the tube's plug {jgt.unstable_reach(0.3441, jgt.D0_MC, 9.81) / jgt.D0_MC:.1f})")
+check("  with gravity:    none" in text, "--relaxed: no one C with gravity")
 
 if failures:
     print(f"{len(failures)} check(s) failed")
