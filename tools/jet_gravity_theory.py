@@ -107,9 +107,10 @@ class Jet:
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
         self.n = [0.0]
         prev = None
+        flat = omega_max(a0, rho, sigma, mu) / u if g == 0.0 else None   # one rate along a jet without gravity
         for i in range(GRID):
             uz = math.sqrt(u * u + 2.0 * g * i * self.dz)
-            rate = omega_max(a0 * math.sqrt(u / uz), rho, sigma, mu) / uz
+            rate = flat if flat is not None else omega_max(a0 * math.sqrt(u / uz), rho, sigma, mu) / uz
             if prev is not None:
                 self.n.append(self.n[-1] + 0.5 * (prev + rate) * self.dz)
             prev = rate
@@ -138,6 +139,7 @@ def one_c(jets, band=0.2):
 
 
 def one_c_line(jets, band=0.2):
+    """one_c's answer as the table prints it."""
     lo, u_lo, hi, u_hi = one_c(jets, band)
     if lo > hi:
         return (f"none: {u_lo:.4f} m/s asks for at least {lo:.2f}, {u_hi:.4f} m/s for at most {hi:.2f}")
