@@ -1,0 +1,251 @@
+#!/usr/bin/python3
+"""The capillary growth of a round jet's own numerics: a periodic column of the jet's radius at
+rest, one wavelength long at k a = KA, with the jet case's numerics, fluid and surface tension,
+and its growth rate against Weber's.
+
+Usage (Debian's python3 has numpy and h5py):
+  /usr/bin/python3 tools/jet_column.py SOURCE [--set KEY=VALUE ...] [--d0-over-dx N] [--ka 0.7]
+      [--eps 1e-5] [--out DIR] [--threads 1] [--sphjet build/cpp_driver/sphjet] [--force]
+
+SOURCE is a round-jet case file (a modern .toml with a [nozzle]) or a run directory (its
+case.toml); --set overrides its keys as `sphjet run --set` does, before the column is built
+from it. The column takes the case's [numerics], [fluid], [surface_tension] and [domain] keys
+(geometry, axis pair, continuity, XSPH bound), the radius a = nozzle.d0 / 2, the spacing d0 / N
+(N = --d0-over-dx, or the case's own nozzle.d0 / resolution.dx) with the case's h / dx, and the
+case's step settings with the step's cap scaled by the spacing. Gravity, the nozzle and the
+breakup checks are left out. The column, r = a (1 + eps cos(k z)) at rest (fluid.cylinder),
+runs to the time Weber's rate takes from eps to 0.1 a and one e-fold more.
+
+The amplitude is the first Fourier mode over the period of the rows' surface radii (the largest
+radius in each row's slice of z, as `tools/axisymmetric.py roughness` reads them): at the start
+it is the outer row's radius times eps, (1 - dx / (2a)) eps a, where the volume per slice of
+`axisymmetric.py growth` reads the lattice's aliasing (4.5e-3 a at a/dx = 5 over 32 slices). The growth rate is the slope of its logarithm
+against time over the samples between --fit-from and --fit-to (1e-3 a and 3e-2 a by default:
+after the start from rest, whose decaying modes move the slope by up to 30% over the first two
+e-folds, and below the nonlinear range). The slope over each e-fold of the amplitude is printed
+too, so that the fit's range can be judged.
+
+Prints the table and a line
+  SUMMARY d0_over_dx=N a_over_dx=.. ka=.. eps=.. growth=.. weber=.. growth_over_weber=.. ...
+Exit status 1 with a message naming the file or key on bad input, or when the fit's range holds
+fewer than four samples.
+"""
+import argparse
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tomllib
+
+TOOLS = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(TOOLS)
+sys.path.insert(0, TOOLS)
+
+import axisymmetric  # noqa: E402  (rayleigh_omega2, weber_omega, snapshots, fluid)
+
+# the [domain] keys a column keeps from the jet: the pair, the continuity and the XSPH bound
+DOMAIN_KEYS = ("geometry", "axis_pair", "split_axis_rings", "renormalise_ring_continuity",
+               "bound_ring_xsph")
+# the [time] keys a column keeps from the jet (dt_max scaled by the spacing)
+TIME_KEYS = ("dt", "variable_dt", "cfl")
+BOX_RADII = 4.0          # the box reaches 4 a from the axis: the column's surface moves < 0.2 a
+SAMPLES_PER_EFOLD = 8    # outputs per e-fold of Weber's growth
+EXTRA_EFOLDS = 1.0       # the run goes on one e-fold past the amplitude 0.1 a
+
+
+class ColumnError(Exception):
+    pass
+
+
+def toml_value(v):
+    """A scalar or a list of them as TOML writes it."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        return repr(v)
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(v, list):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    raise ColumnError(f"cannot write {v!r} as a TOML value")
+
+
+def toml_table(name, table):
+    """[name] and its scalar keys (sub-tables and arrays of tables are left out)."""
+    lines = [f"[{name}]"]
+    lines += [f"{k} = {toml_value(v)}" for k, v in table.items()
+              if not isinstance(v, dict) and not (isinstance(v, list) and v and isinstance(v[0], dict))]
+    return "\n".join(lines) + "\n"
+
+
+def resolve(source, sets, sphjet, work):
+    """The jet case as sphjet reads it (every key written out, --set applied): `sphjet run
+    --max-steps 0` into work/jet, then its case.toml parsed. A run directory gives its case.toml."""
+    case = os.path.join(source, "case.toml") if os.path.isdir(source) else source
+    if not os.path.isfile(case):
+        raise ColumnError(f"{source}: no such case file or run directory with a case.toml")
+    out = os.path.join(work, "jet")
+    argv = [sphjet, "run", case, "--out", out, "--max-steps", "0", "-j", "1", "-q", "--force",
+            "--format", "hdf5"]
+    for s in sets:
+        argv += ["--set", s]
+    r = subprocess.run(argv, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise ColumnError(f"{case}: sphjet refused the case:\n{r.stderr.strip() or r.stdout.strip()}")
+    with open(os.path.join(out, "case.toml"), "rb") as f:
+        return tomllib.load(f)
+
+
+def need(jet, table, key, source):
+    try:
+        return jet[table][key]
+    except KeyError:
+        raise ColumnError(f"{source}: {table}.{key}: expected in a round jet's case, found none") from None
+
+
+def column_case(jet, source, d0_over_dx, ka, eps):
+    """-> (the column's case text, its parameters). jet: the resolved jet case (resolve)."""
+    if need(jet, "domain", "geometry", source) != "axisymmetric":
+        raise ColumnError(f"{source}: domain.geometry: expected \"axisymmetric\" (a round jet), "
+                          f"found {jet['domain']['geometry']!r}")
+    d0 = need(jet, "nozzle", "d0", source)
+    dx_jet = need(jet, "resolution", "dx", source)
+    h_over_dx = need(jet, "resolution", "h", source) / dx_jet
+    n = d0_over_dx if d0_over_dx is not None else d0 / dx_jet
+    a, dx = 0.5 * d0, d0 / n
+    wavelength = 2.0 * math.pi * a / ka
+    fl, st = jet["fluid"], jet["surface_tension"]
+    rho, sigma, nu = fl["rho0"], st["sigma"], fl["nu"]
+    if not sigma > 0:
+        raise ColumnError(f"{source}: surface_tension.sigma: expected > 0 (a capillary column), found {sigma}")
+    scale = math.sqrt(sigma / (rho * a ** 3))
+    oh = nu * math.sqrt(rho / (sigma * a))
+    weber = axisymmetric.weber_omega(ka, oh) * scale
+    if not weber > 0:
+        raise ColumnError(f"--ka {ka}: expected a capillary-unstable wave (0 < ka < 1)")
+    tmax = (math.log(0.1 / eps) + EXTRA_EFOLDS) / weber
+    domain = {k: jet["domain"][k] for k in DOMAIN_KEYS if k in jet["domain"]}
+    domain |= {"lx": BOX_RADII * a, "lz": wavelength, "periodic_z": True, "wall_left": False,
+               "wall_right": False, "wall_bottom": False, "wall_top": False}
+    time = {k: jet["time"][k] for k in TIME_KEYS if k in jet["time"]}
+    if "dt_max" in jet["time"]:
+        time["dt_max"] = jet["time"]["dt_max"] * dx / dx_jet
+    time |= {"tmax": tmax, "out": 1.0 / (SAMPLES_PER_EFOLD * weber)}
+    text = (f"# a periodic column with the numerics of {source} (tools/jet_column.py)\n"
+            "format_version = 1\n\n"
+            + toml_table("numerics", jet["numerics"]) + "\n"
+            + toml_table("fluid", fl)
+            + f"\n[[fluid.cylinder]]\nradius = {a!r}\neps = {eps!r}\nwavelength = {wavelength!r}\n\n"
+            + toml_table("surface_tension", st) + "\n"
+            + "[gravity]\ngx = 0.0\ngz = 0.0\n\n"
+            + toml_table("domain", domain) + "\n"
+            + toml_table("resolution", {"dx": dx, "dz": dx, "h": h_over_dx * dx}) + "\n"
+            + toml_table("time", time) + "\n"
+            + '[output]\nformat = "hdf5"\ncheckpoint_every_minutes = 0.0\n')
+    return text, {"a": a, "dx": dx, "n": n, "wavelength": wavelength, "weber": weber, "oh": oh}
+
+
+def column_amplitudes(run, a, dx, wavelength):
+    """-> (times, amplitude / a) of the column's wave: the first Fourier mode of the rows' surface
+    radii over the period (axisymmetric.row_radii, the largest radius in each row's slice), up
+    to the first snapshot where a slice is empty."""
+    import numpy as np
+    times, amps = [], []
+    for d in axisymmetric.snapshots(run):
+        rs = axisymmetric.row_radii(axisymmetric.fluid(d), wavelength, dx)
+        if rs is None:
+            break
+        times.append(d["time"])
+        amps.append(float(axisymmetric.mode_amplitudes(rs, a)[1]))
+    return np.array(times), np.array(amps)
+
+
+def growth_fit(t, amp, lo, hi):
+    """-> (slope of ln amp against t over lo <= amp <= hi, samples), the samples before the
+    amplitude first passes hi."""
+    import numpy as np
+    past = np.nonzero(amp > hi)[0]
+    end = past[0] if len(past) else len(amp)
+    sel = np.nonzero(amp[:end] >= lo)[0]
+    if len(sel) < 4:
+        return float("nan"), len(sel)
+    return float(np.polyfit(t[sel], np.log(amp[sel]), 1)[0]), len(sel)
+
+
+def efold_table(t, amp, weber):
+    """The slope over each e-fold of the amplitude (from its first sample), over Weber's rate."""
+    import numpy as np
+    rows, i = [], 0
+    while True:
+        j = np.nonzero(amp[i:] >= amp[i] * math.e)[0]
+        if not len(j) or amp[i] > 0.1:
+            break
+        j = i + j[0]
+        rate = math.log(amp[j] / amp[i]) / (t[j] - t[i])
+        rows.append(f"  {t[i] * 1e3:8.2f} {t[j] * 1e3:8.2f}   {amp[i]:9.3e}   {rate / weber:7.3f}")
+        i = j
+    return ["  t0 [ms]  t1 [ms]   A(t0) / a   growth / Weber"] + rows
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("source", help="a round jet's case file, or a run directory with a case.toml")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="override a key of the jet's case (sphjet run --set)")
+    ap.add_argument("--d0-over-dx", type=float, default=None, help="particles across d0 (default: the case's)")
+    ap.add_argument("--ka", type=float, default=0.7, help="the column's wave, k a (default 0.7)")
+    ap.add_argument("--eps", type=float, default=1e-5, help="its amplitude at the start / a (default 1e-5)")
+    ap.add_argument("--fit-from", type=float, default=1e-3, help="the fit's smallest amplitude / a")
+    ap.add_argument("--fit-to", type=float, default=3e-2, help="the fit's largest amplitude / a")
+    ap.add_argument("--out", default=None, help="run directory (default: a new one under /tmp, removed after)")
+    ap.add_argument("--force", action="store_true", help="write into a non-empty --out")
+    ap.add_argument("--threads", "-j", type=int, default=1)
+    ap.add_argument("--sphjet", default=os.path.join(REPO, "build", "cpp_driver", "sphjet"))
+    a = ap.parse_args(argv)
+    if not 0 < a.ka < 1:
+        ap.error(f"--ka {a.ka}: expected 0 < ka < 1 (a capillary-unstable wave)")
+    if not 0 < a.eps < a.fit_from < a.fit_to <= 0.1:
+        ap.error(f"--eps {a.eps:g} --fit-from {a.fit_from:g} --fit-to {a.fit_to:g}: expected "
+                 "0 < eps < fit-from < fit-to <= 0.1")
+    if a.d0_over_dx is not None and not a.d0_over_dx >= 4:
+        ap.error(f"--d0-over-dx {a.d0_over_dx}: expected >= 4 (2 rows across the radius)")
+    if not os.access(a.sphjet, os.X_OK):
+        ap.error(f"--sphjet {a.sphjet}: not an executable (build first: cmake --build build)")
+    import tempfile
+    work = a.out or tempfile.mkdtemp(prefix="jet_column_")
+    try:
+        if a.out and os.path.isdir(a.out) and os.listdir(a.out) and not a.force:
+            raise ColumnError(f"--out {a.out}: not empty (give --force to write into it)")
+        os.makedirs(work, exist_ok=True)
+        jet = resolve(a.source, a.set, a.sphjet, work)
+        text, p = column_case(jet, a.source, a.d0_over_dx, a.ka, a.eps)
+        case = os.path.join(work, "column.toml")
+        with open(case, "w") as f:
+            f.write(text)
+        run = os.path.join(work, "column")
+        r = subprocess.run([a.sphjet, "run", case, "--out", run, "-j", str(a.threads), "-q", "--force"],
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            raise ColumnError(f"{case}: the column's run failed:\n{r.stderr.strip() or r.stdout.strip()}")
+        t, amp = column_amplitudes(run, p["a"], p["dx"], p["wavelength"])
+        rate, m = growth_fit(t, amp, a.fit_from, a.fit_to)
+        print(f"periodic column of {a.source}: a = {p['a']:.6g} m, d0/dx = {p['n']:.4g}, ka = {a.ka:g}, "
+              f"Oh = {p['oh']:.4g}, Weber's rate {p['weber']:.5g} 1/s")
+        print("\n".join(efold_table(t, amp, p["weber"])))
+        if m < 4:
+            raise ColumnError(f"{m} sample(s) between {a.fit_from:g} a and {a.fit_to:g} a: too few to fit")
+        print(f"SUMMARY d0_over_dx={p['n']:.4g} a_over_dx={p['n'] / 2:.4g} ka={a.ka:g} eps={a.eps:g} "
+              f"growth={rate:.5g} weber={p['weber']:.5g} growth_over_weber={rate / p['weber']:.4f} "
+              f"fit_from={a.fit_from:g} fit_to={a.fit_to:g} samples={m}")
+        return 0
+    except ColumnError as e:
+        print(f"jet_column.py: {e}", file=sys.stderr)
+        return 1
+    finally:
+        if a.out is None:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
