@@ -461,9 +461,10 @@ def roughness(a):
     # the modes: above 10 times their first nonzero value (past the start's relaxation)
     start = lambda y: 10.0 * float(y[y > 0][0]) if (y > 0).any() else 1e-9
     mode1_rate, rest_rate = fit(mode1, start(mode1)), fit(rest, start(rest))
-    # mode 1 settled: between SETTLED_FROM and 1e-3 a. From a start moved by 1e-5 dx (5e-8 a at
-    # a/dx 10) its first e-folds grow at up to three times Weber's rate as the lattice relaxes,
-    # which the fit above includes; past 1e-4 a the rate per e-fold holds within 1%
+    # mode 1 settled: between SETTLED_FROM and 1e-3 a. From a start whose particles are moved by
+    # up to 1e-5 dx (mode 1 then 5e-8 a at a/dx 10) its first e-folds grow at up to three times
+    # Weber's rate as the lattice relaxes, which the fit above includes; past 1e-4 a the rate
+    # per e-fold holds within 1%
     mode1_settled = fit(mode1, SETTLED_FROM)
     # the rest and the interior while the n = 1 mode is linear (below 1e-3 a): past that its
     # own harmonics, which are physics, fill both

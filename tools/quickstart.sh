@@ -11,8 +11,9 @@
 # to runs/quickstart/.../mc_u1.2545/ (open sphjet.xmf in ParaView; jet.csv and drops.csv are
 # the breakup record). The paper's planar jets are cases/jet/ and tools/jet_study.py.
 # d0/dx 6 shows the method, not converged physics: a column at rest with three rings across its
-# radius does not grow a small wave (tools/jet_column.py; cases/round_jet/README.md, "The jets'
-# own capillary growth"), so the study's lengths are made at d0/dx 10 and checked at 20.
+# radius does not grow a small wave as the capillary instability does (tools/jet_column.py;
+# cases/round_jet/README.md, "The jets' own capillary growth"), so the study's lengths are made
+# at d0/dx 10 and checked at 20.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh
@@ -24,5 +25,6 @@ echo
     --out runs/quickstart/report
 echo
 echo "d0/dx 6 shows the method in a minute, not converged physics: at three rings across the"
-echo "radius a small wave on the column does not grow (tools/jet_column.py). The study's lengths"
-echo "are made at d0/dx 10 and checked at 20 (cases/round_jet/README.md)."
+echo "radius a small wave on the column does not grow as the capillary instability does"
+echo "(tools/jet_column.py). The study's lengths are made at d0/dx 10 and checked at 20"
+echo "(cases/round_jet/README.md)."
