@@ -4,10 +4,10 @@ growth along the jet, the breakup length and the drops. Run them, then tabulate 
 
 Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/forced_jet_study.py run [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--leapfrog] [--only RUN ...] [--threads 2]
+      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--leapfrog] [--xsph E] [--only RUN ...] [--threads 2]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/forced_jet_study.py report [--root runs/forced_jet] [--d0-over-dx 10]
-      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--leapfrog] [--out cases/round_jet/forced]
+      [--artificial-alpha 0 [--reconstruct]] [--c0 C] [--cfl K] [--leapfrog] [--xsph E] [--out cases/round_jet/forced]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/nN/NAME, one run for each
 speed of U_SPEEDS (Mansour & Chigier's 0.78 and 1.57 m/s, We_d = 10 and 41) and each target

@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--out cases/round_jet]
       [--set-name mc paper] [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:

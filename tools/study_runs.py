@@ -151,10 +151,11 @@ def add_run_arguments(p, set_names, repo):
 
 
 def add_numerics_arguments(p):
-    """--artificial-alpha A, --reconstruct, --c0 C, --cfl K and --leapfrog on the subparser p:
-    numerics of every run of a study that the case leaves at their defaults
+    """--artificial-alpha A, --reconstruct, --c0 C, --cfl K, --leapfrog and --xsph E on the
+    subparser p: numerics of every run of a study that the case leaves at their defaults
     (numerics.artificial_alpha, numerics.artificial_reconstruction, fluid.c0, time.cfl,
-    numerics.integrator; cases/CASE_FORMAT.md), in a study directory of its own (numerics_tag)."""
+    numerics.integrator, numerics.xsph_eps; cases/CASE_FORMAT.md), in a study directory of its
+    own (numerics_tag)."""
     p.add_argument("--artificial-alpha", type=float, default=0.0, metavar="A",
                    help="numerics.artificial_alpha = A in every run, on top of the laminar viscosity "
                         "(default 0: off; directory suffix _alphaA)")
@@ -170,11 +171,14 @@ def add_numerics_arguments(p):
     p.add_argument("--leapfrog", action="store_true",
                    help="numerics.integrator = \"leapfrog\" in every run: one evaluation of the rates "
                         "per step instead of the predictor-corrector's two (suffix _lf)")
+    p.add_argument("--xsph", type=float, default=None, metavar="E",
+                   help="numerics.xsph_eps = E in every run, 0 < E <= 1: the weight of the XSPH "
+                        "velocity correction (default: the case's, 0.5; suffix _xsphE)")
 
 
 def check_numerics(ap, args):
     """Refuses (ap.error) an alpha outside [0, 1], --reconstruct without an alpha, a sound speed
-    that is not positive and a Courant number outside (0, 1]."""
+    that is not positive, a Courant number outside (0, 1] and an XSPH weight outside (0, 1]."""
     if not 0 <= args.artificial_alpha <= 1:
         ap.error(f"--artificial-alpha {args.artificial_alpha}: expected in [0, 1]")
     if args.reconstruct and not args.artificial_alpha > 0:
@@ -183,6 +187,8 @@ def check_numerics(ap, args):
         ap.error(f"--c0 {args.c0}: expected a positive sound speed [m/s]")
     if args.cfl is not None and not 0 < args.cfl <= 1:
         ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
+    if args.xsph is not None and not 0 < args.xsph <= 1:
+        ap.error(f"--xsph {args.xsph}: expected an XSPH weight in (0, 1] (the case's 0.5 when not given)")
 
 
 # The shared numerics: (args attribute, case key, directory suffix, flag, the value a switch
@@ -194,7 +200,8 @@ NUMERICS = (("artificial_alpha", "numerics.artificial_alpha", "_alpha", "--artif
             ("reconstruct", "numerics.artificial_reconstruction", "_rec", "--reconstruct", "true"),
             ("c0", "fluid.c0", "_c0", "--c0", None),
             ("cfl", "time.cfl", "_cfl", "--cfl", None),
-            ("leapfrog", "numerics.integrator", "_lf", "--leapfrog", "leapfrog"))
+            ("leapfrog", "numerics.integrator", "_lf", "--leapfrog", "leapfrog"),
+            ("xsph", "numerics.xsph_eps", "_xsph", "--xsph", None))
 
 
 def given_numerics(args):
@@ -214,8 +221,8 @@ def numerics_sets(args):
 
 
 def numerics_tag(args):
-    """-> the study directory's suffix for args' numerics: _alphaA, _alphaA_rec, _c0C, _cflK, those
-    together or ''."""
+    """-> the study directory's suffix for args' numerics: _alphaA, _alphaA_rec, _c0C, _cflK, _lf,
+    _xsphE, those together or ''."""
     return "".join(suffix + v for _k, suffix, _f, v, _set in given_numerics(args))
 
 
