@@ -47,7 +47,7 @@ TOOLS = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(TOOLS)
 sys.path.insert(0, TOOLS)
 
-import axisymmetric  # noqa: E402  (rayleigh_omega2, weber_omega, snapshots, fluid)
+import axisymmetric  # noqa: E402  (weber_omega, snapshots, fluid, row_radii, mode_amplitudes)
 
 # the [domain] keys a column keeps from the jet: the pair, the continuity and the XSPH bound
 DOMAIN_KEYS = ("geometry", "axis_pair", "split_axis_rings", "renormalise_ring_continuity",
@@ -133,9 +133,9 @@ def column_case(jet, source, d0_over_dx, ka, eps, fit_to):
                           f"expected an even number (whole rings across the radius), found {n:.6g}")
     a, dx = 0.5 * d0, d0 / n
     wavelength = 2.0 * math.pi * a / ka
-    fl, st = jet["fluid"], jet["surface_tension"]
     rho, nu = need(jet, "fluid", "rho0", source), need(jet, "fluid", "nu", source)
     sigma = need(jet, "surface_tension", "sigma", source)
+    fl, st = jet["fluid"], jet["surface_tension"]
     if not sigma > 0:
         raise ColumnError(f"{source}: surface_tension.sigma: expected > 0 (a capillary column), found {sigma}")
     scale = math.sqrt(sigma / (rho * a ** 3))
@@ -202,7 +202,7 @@ def efold_table(t, amp, weber):
     rows, i = [], 0
     while True:
         j = np.nonzero(amp[i:] >= amp[i] * math.e)[0]
-        if not len(j) or amp[i] > 0.1:
+        if not len(j) or not 0 < amp[i] <= 0.1:
             break
         j = i + j[0]
         rate = math.log(amp[j] / amp[i]) / (t[j] - t[i])

@@ -25,7 +25,6 @@ usage: check_jet_column.py SPHJET SOURCE_DIR WORK_DIR
 """
 import contextlib
 import io
-import math
 import os
 import shutil
 import subprocess
