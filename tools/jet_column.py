@@ -135,7 +135,6 @@ def column_case(jet, source, d0_over_dx, ka, eps, fit_to):
     wavelength = 2.0 * math.pi * a / ka
     rho, nu = need(jet, "fluid", "rho0", source), need(jet, "fluid", "nu", source)
     sigma = need(jet, "surface_tension", "sigma", source)
-    fl, st = jet["fluid"], jet["surface_tension"]
     if not sigma > 0:
         raise ColumnError(f"{source}: surface_tension.sigma: expected > 0 (a capillary column), found {sigma}")
     scale = math.sqrt(sigma / (rho * a ** 3))
@@ -155,9 +154,9 @@ def column_case(jet, source, d0_over_dx, ka, eps, fit_to):
     text = (f"# a periodic column with the numerics of {source} (tools/jet_column.py)\n"
             "format_version = 1\n\n"
             + toml_table("numerics", jet["numerics"]) + "\n"
-            + toml_table("fluid", fl)
+            + toml_table("fluid", jet["fluid"])
             + f"\n[[fluid.cylinder]]\nradius = {a!r}\neps = {eps!r}\nwavelength = {wavelength!r}\n\n"
-            + toml_table("surface_tension", st) + "\n"
+            + toml_table("surface_tension", jet["surface_tension"]) + "\n"
             + "[gravity]\ngx = 0.0\ngz = 0.0\n\n"
             + toml_table("domain", domain) + "\n"
             + toml_table("resolution", {"dx": dx, "dz": dx, "h": h_over_dx * dx}

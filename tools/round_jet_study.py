@@ -1024,7 +1024,7 @@ def report(args):
     falling = falling_c if args.gravity else None
     if falling:
         header.insert(header.index("instability without gravity"),
-                      f"C = ln(a/delta0) falling, measured / SPH")
+                      "C = ln(a/delta0) falling, measured / SPH")
     rows, missing, notes = [], [], []
     pts_m, pts_s = [], []   # (x, L/d0, convectively unstable) of the measured jets and the runs
     for s, name, info, r in runs:

@@ -173,7 +173,7 @@ def add_numerics_arguments(p):
                         "per step instead of the predictor-corrector's two (suffix _lf)")
     p.add_argument("--xsph", type=float, default=None, metavar="E",
                    help="numerics.xsph_eps = E in every run, 0 < E <= 1: the weight of the XSPH "
-                        "velocity correction (default: the case's, 0.5; suffix _xsphE)")
+                        "velocity correction (default: the case's; suffix _xsphE)")
 
 
 def check_numerics(ap, args):
@@ -188,7 +188,7 @@ def check_numerics(ap, args):
     if args.cfl is not None and not 0 < args.cfl <= 1:
         ap.error(f"--cfl {args.cfl}: expected a Courant number in (0, 1]")
     if args.xsph is not None and not 0 < args.xsph <= 1:
-        ap.error(f"--xsph {args.xsph}: expected an XSPH weight in (0, 1] (the case's 0.5 when not given)")
+        ap.error(f"--xsph {args.xsph}: expected an XSPH weight in (0, 1]")
 
 
 # The shared numerics: (args attribute, case key, directory suffix, flag, the value a switch
