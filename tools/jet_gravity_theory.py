@@ -4,7 +4,7 @@ each measured breakup length of cases/round_jet/mansour_chigier_1994.csv asks fo
 without gravity along the jet, and the length a given ln(a/delta0) gives.
 
 Usage:
-  /usr/bin/python3 tools/jet_gravity_theory.py [--g 9.81] [--c C]
+  /usr/bin/python3 tools/jet_gravity_theory.py [--g 9.81] [--c C] [--relaxed] [--one-frequency]
 
 A jet leaving at U with radius a0, falling along its axis, moves at U(z) = sqrt(U^2 + 2 g z)
 with radius a(z) = a0 sqrt(U / U(z)) (mass flux kept, the pressure and the air left out).
@@ -15,7 +15,15 @@ omega_max Weber's fastest temporal rate (tools/axisymmetric.py, weber_omega) at 
 and Ohnesorge number. The jet breaks where N = ln(a/delta0) = C, so each measured length L gives
 C = N(L); without gravity N(L) = omega_max(a0) L / U. A uniform jet's temporal rate carried at U
 is Weber's law's picture (L/d0 = C sqrt(We_d)(1 + 3 Oh_d) up to the constant of omega_max).
-Absolute instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not
+That rate is an upper bound along a jet that speeds up: a disturbance keeps its frequency omega as
+it is carried down, so its local wavenumber is omega / U(z) and its ka = omega a(z) / U(z) falls
+as the jet stretches, away from the fastest one. --one-frequency takes the WKB picture of a jet
+stretched by gravity (Javadi, Eggers, Bonn, Habibi & Ribe 2013, PRL 110, 144501) instead:
+  N_omega(z) = int_0^z omega_W(omega a(s) / U(s), Oh(s)) / U(s) ds,
+omega_W Weber's temporal rate at that ka and radius, and N(z) = max over omega of N_omega(z), the
+frequency that has grown most by z (the exit's ka of each on a grid, ONE_KA0, the maximum
+refined through a parabola; the amplitude factor of the stretching itself is left out). Without
+gravity it is the fastest rate's N. Absolute instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not
 in this local picture; where the jet speeds up past it, the convective part is what this
 integrates. The table's "absolutely unstable to" is how far below the orifice the local Weber
 number rho U(z)^2 d(z) / sigma = We_d (U(z) / U)^(3/2) stays below 2 pi:
@@ -50,6 +58,13 @@ K_CL = 0.37        # Clanet & Lasheras's constant for water in air
 D_OUT_16G = 1.651e-3  # outer diameter of 16-gauge regular-wall hypodermic tubing [m] (bore 1.194 mm)
 GRID = 1200        # points along the jet, 0 .. 2 L_max: N by the trapezoid rule (1e-6 relative)
 L_MAX_D0 = 400.0   # the longest jet it integrates [d0]
+# --one-frequency: the frequencies it follows, by their ka at the exit, from ONE_KA0_LOW in steps
+# of ONE_KA0_STEP times to past ONE_KA0_PAST times the fastest ka where the jet is fastest (the end
+# of the grid), so that the wave that grows most at any z on it is inside the range. With the
+# parabola through the best three, N is within 1e-3 of a grid of steps 1.005 (0.3441 m/s, the
+# relaxed plug, falling: 7.6e-4 at most, where the best wave left the exit above ka 1 and
+# decayed first; tests/regression/round_jet/test_jet_gravity_theory.py).
+ONE_KA0_LOW, ONE_KA0_STEP, ONE_KA0_PAST = 0.3, 1.02, 1.5
 
 
 def omega_max(a, rho=RHO, sigma=SIGMA, mu=MU):
@@ -99,21 +114,52 @@ def critical_weber(d_in, d_out, g):
     return 4.0 * (d_in / d_out) / (x + math.sqrt(x * x - 1.0)) ** 2
 
 
+def cumulate(rates, dz):
+    """The trapezoid rule's running integral of rates on a grid of step dz (0 at the first)."""
+    n = [0.0]
+    for r0, r1 in zip(rates, rates[1:]):
+        n.append(n[-1] + 0.5 * (r0 + r1) * dz)
+    return n
+
+
+def parabola_max(f0, f1, f2):
+    """The largest value of the parabola through (-1, f0), (0, f1), (1, f2), f1 the largest of
+    the three."""
+    curv = f0 - 2.0 * f1 + f2
+    return f1 if curv >= 0.0 else f1 - (f2 - f0) ** 2 / (8.0 * curv)
+
+
 class Jet:
     """N(z) of one jet (speed u [m/s], radius a0 [m], gravity g [m/s^2] along it; water unless
-    rho, sigma and mu say otherwise, as omega_max) on a grid."""
+    rho, sigma and mu say otherwise, as omega_max) on a grid: the fastest local rate's, or with
+    one_frequency the frequency that has grown most's (the module's docstring)."""
 
-    def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU):
+    def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU, one_frequency=False):
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
-        self.n = [0.0]
-        prev = None
-        flat = omega_max(a0, rho, sigma, mu) / u if g == 0.0 else None   # one rate along a jet without gravity
+        speed = [math.sqrt(u * u + 2.0 * g * i * self.dz) for i in range(GRID)]
+        radius = [a0 * math.sqrt(u / uz) for uz in speed]
+        if not one_frequency:
+            flat = omega_max(a0, rho, sigma, mu) / u if g == 0.0 else None   # one rate along a jet without gravity
+            self.n = cumulate([flat if flat is not None else omega_max(a, rho, sigma, mu) / uz
+                               for uz, a in zip(speed, radius)], self.dz)
+            return
+        # a wave's local ka is its exit ka times (a / a0) (u / U) = (u / U)^(3/2); the fastest is below 0.7
+        top = ONE_KA0_PAST * 0.7 * (speed[-1] / u) ** 1.5
+        self.ka0 = [ONE_KA0_LOW * ONE_KA0_STEP ** i
+                    for i in range(int(math.log(top / ONE_KA0_LOW) / math.log(ONE_KA0_STEP)) + 2)]
+        each = []
+        for ka0 in self.ka0:
+            omega = ka0 * u / a0
+            each.append(cumulate([weber_omega(omega * a / uz, mu / math.sqrt(rho * sigma * a))
+                                  * math.sqrt(sigma / (rho * a ** 3)) / uz
+                                  for uz, a in zip(speed, radius)], self.dz))
+        self.n, self.best_ka0 = [], []   # best_ka0: the grid's frequency that has grown most (its exit ka)
         for i in range(GRID):
-            uz = math.sqrt(u * u + 2.0 * g * i * self.dz)
-            rate = flat if flat is not None else omega_max(a0 * math.sqrt(u / uz), rho, sigma, mu) / uz
-            if prev is not None:
-                self.n.append(self.n[-1] + 0.5 * (prev + rate) * self.dz)
-            prev = rate
+            col = [n[i] for n in each]
+            j = max(range(len(col)), key=col.__getitem__)
+            inner = 0 < j < len(col) - 1
+            self.best_ka0.append(self.ka0[j])
+            self.n.append(parabola_max(col[j - 1], col[j], col[j + 1]) if inner else col[j])
 
     def exponent(self, z):
         """N(z) [1], linear between grid points."""
@@ -146,7 +192,7 @@ def one_c_line(jets, band=0.2):
     return f"{lo:.2f} to {hi:.2f} (set by {u_lo:.4f} and {u_hi:.4f} m/s)"
 
 
-def table(g, c=None, d_out=D_OUT_16G, relaxed=False):
+def table(g, c=None, d_out=D_OUT_16G, relaxed=False, one_frequency=False):
     a0 = 0.5 * D0_MC
     head = ("| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity | "
             "absolutely unstable to [d0], falling |")
@@ -162,7 +208,8 @@ def table(g, c=None, d_out=D_OUT_16G, relaxed=False):
         if relaxed:
             _x, u_j, d_j = relaxed_exit(u, D0_MC)
             a_j = 0.5 * d_j
-        flat, falling = Jet(u_j, a_j, 0.0), Jet(u_j, a_j, g)
+        # without gravity one frequency's N is the fastest rate's (the module's docstring)
+        flat, falling = Jet(u_j, a_j, 0.0), Jet(u_j, a_j, g, one_frequency=one_frequency)
         flats.append((u, l_d0 * D0_MC, flat))
         fallings.append((u, l_d0 * D0_MC, falling))
         c0 = flat.exponent(l_d0 * D0_MC)
@@ -181,7 +228,8 @@ def table(g, c=None, d_out=D_OUT_16G, relaxed=False):
         return f"mean {m:.2f}, std {sd:.2f}, {min(cs):.2f}-{max(cs):.2f}"
 
     lines.append("")
-    lines.append(f"C = ln(a/delta0) the measured lengths ask for (g = {g:g} m/s^2 along the jet):")
+    picture = ("the frequency that has grown most" if one_frequency and g > 0 else "the fastest local rate")
+    lines.append(f"C = ln(a/delta0) the measured lengths ask for (g = {g:g} m/s^2 along the jet; N of {picture}):")
     lines.append(f"  without gravity: {spread(cs0)}")
     lines.append(f"  with gravity:    {spread(csg)}")
     lines.append("One C that puts every measured length within 20% (N(0.8 L) <= C <= N(1.2 L) at every speed):")
@@ -208,6 +256,9 @@ def main(argv=None):
                     help="each jet leaves as the flat plug its tube's parabolic profile relaxes to "
                          "(round_jet_study.py --relaxed-exit: speed and diameter), its growth and its "
                          "pocket of absolute instability from there; lengths still over the tube's d0")
+    ap.add_argument("--one-frequency", action="store_true",
+                    help="the falling jet's N is that of the frequency that has grown most, each carried "
+                         "down at its own frequency (WKB, the module's docstring), not the fastest local rate's")
     ap.add_argument("--d-out", type=float, default=D_OUT_16G,
                     help=f"the tube's outer diameter [m] for the dripping criterion (default {D_OUT_16G:g})")
     args = ap.parse_args(argv)
@@ -217,7 +268,7 @@ def main(argv=None):
         ap.error(f"--g {args.g}: expected >= 0 (along the jet)")
     if args.c is not None and not args.c > 0:
         ap.error(f"--c {args.c}: expected a positive number")
-    print(table(args.g, args.c, args.d_out, args.relaxed))
+    print(table(args.g, args.c, args.d_out, args.relaxed, args.one_frequency))
     return 0
 
 

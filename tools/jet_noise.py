@@ -150,15 +150,16 @@ def fit_growth(env):
     return k, ln_d, pts[0][0], pts[-1][0]
 
 
-def falling_growth(env, s0, s1, c):
+def falling_growth(env, s0, s1, c, one_frequency=False):
     """The envelope's growth over [s0, s1] d0 over Weber's growth integrated along a jet that
     gravity (c["g_along"] > 0) speeds up and thins (tools/jet_gravity_theory.py's N(z), at the
-    case's u0, radius and fluid): the slope of the straight line through ln A against N over the
+    case's u0, radius and fluid; the fastest local rate's, or with one_frequency the frequency
+    that has grown most's): the slope of the straight line through ln A against N over the
     stretch's slices, and over each of its four quarters -> (slope, [four slopes]), or None with
     fewer than nine slices in it (three a quarter, the quarters sharing their ends)."""
     from jet_gravity_theory import Jet   # here: it imports round_jet_study, which imports this module
     d0 = c["d0"]
-    jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"])
+    jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"], one_frequency)
     pts = [(jet.exponent(s * d0), math.log(A)) for s, A, _ in env if s0 <= s <= s1 and A > 0]
     if len(pts) < 9:
         return None
@@ -406,6 +407,11 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
                   f"{falling[0]:.3f} over s = {s0:.2f}-{s1:.2f} d0; by quarters of it "
                   + ", ".join(f"{q:.3f}" for q in falling[1]))
             summary["growth_over_falling_theory"] = falling[0]
+            one = falling_growth(env, s0, s1, c, one_frequency=True)
+            print(f"the same over the growth of the frequency that has grown most along it (each carried "
+                  f"down at its own frequency; tools/jet_gravity_theory.py --one-frequency): {one[0]:.3f}; "
+                  "by quarters " + ", ".join(f"{q:.3f}" for q in one[1]))
+            summary["growth_over_one_frequency_theory"] = one[0]
     else:
         print("growth fit: no growing stretch found (envelope too short or flat)")
     if c["round"] and sig > 0:

@@ -32,6 +32,16 @@
 - table(relaxed=True) (--relaxed): the 0.3441 m/s row must carry the relaxed plug's numbers,
   the falling C its Jet's N at the measured length and the pocket its unstable_reach (16.2 d0,
   against the tube's plug's 18.8), to the digits printed; its one-C line must read "none".
+- one_frequency (--one-frequency: N of the frequency that has grown most, each carried down at its
+  own frequency). Without gravity every wave keeps its ka, so it must be the fastest rate's N,
+  within 1e-5 relative along the whole grid (the parabola through a grid of 2% steps; measured
+  6.8e-6). With gravity (0.3441 and 1.5699 m/s, the relaxed plugs) a wave's ka drifts off the
+  fastest, so it must lie at or below the fastest rate's N at every grid point, and by the
+  measured length below it by more than 1% (by 21% and 1.5%: the check only that the drift is
+  there, not its size). Its value at the measured length must be the best grid frequency's N
+  from an independent Simpson quadrature of that frequency's rate (4000 intervals) or up to 1e-3
+  above it (the parabola's step between grid frequencies), and a grid of steps 1.005 must give
+  it within 1e-3 (the module's ONE_KA0 comment).
 """
 import math
 import os
@@ -123,6 +133,45 @@ check(cells[4] == f"{want_c:.2f}" and cells[5] == f"{want_pocket:.1f}",
       f"--relaxed 0.3441 m/s: falling C {cells[4]} (relaxed plug {want_c:.2f}), pocket {cells[5]} d0 "
       f"(relaxed plug {want_pocket:.1f}, the tube's plug {jgt.unstable_reach(0.3441, jgt.D0_MC, 9.81) / jgt.D0_MC:.1f})")
 check("  with gravity:    none" in text, "--relaxed: no one C with gravity")
+
+flat_one, flat_max = jgt.Jet(0.7814, a0, 0.0, one_frequency=True), jgt.Jet(0.7814, a0, 0.0)
+worst = max(abs(x / y - 1.0) for x, y in zip(flat_one.n[1:], flat_max.n[1:]))
+check(worst < 1e-5, f"one frequency without gravity: the fastest rate's N to {worst:.2g} relative")
+
+
+def one_wave(u, a, g, ka0, z, intervals=4000):
+    """N at z of the wave that leaves a plug of speed u and radius a at ka0: Simpson's rule."""
+    omega = ka0 * u / a
+    h = z / intervals
+
+    def rate(s):
+        uz = math.sqrt(u * u + 2.0 * g * s)
+        r = a * math.sqrt(u / uz)
+        oh = jgt.MU / math.sqrt(jgt.RHO * jgt.SIGMA * r)
+        return jgt.weber_omega(omega * r / uz, oh) * math.sqrt(jgt.SIGMA / (jgt.RHO * r ** 3)) / uz
+    return h / 3.0 * sum((1 if i in (0, intervals) else 4 if i % 2 else 2) * rate(i * h)
+                         for i in range(intervals + 1))
+
+
+for u, l_d0 in ((0.3441, 31.85), (1.5699, 94.96)):
+    _x, u_r, d_r = jgt.relaxed_exit(u, jgt.D0_MC)
+    one, fastest = jgt.Jet(u_r, 0.5 * d_r, 9.81, one_frequency=True), jgt.Jet(u_r, 0.5 * d_r, 9.81)
+    z = l_d0 * jgt.D0_MC
+    i = round(z / one.dz)
+    z = i * one.dz   # on the grid, where N is the parabola's and best_ka0 its frequency
+    check(all(x <= y * (1 + 1e-9) for x, y in zip(one.n, fastest.n)) and one.n[i] < 0.99 * fastest.n[i],
+          f"{u} m/s falling: one frequency's N at or below the fastest rate's everywhere; at the measured "
+          f"length {one.n[i]:.3f} against {fastest.n[i]:.3f}")
+    single = one_wave(u_r, 0.5 * d_r, 9.81, one.best_ka0[i], z)
+    check(single <= one.n[i] <= single * (1 + 1e-3),
+          f"{u} m/s falling: N {one.n[i]:.5f} at or up to 1e-3 above its best grid wave's (exit ka "
+          f"{one.best_ka0[i]:.3f}) by Simpson's rule, {single:.5f}")
+    step = jgt.ONE_KA0_STEP
+    jgt.ONE_KA0_STEP = 1.005
+    fine = jgt.Jet(u_r, 0.5 * d_r, 9.81, one_frequency=True)
+    jgt.ONE_KA0_STEP = step
+    worst = max(abs(x / y - 1.0) for x, y in zip(one.n[1:], fine.n[1:]))
+    check(worst < 1e-3, f"{u} m/s falling: a grid of steps 1.005 gives N within {worst:.2g} relative")
 
 if failures:
     print(f"{len(failures)} check(s) failed")

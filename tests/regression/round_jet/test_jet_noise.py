@@ -46,7 +46,8 @@ must read 0 d0; about the rows' means the slices must print 0 up to 8 d0 and 0.5
 A run falling at 300 m/s^2 whose envelope grows as Weber's growth integrated along the falling
 jet (tools/jet_gravity_theory.py's N) must read 1 within 1% over the fit's stretch and each of its
 quarters, with water's surface tension and with half of it, and a run with no [gravity] table at
-9.81 m/s^2; with gz = 0 no such line; the constant growth above must read above 2
+9.81 m/s^2; one whose envelope grows as the one-frequency N (--one-frequency) must read 1 within
+1% against that; with gz = 0 no such line; the constant growth above must read above 2
 (check_falling).
 
 With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
@@ -269,7 +270,9 @@ def check_falling():
     1%, the tolerance of k_s above for the same sampling (N grows by 2.7 over the stretch). The
     same with the surface tension halved (N built with it: a tool that took water's would read
     its rates sqrt(2) apart), and a run with no [gravity] table, which falls at CASE_FORMAT's
-    9.81 m/s^2 (N built at 9.81). The same envelope read with gz = 0 must give its growth fit and
+    9.81 m/s^2 (N built at 9.81). An envelope built from the one-frequency N (the frequency that
+    has grown most) must read 1 within 1% against it, as its own line. The same envelope read
+    with gz = 0 must give its growth fit and
     no falling line; the constant growth of the run above (k_s = 0.8 per d0, 2.8-3.7 times the
     falling rate) must read above 2. A list of failures."""
     sys.path.insert(0, os.path.join(REPO, "tools"))
@@ -278,13 +281,17 @@ def check_falling():
     jet = Jet(U0, A, g, RHO, SIGMA, MU)
     half = Jet(U0, A, g, RHO, 0.5 * SIGMA, MU)
     default = Jet(U0, A, 9.81, RHO, SIGMA, MU)
-    cases = (("falling", -g, lambda s: jet.exponent(s * D0), SIGMA, 1.0),
-             ("half the surface tension", -g, lambda s: half.exponent(s * D0), 0.5 * SIGMA, 1.0),
-             ("no [gravity] table", None, lambda s: default.exponent(s * D0), SIGMA, 1.0),
-             ("gz = 0", 0.0, lambda s: jet.exponent(s * D0), SIGMA, None),
-             ("constant growth", -g, None, SIGMA, "above 2"))
+    one = Jet(U0, A, g, RHO, SIGMA, MU, one_frequency=True)
+    fastest = ("growth_over_falling_theory", r"^growth along the falling jet .*?: ([0-9.]+) over .*by quarters of it (.*)$")
+    single = ("growth_over_one_frequency_theory", r"^the same over the growth of the frequency .*?: ([0-9.]+); by quarters (.*)$")
+    cases = (("falling", -g, lambda s: jet.exponent(s * D0), SIGMA, 1.0, fastest),
+             ("half the surface tension", -g, lambda s: half.exponent(s * D0), 0.5 * SIGMA, 1.0, fastest),
+             ("no [gravity] table", None, lambda s: default.exponent(s * D0), SIGMA, 1.0, fastest),
+             ("one frequency", -g, lambda s: one.exponent(s * D0), SIGMA, 1.0, single),
+             ("gz = 0", 0.0, lambda s: jet.exponent(s * D0), SIGMA, None, fastest),
+             ("constant growth", -g, None, SIGMA, "above 2", fastest))
     failures = []
-    for name, gz, growth, sigma, want in cases:
+    for name, gz, growth, sigma, want, (key, line) in cases:
         with tempfile.TemporaryDirectory() as d:
             write_run(d, gz, growth, sigma)
             out = subprocess.run([PY, TOOL, d, "--from", "0"], capture_output=True, text=True)
@@ -292,9 +299,8 @@ def check_falling():
             if out.returncode != 0 or "k_s_per_d0" not in val:
                 failures.append(f"{name}: jet_noise.py exited {out.returncode}, growth fit {val.get('k_s_per_d0')}")
                 continue
-            got = val.get("growth_over_falling_theory")
-            m = re.search(r"^growth along the falling jet .*?: ([0-9.]+) over .*by quarters of it (.*)$",
-                          out.stdout, re.M)
+            got = val.get(key)
+            m = re.search(line, out.stdout, re.M)
             if want is None:
                 if got is not None or m:
                     failures.append(f"{name}: growth over the falling theory printed ({got})")
