@@ -25,7 +25,9 @@ over the same times while one of them goes on.
   gravity speeds up and thins (tools/jet_gravity_theory.py's N(z), at the case's u0, radius and
   fluid): the slope of the straight line through ln A(s) against N(s) over the stretch's
   slices, and over each of its four quarters; 1 where the jet grows as the falling theory
-  says, everywhere along it.
+  says, everywhere along it. The same against the N of the frequency that has grown most
+  (--one-frequency there: each wave carried down at its own frequency), below the fastest local
+  rate's wherever the jet speeds up.
 - spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
   at least 4 d0 long), and its peak ka.
 - noise along the jet (from the snapshots snap_*.h5 at T <= t <= T1, where the run wrote them): the
