@@ -107,7 +107,7 @@ def main():
             print(f"best shift for {l}: runs read at T {sh:+.2f}: largest |deviation| {100 * w:.1f}%")
 
     if args.table:
-        print(f"| series | T | Z exp. | " + " | ".join(f"Z {l} | dev." for l, _ in runs) + " |")
+        print("| series | T | Z exp. | " + " | ".join(f"Z {l} | dev." for l, _ in runs) + " |")
         print("|---|---|---|" + "---|---|" * len(runs))
         worst = {l: 0.0 for l, _ in runs}
         for s, pts in table_data.items():

@@ -81,10 +81,9 @@ class Run:
         elif snaps:
             self.kind = "hdf5"
             try:
-                import h5py  # noqa: F401
+                import h5py
             except ImportError:
                 raise RunError(f"{path}: HDF5 run but h5py is missing (apt-get install -y python3-h5py)")
-            import h5py
             for k, n in snaps:
                 with h5py.File(os.path.join(path, n), "r") as f:
                     self.frames.append((k, float(f.attrs["time"]), os.path.join(path, n)))
