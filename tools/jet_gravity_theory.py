@@ -21,10 +21,11 @@ as the jet stretches, away from the fastest one. --one-frequency takes the WKB p
 stretched by gravity (Javadi, Eggers, Bonn, Habibi & Ribe 2013, PRL 110, 144501) instead:
   N_omega(z) = int_0^z omega_W(omega a(s) / U(s), Oh(s)) / U(s) ds,
 omega_W Weber's temporal rate at that ka and radius, and N(z) = max over omega of N_omega(z), the
-frequency that has grown most by z (the exit's ka of each on a grid, ONE_KA0, the maximum
-refined through a parabola; the amplitude factor of the stretching itself is left out). Without
-gravity it is the fastest rate's N. Absolute instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not
-in this local picture; where the jet speeds up past it, the convective part is what this
+frequency that has grown most by z (the frequencies on a geometric grid of their exit ka,
+ONE_KA0_LOW and its neighbours, the maximum refined through a parabola; the amplitude factor of
+the stretching itself is left out). Without gravity it is the fastest rate's N. Absolute
+instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not in
+this local picture; where the jet speeds up past it, the convective part is what this
 integrates. The table's "absolutely unstable to" is how far below the orifice the local Weber
 number rho U(z)^2 d(z) / sigma = We_d (U(z) / U)^(3/2) stays below 2 pi:
   z_a = U^2 [(2 pi / We_d)^(4/3) - 1] / (2 g)
