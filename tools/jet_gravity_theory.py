@@ -22,7 +22,7 @@ stretched by gravity (Javadi, Eggers, Bonn, Habibi & Ribe 2013, PRL 110, 144501)
   N_omega(z) = int_0^z omega_W(omega a(s) / U(s), Oh(s)) / U(s) ds,
 omega_W Weber's temporal rate at that ka and radius, and N(z) = max over omega of N_omega(z), the
 frequency that has grown most by z (the frequencies on a geometric grid of their exit ka,
-ONE_KA0_LOW and its neighbours, the maximum refined through a parabola; the amplitude factor of
+ONE_KA0_LOW, ONE_KA0_STEP and ONE_KA0_PAST, the maximum refined through a parabola; the amplitude factor of
 the stretching itself is left out). Without gravity it is the fastest rate's N. Absolute
 instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not in
 this local picture; where the jet speeds up past it, the convective part is what this
