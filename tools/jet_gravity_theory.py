@@ -148,12 +148,14 @@ class Jet:
         top = ONE_KA0_PAST * 0.7 * (speed[-1] / u) ** 1.5
         self.ka0 = [ONE_KA0_LOW * ONE_KA0_STEP ** i
                     for i in range(int(math.log(top / ONE_KA0_LOW) / math.log(ONE_KA0_STEP)) + 2)]
+        # each point's Ohnesorge number and capillary rate scale, the same for every frequency
+        local = [(uz, a, mu / math.sqrt(rho * sigma * a), math.sqrt(sigma / (rho * a ** 3)))
+                 for uz, a in zip(speed, radius)]
         each = []
         for ka0 in self.ka0:
             omega = ka0 * u / a0
-            each.append(cumulate([weber_omega(omega * a / uz, mu / math.sqrt(rho * sigma * a))
-                                  * math.sqrt(sigma / (rho * a ** 3)) / uz
-                                  for uz, a in zip(speed, radius)], self.dz))
+            each.append(cumulate([weber_omega(omega * a / uz, oh) * scale / uz for uz, a, oh, scale in local],
+                                 self.dz))
         self.n, self.best_ka0 = [], []   # best_ka0: the grid's frequency that has grown most (its exit ka)
         for i in range(GRID):
             col = [n[i] for n in each]
