@@ -136,6 +136,7 @@ class Jet:
     one_frequency the frequency that has grown most's (the module's docstring)."""
 
     def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU, one_frequency=False):
+        self.u, self.a0, self.g = u, a0, g
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
         speed = [math.sqrt(u * u + 2.0 * g * i * self.dz) for i in range(GRID)]
         radius = [a0 * math.sqrt(u / uz) for uz in speed]
@@ -156,13 +157,26 @@ class Jet:
             omega = ka0 * u / a0
             each.append(cumulate([weber_omega(omega * a / uz, oh) * scale / uz for uz, a, oh, scale in local],
                                  self.dz))
-        self.n, self.best_ka0 = [], []   # best_ka0: the grid's frequency that has grown most (its exit ka)
+        # best_ka0: the grid's frequency that has grown most (its exit ka); at z = 0, where every N is 0,
+        # it is the grid's first, and means nothing
+        self.n, self.best_ka0 = [], []
         for i in range(GRID):
             col = [n[i] for n in each]
             j = max(range(len(col)), key=col.__getitem__)
             inner = 0 < j < len(col) - 1
             self.best_ka0.append(self.ka0[j])
             self.n.append(parabola_max(col[j - 1], col[j], col[j + 1]) if inner else col[j])
+
+    def local(self, z):
+        """The jet's speed [m/s] and radius [m] at z."""
+        uz = math.sqrt(self.u * self.u + 2.0 * self.g * z)
+        return uz, self.a0 * math.sqrt(self.u / uz)
+
+    def best_frequency(self, z):
+        """The angular frequency omega [1/s] of the grid's frequency that has grown most by z, at the
+        grid point nearest z past the orifice (one_frequency only)."""
+        i = min(max(int(round(z / self.dz)), 1), GRID - 1)
+        return self.best_ka0[i] * self.u / self.a0
 
     def exponent(self, z):
         """N(z) [1], linear between grid points."""

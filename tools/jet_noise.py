@@ -60,7 +60,12 @@ over the same times while one of them goes on.
   the same against the fluid (minus u0). A wave the jet carries (Rayleigh-Plateau's) moves at
   u0; a capillary wave (ka > 1) runs against the fluid at its phase speed, printed beside it with
   its group velocity from Rayleigh's inviscid dispersion relation (a group velocity above u0
-  carries a disturbance up the jet).
+  carries a disturbance up the jet). On a falling round jet the speed against the fluid is taken at
+  the stretch's middle, where the jet is faster and thinner (the speed U(z) and radius a(z) of
+  tools/jet_gravity_theory.py), and the line adds the wave's local ka there (ka a(z)/a), and the
+  frequency that has grown most by the jet's mean length in the one-frequency picture
+  (jet_gravity_theory --one-frequency) with its local ka there: a wave carried down at its own
+  frequency has its ka fall as (u0/U(z))^(3/2), below Weber's fastest, which does not.
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
 planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
 """
@@ -438,9 +443,26 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
         else:
             ka, om, c_d0, n = got
             c_lab = c_d0 * d0
+            falls = c["round"] and sig > 0 and c["g_along"] > 0
+            if falls:   # the stretch's middle, where a falling jet is faster and thinner than at the orifice
+                from jet_gravity_theory import Jet
+                one = Jet(u0, a, c["g_along"], c["rho"], sig, c["nu"] * c["rho"], one_frequency=True)
+                z_mid = 0.5 * (wave[0] + wave[1]) * d0
+                u_mid, a_mid = one.local(z_mid)
+            else:
+                u_mid, a_mid = u0, a
             line = (f"dominant wave over s = {wave[0]:g}-{wave[1]:g} d0 ({n} samples): ka = {ka:.3g}, "
                     f"omega = {om:.4g} 1/s, crests move at {c_lab:+.3g} m/s in the lab (down the jet > 0), "
-                    f"{c_lab - u0:+.3g} m/s against the fluid")
+                    f"{c_lab - u_mid:+.3g} m/s against the fluid")
+            if falls and lengths:
+                om_l = one.best_frequency(l_mean * d0)
+                line += (f"; at the stretch's middle the falling jet moves at {u_mid:.4g} m/s with radius "
+                         f"{a_mid / a:.4f} a, so the wave's local ka = {ka * a_mid / a:.3g}; the frequency that has "
+                         f"grown most by the jet's length {l_mean:.1f} d0 (tools/jet_gravity_theory.py "
+                         f"--one-frequency) is omega = {om_l:.4g} 1/s, local ka {om_l * a_mid / u_mid:.3g} there; "
+                         f"Weber's fastest there is ka = {weber_max(c['nu'] * math.sqrt(c['rho'] / (sig * a_mid)))[1]:.3f}")
+                summary.update({"wave_local_ka": ka * a_mid / a, "wave_one_frequency_omega": om_l,
+                                "wave_one_frequency_local_ka": om_l * a_mid / u_mid})
             if ka > 1.01 and sig > 0:   # the stable branch, clear of ka = 1 where omega -> 0
                 def om_r(x):
                     return math.sqrt(-rayleigh_omega2(x)) / t_cap

@@ -42,7 +42,9 @@
   from an independent Simpson quadrature of that frequency's rate (4000 intervals) or up to 1e-3
   above it (the parabola's step between grid frequencies; the lower end holds while that step
   exceeds the tool's trapezoid error, by 6.3e-4 and 1.4e-4 relative as measured), and a grid of
-  steps 1.005 must give it within 1e-3 (the module's ONE_KA0_* comment).
+  steps 1.005 must give it within 1e-3 (the module's ONE_KA0_* comment). best_frequency() there
+  must be that grid wave's omega, and the waves two grid steps either side of it (exit ka 4% apart)
+  must reach a smaller N by the same quadrature (1000 intervals): it is the one that has grown most.
 """
 import math
 import os
@@ -167,6 +169,11 @@ for u, l_d0 in ((0.3441, 31.85), (1.5699, 94.96)):
     check(single <= one.n[i] <= single * (1 + 1e-3),
           f"{u} m/s falling: N {one.n[i]:.5f} at or up to 1e-3 above its best grid wave's (exit ka "
           f"{one.best_ka0[i]:.3f}) by Simpson's rule, {single:.5f}")
+    omega = one.best_frequency(z)
+    beside = [one_wave(u_r, 0.5 * d_r, 9.81, one.best_ka0[i] * f, z, 1000) for f in (1.02 ** -2, 1.02 ** 2)]
+    check(omega == one.best_ka0[i] * u_r / (0.5 * d_r) and max(beside) < single,
+          f"{u} m/s falling: best_frequency {omega:.1f} 1/s is the best grid wave's, and waves two grid steps "
+          f"either side grow less by Simpson's rule ({beside[0]:.5f}, {beside[1]:.5f} < {single:.5f})")
     step = jgt.ONE_KA0_STEP
     jgt.ONE_KA0_STEP = 1.005
     fine = jgt.Jet(u_r, 0.5 * d_r, 9.81, one_frequency=True)

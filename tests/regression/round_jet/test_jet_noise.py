@@ -25,7 +25,9 @@ order beyond: the axis order must print 1, 0.5 and 1 there (the counts are exact
 
 With `--wave 0.5 8` the dominant wave must be the built one: ka within one step of the k grid
 (0.038 over that stretch) of 0.7, and its crests' speed omega / k within 3% of the built 5.36
-m/s (omega falls on its grid; half a k step is 2.7% of k).
+m/s (omega falls on its grid; half a k step is 2.7% of k); with gz = 0 no falling jet's readings.
+The same falling at 300 m/s^2: the local ka, the speed against the fluid at the stretch's middle,
+and the one-frequency picture's wave there (check_wave_falling).
 
 The start-up front (jet_noise.startup_front) on a surface quiet to 1e-4 a up to a front at s_f
 = 1.52 d0 + 300 d0/s x t (never on a slice centre) and 1e-2 a beyond it, 60 samples over 0.03 s
@@ -316,6 +318,42 @@ def check_falling():
     return failures
 
 
+def check_wave_falling():
+    """--wave 0.5 8 on the built wave in a run falling at 300 m/s^2: at the stretch's middle, s =
+    4.25 d0, the jet moves at U(z) = sqrt(u0^2 + 2 g z) with radius a(z) = a sqrt(u0 / U(z))
+    (written out here, not taken from the tool). The wave's local ka must be the built ka = 0.7
+    times a(z)/a within one k step times the same (0.038 a(z)/a); its speed against the fluid the
+    printed lab speed minus U(z) within 0.01 m/s (each printed to 3 digits); the one-frequency
+    picture's wave at the run's length (12 d0) must be Jet.best_frequency there (checked against
+    an independent quadrature in test_jet_gravity_theory.py), and its local ka omega a(z) / U(z),
+    both to the SUMMARY's 6 digits (1e-5 relative). A list of failures."""
+    sys.path.insert(0, os.path.join(REPO, "tools"))
+    from jet_gravity_theory import Jet
+    g = 300.0
+    failures = []
+    with tempfile.TemporaryDirectory() as d:
+        write_run(d, -g)
+        out = subprocess.run([PY, TOOL, d, "--from", "0", "--wave", "0.5", "8"], capture_output=True, text=True)
+    val = summary(out.stdout) or {}
+    z = 4.25 * D0
+    u_z = math.sqrt(U0 * U0 + 2 * g * z)
+    shrink = math.sqrt(U0 / u_z)
+    if not abs(val.get("wave_local_ka", 0) - KA * shrink) < 0.04 * shrink:
+        failures.append(f"falling: local ka {val.get('wave_local_ka')}, built {KA * shrink:.4f} (one k step)")
+    m = re.search(r"crests move at ([-+0-9.e]+) m/s in the lab \(down the jet > 0\), ([-+0-9.e]+) m/s against",
+                  out.stdout)
+    if not m or not abs(float(m.group(2)) - (float(m.group(1)) - u_z)) < 0.01:
+        failures.append(f"falling: speed against the fluid {m.groups() if m else None}, "
+                        f"built the lab's minus U(z) = {u_z:.4g} m/s")
+    omega = Jet(U0, A, g, RHO, SIGMA, MU, one_frequency=True).best_frequency(12 * D0)
+    ka_there = omega * A * shrink / u_z
+    if not (abs(val.get("wave_one_frequency_omega", 0) / omega - 1) < 1e-5
+            and abs(val.get("wave_one_frequency_local_ka", 0) / ka_there - 1) < 1e-5):
+        failures.append(f"falling: one-frequency wave {val.get('wave_one_frequency_omega')} 1/s, local ka "
+                        f"{val.get('wave_one_frequency_local_ka')}; built {omega:.6g}, {ka_there:.6g}")
+    return failures
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -371,6 +409,8 @@ def main():
             failures.append(f"dominant wave at ka {val.get('wave_ka')}, built {KA} (one k step, 0.038)")
         if not abs(val.get("wave_speed", 0) / c_built - 1) < 0.03:
             failures.append(f"dominant wave's crests at {val.get('wave_speed')} m/s, built {c_built:.4g} (3%)")
+        if "wave_local_ka" in val or "wave_one_frequency_omega" in val:
+            failures.append("gz = 0: the falling jet's wave readings printed")
         if val.get("axis_order_min") != 0.5:
             failures.append(f"axis_order_min {val.get('axis_order_min')}, built 0.5")
         m = re.search(r"^pressure std .*?: (.*)$", out.stdout, re.M)
@@ -384,6 +424,7 @@ def main():
     failures += check_rows()
     failures += check_rows_noise()
     failures += check_falling()
+    failures += check_wave_falling()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
