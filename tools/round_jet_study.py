@@ -60,7 +60,9 @@ points down) with the falling jets' numerics: the continuity renormalised along 
 (nozzle.release = "crossing"), as "A plug that lets go at the orifice" measured them (suffix _g;
 needs a rings --axis-pair). Its report gives, beside C = L/(d0 x), the C = ln(a/delta0) that
 Weber's growth along a falling jet reaches at the measured and at the run's length
-(tools/jet_gravity_theory.py): 17.0-19.6 for the measured jets up to 1.28 m/s.
+(tools/jet_gravity_theory.py): 17.0-19.6 for the measured jets up to 1.28 m/s. Beside it, the same
+followed at one frequency (jet_gravity_theory's --one-frequency: each wave carried down at its
+own frequency; lower wherever the jet speeds up), 2-4 s more a run.
 --fixed-step F gives every run a fixed step of F times the CFL step of its fluid at rest,
 time.dt = F cfl h / c0 with time.variable_dt = false (suffix _fixF; 0 < F < 1): the variable
 step changes every step with the pinch-offs far down the jet, and that jitter seeds the jet
@@ -388,18 +390,20 @@ def measured_c():
 
 
 @functools.lru_cache(maxsize=None)
-def falling_jet(u, d0):
+def falling_jet(u, d0, one_frequency=False):
     """Weber's growth along a jet of speed u and diameter d0 falling at G_FALL
-    (tools/jet_gravity_theory.py's Jet, about half a second to build: once per run)."""
+    (tools/jet_gravity_theory.py's Jet: the fastest local rate's, about half a second to build, or
+    with one_frequency the frequency that has grown most's, 2-4 s; once per run)."""
     import jet_gravity_theory   # it imports this module: here, not at the top
-    return jet_gravity_theory.Jet(u, 0.5 * d0, G_FALL)
+    return jet_gravity_theory.Jet(u, 0.5 * d0, G_FALL, one_frequency=one_frequency)
 
 
-def falling_c(info, l_d0):
-    """--gravity: ln(a/delta0) that Weber's growth along the falling jet reaches at the length
-    l_d0 [d0] of a run of the plan (info: U, d0); None for no length."""
+def falling_c(info, l_d0, one_frequency=False):
+    """--gravity: ln(a/delta0) that Weber's growth along the falling jet (followed at one frequency
+    with one_frequency) reaches at the length l_d0 [d0] of a run of the plan (info: U, d0); None
+    for no length."""
     u, d = info.get("plug", (info["U"], info["d0"]))   # as_tube's info: the jet leaves at the plug's
-    return None if l_d0 is None else falling_jet(u, d).exponent(l_d0 * info["d0"])
+    return None if l_d0 is None else falling_jet(u, d, one_frequency).exponent(l_d0 * info["d0"])
 
 
 def box_below(l_ref, d0):
@@ -1023,8 +1027,8 @@ def report(args):
         header[at:at] = ["window to t [s]", "orifice quiet from t [s]"]
     falling = falling_c if args.gravity else None
     if falling:
-        header.insert(header.index("instability without gravity"),
-                      "C = ln(a/delta0) falling, measured / SPH")
+        header[header.index("instability without gravity"):header.index("instability without gravity")] = [
+            "C = ln(a/delta0) falling, measured / SPH", "C falling at one frequency, measured / SPH"]
     rows, missing, notes = [], [], []
     pts_m, pts_s = [], []   # (x, L/d0, convectively unstable) of the measured jets and the runs
     for s, name, info, r in runs:
@@ -1062,8 +1066,9 @@ def report(args):
                 "-" if r["L"] is None else f"{r['t1']:.4g}",
                 "-" if r["status"] == "missing" else fmt(r["quiet"], ".4g")]
         if falling:
-            rows[-1].insert(header.index("instability without gravity") - 1,
-                            f"{fmt(falling(info, info['L_meas']), '.1f')} / {fmt(falling(info, r['L']), '.1f')}")
+            at = header.index("instability without gravity") - 2
+            rows[-1][at:at] = [f"{fmt(falling(info, info['L_meas'], one), '.1f')} / "
+                               f"{fmt(falling(info, r['L'], one), '.1f')}" for one in (False, True)]
     with open(os.path.join(args.out, "round_jets.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(header)
@@ -1109,7 +1114,9 @@ def report(args):
             f"and breaks near the orifice: {len(cs_all) - len(cs_conv)} of the measured speeds"
             + (f"; here the jets fall (g = {G_FALL:g} m/s^2 along them), and the falling C is the ln(a/delta0) "
                f"that Weber's growth along the falling jet reaches at the length (tools/jet_gravity_theory.py, "
-               f"absolute instability left out).\n\n" if falling else
+               f"absolute instability left out): at the fastest local rate, and followed at one frequency "
+               f"(--one-frequency there: each wave carried down at its own frequency, the one grown most).\n\n"
+               if falling else
                ", where this model (no gravity) cannot form the measured jet.\n\n")
             + f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
             f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
@@ -1191,7 +1198,8 @@ def brief(sdir, args, name, info, r, c_all):
     if args.gravity and info["L_meas"] is not None:
         lines.append(f"  falling (g = {G_FALL:g} m/s^2): Weber's growth along the jet reaches ln(a/delta0) = "
                      f"{falling_c(info, r['L']):.1f} at this length, {falling_c(info, info['L_meas']):.1f} at the "
-                     f"measured one (tools/jet_gravity_theory.py)")
+                     f"measured one (tools/jet_gravity_theory.py); followed at one frequency, "
+                     f"{falling_c(info, r['L'], True):.1f} and {falling_c(info, info['L_meas'], True):.1f}")
     lines.append(f"  main drops: {fmt(r['drops_median'])} d0 (median over the window, {r['n_main_window']} "
                  f"drop-samples), most frequent {fmt(r.get('drops_mode'), '.1f')} d0; Rayleigh's: {RAYLEIGH_DROP} d0")
     if r.get("left"):

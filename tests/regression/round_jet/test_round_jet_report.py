@@ -341,6 +341,14 @@ def main():
               f"--gravity report's falling C: {grow.get('C = ln(a/delta0) falling, measured / SPH')} "
               f"(run's {c_run:.2f}) {p.stderr}")
         check("here the jets fall" in p.stdout, f"--gravity report's text: {p.stdout[-600:]}")
+        # and the same followed at one frequency (Jet's one_frequency): its own values at both
+        # lengths, each below the fastest rate's (the jet speeds up, so a wave's ka drifts off the fastest)
+        one = jet_gravity_theory.Jet(0.7814, 0.000597, 9.81, one_frequency=True)
+        l_meas = dict(rjs.read_mc())[0.7814]
+        c_one = [one.exponent(l * 0.001194) for l in (l_meas, 67.0)]
+        check(grow.get("C falling at one frequency, measured / SPH") == f"{c_one[0]:.1f} / {c_one[1]:.1f}"
+              and c_one[1] < c_run, f"--gravity report's falling C at one frequency: "
+              f"{grow.get('C falling at one frequency, measured / SPH')} (built {c_one[0]:.2f} / {c_one[1]:.2f})")
         # --fixed-step F: every run a fixed step of F cfl h / c0 (the case's h = 2 dx): at d0/dx 10
         # with --c0 12 --cfl 0.25, 0.6 x 0.25 x 2.388e-4 / 12 = 2.985e-6 s for every measured jet;
         # the paper's jets keep their c0 = 4 m/s, and the case's cfl 0.2 without --cfl:
