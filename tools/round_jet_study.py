@@ -117,8 +117,8 @@ _own) a run's window comes from its own length instead (own_window): from the fi
 t >= t_q + 1.75 L / U to the first sample at or past W L / U later, L the mean length of the
 broken samples of that window (at least 10 d0), so that a window is decided by its own samples
 and the report is the same however the runs were staged; t_q is when the start-up's disturbance
-left the orifice (quiet_since: the surface's wave amplitude 5 d0 below it has stopped falling, or
-the jet drips short of there), and
+left the orifice (quiet_since: the surface's wave amplitude 5 d0 below it has stopped falling and
+is below 1e-3 a, or the jet drips short of there), and
 a run whose orifice is not quiet by twice the time a jet as long as the box would have its
 window (its start-up still fading) ends with no length ("start-up not cleared"); a run is
 started to (1.75 + W) 10 d0 / U and, once finished, resumed with a later
@@ -230,6 +230,14 @@ OWN_LONGEST = 2.0
 # the box (0.36 m/s: whole at 0.600 s). A run quiet from t_q has the cap t_q plus one cap, so one
 # that goes quiet just before twice the cap may run to about three; the quiet runs are not moved.
 OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
+# A flat amplitude is not enough: the spans must also stay below OWN_QUIET_LEVEL (in a). At d0/dx 16
+# the 0.36 m/s jet falling from the tube's relaxed state held 1.3-3.0e-2 a there over four spans from
+# 24 ms, breaking at 12-21 d0 at the end of its pocket of local absolute instability, and was taken
+# as quiet, its window at 0.087-0.149 s (13.9 tube d0, -60%); at d0/dx 10 the same jet went quiet at
+# 0.459 s and was 25 tube d0 long from 0.577 s. 1e-3 a at 5 d0 is an orifice disturbance of about
+# e^-1 of it (Weber's growth over 5 d0), C = ln(a/delta0) near 8, below the floor of 10 that a quiet
+# jet is held to and far below the quiet jets' 15-18; their spans there hold 1e-7 to 1e-6 a.
+OWN_QUIET_LEVEL = 1e-3
 OWN_NOT_QUIET_CAPS = 2.0
 BOX_L_FACTOR = 1.6
 # The box's reach from the axis in d0 (domain.lx): a drop thrown past it leaves the run. 2.5 d0 is
@@ -478,13 +486,15 @@ def quiet_spans(surface, u, d0):
 
 def first_quiet(amps):
     """quiet_spans' amplitudes -> the index of the span the orifice is quiet from (OWN_QUIET_D0's
-    comment), None while the start-up's disturbance is still fading there. A span in most of
-    whose samples the jet is shorter than OWN_QUIET_D0 (it drips, breaking at the orifice: no
-    start-up to wait for there) ends a quiet run of spans as well."""
+    and OWN_QUIET_LEVEL's comments), None while the start-up's disturbance is still fading there
+    or still loud. A span in most of whose samples the jet is shorter than OWN_QUIET_D0 (it
+    drips, breaking at the orifice: no start-up to wait for there) ends a quiet run of spans as
+    well."""
     for k in range(len(amps) + 1 - OWN_QUIET_SPANS):
         part = amps[k:k + OWN_QUIET_SPANS]
         if part[-1] is None or (all(a is not None for a in part) and part[0] > 0.0
-                                and part[-1] >= part[0] / OWN_QUIET_FACTOR):
+                                and part[-1] >= part[0] / OWN_QUIET_FACTOR
+                                and max(part) < OWN_QUIET_LEVEL):
             return k
     return None
 
@@ -511,8 +521,9 @@ def run_quiet(run_dir, info):
     last = [a for a in amps[-OWN_QUIET_SPANS:] if a is not None]
     if not last:
         return None, None
-    return None, (f"the wave amplitude {OWN_QUIET_D0:g} d0 below the orifice fell from {last[0]:.2g} a to "
-                  f"{last[-1]:.2g} a over its last {OWN_QUIET_SPANS} spans of {OWN_MIN_D0:g} d0 / U: not quiet")
+    loud = f", above {OWN_QUIET_LEVEL:g} a" if max(last) >= OWN_QUIET_LEVEL else ""
+    return None, (f"the wave amplitude {OWN_QUIET_D0:g} d0 below the orifice went from {last[0]:.2g} a to "
+                  f"{last[-1]:.2g} a over its last {OWN_QUIET_SPANS} spans of {OWN_MIN_D0:g} d0 / U{loud}: not quiet")
 
 
 def own_window(rows, u, d0, window, quiet=0.0):

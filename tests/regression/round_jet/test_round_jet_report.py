@@ -614,8 +614,8 @@ def main():
         # period 4 ms, sampled every 1 ms. Its amplitude halves every 30 ms up to 0.15 s and then
         # holds: 4 spans from span 4 (0.119-0.149 s, a mean amplitude about 1.4 times the held
         # one) end within a factor 2 of it, and from span 3 they do not (about 2.9 times): quiet
-        # from 4 spans, 0.11898 s. Halving throughout to 0.45 s: never quiet. Held throughout:
-        # quiet from 0. A jet that never reaches 5 d0 (it drips) waits for nothing: quiet from 0.
+        # from 4 spans, 0.11898 s. Halving throughout to 0.45 s: never quiet. Held throughout
+        # below OWN_QUIET_LEVEL (1e-3 a): quiet from 0; held above it: never quiet. A jet that never reaches 5 d0 (it drips) waits for nothing: quiet from 0.
         def surface(amp, t_end=0.45, reach=True):
             out = []
             for k in range(1, round(t_end * 1000) + 1):
@@ -632,6 +632,10 @@ def main():
         check(rjs.quiet_since(surface(lambda t: 1e-3 * 2 ** (-t / 0.03)), u4, d0) is None,
               "a start-up still fading at 0.45 s: not quiet")
         check(rjs.quiet_since(surface(lambda t: 1e-6), u4, d0) == 0.0, "a jet quiet from the start")
+        # held flat, but at 2e-3 a (a sine of 1e-3 d0), above OWN_QUIET_LEVEL: loud, not quiet; and
+        # at half the level (a sine of 2.5e-4 d0, 5e-4 a): quiet from the start
+        check(rjs.quiet_since(surface(lambda t: 1e-3), u4, d0) is None, "a jet held loud (2e-3 a): not quiet")
+        check(rjs.quiet_since(surface(lambda t: 2.5e-4), u4, d0) == 0.0, "a jet held at 5e-4 a: quiet from the start")
         check(rjs.quiet_since(surface(lambda t: 1e-6, reach=False), u4, d0) == 0.0,
               "a jet short of 5 d0 (it drips) waits for nothing")
         # one long and fading up to 0.2 s and short of 5 d0 since (it drips): span 7 (from
