@@ -136,7 +136,7 @@ class Jet:
     one_frequency the frequency that has grown most's (the module's docstring)."""
 
     def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU, one_frequency=False):
-        self.u, self.a0, self.g = u, a0, g
+        self.u, self.a0, self.g, self.rho, self.sigma, self.mu = u, a0, g, rho, sigma, mu
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
         speed = [math.sqrt(u * u + 2.0 * g * i * self.dz) for i in range(GRID)]
         radius = [a0 * math.sqrt(u / uz) for uz in speed]
@@ -177,6 +177,17 @@ class Jet:
         grid point nearest z past the orifice (one_frequency only)."""
         i = min(max(int(round(z / self.dz)), 1), GRID - 1)
         return self.best_ka0[i] * self.u / self.a0
+
+    def wave_exponent(self, omega):
+        """N_omega on the grid (a list, 0 at the orifice): the growth of the one wave of angular
+        frequency omega [1/s], carried down at that frequency, at Weber's rate at its local ka =
+        omega a(z) / U(z) (the one-frequency picture's integrand; below 0 where that ka is stable)."""
+        rates = []
+        for i in range(GRID):
+            uz, a = self.local(i * self.dz)
+            oh = self.mu / math.sqrt(self.rho * self.sigma * a)
+            rates.append(weber_omega(omega * a / uz, oh) * math.sqrt(self.sigma / (self.rho * a ** 3)) / uz)
+        return cumulate(rates, self.dz)
 
     def exponent(self, z):
         """N(z) [1], linear between grid points."""

@@ -3,6 +3,7 @@
 (cases/CASE_FORMAT.md, [breakup]): where it starts, how fast it grows, and how quiet the exit is.
 
     /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--to T1] [--rows] [--plot OUT.png]
+        [--wave S0 S1] [--frequency OMEGA] [--at S ...]
 
 The samples read are those from T to T1 (default: the run's last), so that two runs can be read
 over the same times while one of them goes on.
@@ -66,6 +67,13 @@ over the same times while one of them goes on.
   frequency that has grown most by the jet's mean length in the one-frequency picture
   (jet_gravity_theory --one-frequency) with its local ka there: a wave carried down at its own
   frequency has its ka fall as (u0/U(z))^(3/2), below Weber's fastest, which does not.
+- one frequency (--frequency OMEGA, in 1/s): the amplitude of r_s at that angular frequency along
+  the jet (at each slice the intact jet reaches in 90% of the samples, the Hann-windowed Fourier
+  coefficient over its samples), so that one wave is followed down the jet apart from the rest
+  of the envelope; its growing stretch (the fit's rule), and on a round jet the slope of ln A
+  against that wave's own Weber growth along the jet, at its local ka omega a(z)/U(z)
+  (tools/jet_gravity_theory.py's Jet.wave_exponent; with gravity along the jet or without),
+  over the stretch and its quarters, with the line's C = ln(a/delta0) at the orifice.
 Prints `key = value` lines and, last, `SUMMARY key=value ...`. Round (axisymmetric) jets; a
 planar jet's profile is its half-width, read the same way (the theory lines then do not apply).
 """
@@ -167,15 +175,54 @@ def falling_growth(env, s0, s1, c, one_frequency=False):
     from jet_gravity_theory import Jet   # here: it imports round_jet_study, which imports this module
     d0 = c["d0"]
     jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"], one_frequency)
-    pts = [(jet.exponent(s * d0), math.log(A)) for s, A, _ in env if s0 <= s <= s1 and A > 0]
+    got = growth_over(env, s0, s1, lambda s: jet.exponent(s * d0))
+    return None if got is None else got[:2]
+
+
+def growth_over(env, s0, s1, exponent):
+    """The slope of the straight line through ln A against exponent(s) (a theory's N at s d0)
+    over env's slices in [s0, s1], over each of its four quarters, and the line's value at N = 0
+    -> (slope, [four slopes], ln(delta0/a)), or None with fewer than nine slices (three a
+    quarter, the quarters sharing their ends)."""
+    pts = [(exponent(s), math.log(A)) for s, A, _ in env if s0 <= s <= s1 and A > 0]
     if len(pts) < 9:
         return None
 
-    def slope(part):
-        return statistics.linear_regression([p[0] for p in part], [p[1] for p in part])[0]
+    def line(part):
+        return statistics.linear_regression([p[0] for p in part], [p[1] for p in part])
 
     ends = [round(i * (len(pts) - 1) / 4) for i in range(5)]
-    return slope(pts), [slope(pts[ends[i]:ends[i + 1] + 1]) for i in range(4)]
+    whole = line(pts)
+    return whole.slope, [line(pts[ends[i]:ends[i + 1] + 1]).slope for i in range(4)], whole.intercept
+
+
+FREQ_COVER = 0.9   # --frequency reads the slices the intact jet reaches in this share of the samples
+
+
+def frequency_envelope(surface, omega):
+    """The amplitude of r_s at the angular frequency omega [1/s] along the jet: at each slice the
+    intact jet reaches in at least FREQ_COVER of the samples, 2 |sum w x e^(-i omega t)| / sum w
+    over its samples, x = r_s/a - 1 less its mean and w a Hann window over their times (the
+    samples need not be evenly spaced) -> [(s/d0, A/a, samples)], in s (envelope's form)."""
+    per = {}
+    for r in surface:
+        per.setdefault(float(r["s_over_d0"]), []).append((float(r["time"]), 2.0 * float(r["r_over_d0"]) - 1.0))
+    n = max((len(v) for v in per.values()), default=0)
+    out = []
+    for s in sorted(per):
+        got = sorted(per[s])
+        if len(got) < max(FREQ_COVER * n, 8):
+            break
+        t0, t1 = got[0][0], got[-1][0]
+        mean = sum(x for _t, x in got) / len(got)
+        re = im = wsum = 0.0
+        for t, x in got:
+            w = 0.5 * (1.0 - math.cos(2.0 * math.pi * (t - t0) / (t1 - t0)))
+            re += w * (x - mean) * math.cos(omega * t)
+            im -= w * (x - mean) * math.sin(omega * t)
+            wsum += w
+        out.append((s, 2.0 * math.hypot(re, im) / wsum, len(got)))
+    return out
 
 
 def spectrum(surface, d0, a):
@@ -334,12 +381,51 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
              median(in_rows[b]) if b in in_rows else None) for b, v in sorted(per.items())]
 
 
-def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
+def one_frequency(surface, omega, c, summary):
+    """--frequency: prints the amplitude of r_s at omega along the jet (frequency_envelope), its
+    growing stretch (fit_growth's rule) and, on a round jet with surface tension, its growth
+    over that wave's own Weber growth along the jet (tools/jet_gravity_theory.py's
+    Jet.wave_exponent: its local ka omega a(z) / U(z), with gravity along the jet or without);
+    adds freq_* keys to summary."""
+    env = frequency_envelope(surface, omega)
+    if not env:
+        print(f"one frequency omega = {omega:.4g} 1/s: no slice reached in {FREQ_COVER:.0%} of the samples")
+        return
+    print(f"one frequency omega = {omega:.4g} 1/s (r_s's amplitude at it over the samples, Hann-windowed, "
+          f"at the slices the intact jet reaches in {FREQ_COVER:.0%} of them), A/a at s/d0: "
+          + ", ".join(f"{s:.2f}:{A:.2e}" for s, A, _ in env[:: max(1, len(env) // 16)]))
+    fit = fit_growth(env)
+    if fit is None or not (c["round"] and c["sigma"] > 0):
+        return
+    if c["g_along"] < 0.0:
+        print("  its Weber growth along the jet: not computed for a jet that gravity slows")
+        return
+    from jet_gravity_theory import Jet
+    d0 = c["d0"]
+    jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"])
+    n = jet.wave_exponent(omega)
+
+    def exponent(s):   # linear between the grid's points, as Jet.exponent
+        z = s * d0 / jet.dz
+        i = min(int(z), len(n) - 2)
+        return (1.0 - (z - i)) * n[i] + (z - i) * n[i + 1]
+    got = growth_over(env, fit[2], fit[3], exponent)
+    if got is None:
+        return
+    print(f"  over s = {fit[2]:.2f}-{fit[3]:.2f} d0 it grows at {got[0]:.3f} of its own Weber growth along the "
+          f"jet (tools/jet_gravity_theory.py, the wave's local ka omega a(z)/U(z): {omega * 0.5 * d0 / c['u0']:.3f} "
+          f"at the orifice); by quarters " + ", ".join(f"{q:.3f}" for q in got[1])
+          + f"; the line's C = ln(a/delta0) at the orifice {-got[2]:.2f}")
+    summary.update({"freq_growth_over_theory": got[0], "freq_C": -got[2]})
+
+
+def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=None):
     """Prints the measures of the run directory `run` over its samples at t0 <= t <= t1 (t0 None:
     twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
     read. at: distances s/d0 at which to print the envelope (the nearest slice). show_rows: print
-    the rows' pressures and radii along the jet (noise_along; round jets). NoiseError for
+    the rows' pressures and radii along the jet (noise_along; round jets). frequency: None or
+    the angular frequency [1/s] whose own amplitude and growth to read. NoiseError for
     a run without the files or samples it needs."""
     try:
         c = read_case(run)
@@ -471,6 +557,8 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False):
                 line += f"; Rayleigh's capillary wave at that ka: phase speed {c_r:.3g} m/s, group velocity {cg_r:.3g} m/s"
             print(line)
             summary.update({"wave_ka": ka, "wave_speed": c_lab})
+    if frequency is not None:
+        one_frequency(surface, frequency, c, summary)
     spec = spectrum(surface, d0, a)
     if spec:
         kpk, apk = max(spec, key=lambda e: e[1])
@@ -569,15 +657,20 @@ def main(argv=None):
                     help="print each ring row's mean pressure over the local Laplace pressure and its mean radius "
                          "over the local row spacing along the intact jet (2 d0 slices, medians over the snapshots; "
                          "SUMMARY rows_spread_max: the largest pressure spread between a slice's rows)")
+    ap.add_argument("--frequency", type=float, default=None, metavar="OMEGA",
+                    help="read the amplitude of r_s at this angular frequency [1/s] along the jet and its growth "
+                         "over that wave's own Weber growth")
     ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
     args = ap.parse_args(argv)
     if args.t0 is not None and args.t1 is not None and args.t1 < args.t0:
         ap.error(f"--to {args.t1:g} is before --from {args.t0:g}")
+    if args.frequency is not None and not args.frequency > 0.0:
+        ap.error(f"--frequency needs an angular frequency above 0 (1/s), got {args.frequency:g}")
     if args.wave is not None and not 0.0 <= args.wave[0] < args.wave[1]:
         ap.error(f"--wave S0 S1 needs 0 <= S0 < S1 (d0), got {args.wave[0]:g} {args.wave[1]:g}")
     try:
-        got = analyse(args.run, args.t0, args.wave, args.t1, args.at, args.rows)
+        got = analyse(args.run, args.t0, args.wave, args.t1, args.at, args.rows, args.frequency)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

@@ -29,6 +29,9 @@ m/s (omega falls on its grid; half a k step is 2.7% of k); with gz = 0 no fallin
 The same falling at 300 m/s^2: the local ka, the speed against the fluid at the stretch's middle,
 and the one-frequency picture's wave there (check_wave_falling).
 
+With `--frequency`, a wave growing as its own Weber growth along the jet, without gravity and
+falling: its amplitude, its growth over that theory and its C (check_frequency).
+
 The start-up front (jet_noise.startup_front) on a surface quiet to 1e-4 a up to a front at s_f
 = 1.52 d0 + 300 d0/s x t (never on a slice centre) and 1e-2 a beyond it, 60 samples over 0.03 s
 on 0.1 d0 slices: the front must be found at the first slice past s_f in each sample and its
@@ -79,10 +82,10 @@ KA = 0.7                        # the wave: k d0 = 2 ka
 PERIODS, SAMPLES = 40, 400
 
 
-def write_run(d, gz=0.0, growth=None, sigma=SIGMA):
+def write_run(d, gz=0.0, growth=None, sigma=SIGMA, periods=PERIODS):
     """The synthetic run in d: gravity gz [m/s^2] along z (the jet flows down, -z; None: no
     [gravity] table, so CASE_FORMAT's default -9.81), surface tension sigma, the envelope
-    delta0 exp(growth(s)) (s in d0; default k_s s)."""
+    delta0 exp(growth(s)) (s in d0; default k_s s), periods whole periods over the samples."""
     growth = growth or (lambda s: KS * s)
     gravity = "" if gz is None else f"[gravity]\ngz = {gz}\n"
     with open(os.path.join(d, "case.toml"), "w") as f:
@@ -111,13 +114,13 @@ disturbance_ka = {KA}
            "head_drop_d_over_d0,largest_drop_d_over_d0,n_satellites,neck_r_over_d0,neck_s_over_d0,"
            "n_exit,p_exit_mean,p_exit_std,ur_exit_rms"]
     surf = ["time,step,s_over_d0,r_over_d0"]
+    amps = [((i + 0.5) * 0.1, DELTA0 * math.exp(growth((i + 0.5) * 0.1))) for i in range(120)]   # once a slice
     for n in range(SAMPLES):
         t = 0.01 + n * 1e-4
-        phase = 2 * math.pi * PERIODS * n / SAMPLES
+        phase = 2 * math.pi * periods * n / SAMPLES
         jet.append(f"{t},{n},0,0,{U0},{U0},1,{12 * D0},12,13,1,1.9,1.9,0,0.4,5,100,130,20,0.01")
-        for i in range(120):
-            s = (i + 0.5) * 0.1
-            r = A * (1 + DELTA0 * math.exp(growth(s)) * math.sin(phase - k * s + 0.3 * omega))
+        for s, amp in amps:
+            r = A * (1 + amp * math.sin(phase - k * s + 0.3 * omega))
             surf.append(f"{t},{n},{s:.6g},{r / D0:.12g}")
     with open(os.path.join(d, "jet.csv"), "w") as f:
         f.write("\n".join(jet) + "\n")
@@ -318,6 +321,55 @@ def check_falling():
     return failures
 
 
+def wave_n(omega, g, s, intervals=400):
+    """The growth N of the wave of angular frequency omega [1/s] carried down a jet (u0, a) falling
+    at g [m/s^2] to s d0, Weber's rate at its local ka = omega a(z) / U(z), U(z) = sqrt(u0^2 +
+    2 g z), a(z) = a sqrt(u0 / U(z)): Simpson's rule, written out here (not the tool's grid)."""
+    sys.path.insert(0, os.path.join(REPO, "tools"))
+    from axisymmetric import weber_omega
+    z1 = s * D0
+    h = z1 / intervals
+
+    def rate(z):
+        uz = math.sqrt(U0 * U0 + 2 * g * z)
+        r = A * math.sqrt(U0 / uz)
+        return weber_omega(omega * r / uz, MU / math.sqrt(RHO * SIGMA * r)) * math.sqrt(SIGMA / (RHO * r ** 3)) / uz
+    return h / 3 * sum((1 if i in (0, intervals) else 4 if i % 2 else 2) * rate(i * h) for i in range(intervals + 1))
+
+
+def check_frequency():
+    """--frequency on runs whose surface is delta0 exp(N(s)) sin(omega t - k s) with 6 whole
+    periods over the samples (omega = 942.5 1/s, ka = omega a / u0 = 0.720 at the orifice) and N
+    that wave's own Weber growth along the jet (wave_n, independent of the tool): without gravity
+    and falling at 300 m/s^2. The amplitude read at the built frequency must be the built one
+    within 1% at the slice 5.05 d0 (the Hann window over 399 sample spacings, 5.985 periods,
+    leaks about 1e-3); the growth over the wave's theory 1 within 1% over the stretch and each
+    quarter (the tolerance of k_s above: the grid of Jet against Simpson differs by about
+    1e-6); and the line's C = ln(a/delta0) = 9.21 within 0.05, as the fit's. A list of failures."""
+    omega = 2 * math.pi * 6 / (SAMPLES * 1e-4)
+    failures = []
+    for name, g in (("without gravity", 0.0), ("falling", 300.0)):
+        with tempfile.TemporaryDirectory() as d:
+            write_run(d, -g, lambda s: wave_n(omega, g, s, 200), periods=6)
+            out = subprocess.run([PY, TOOL, d, "--from", "0", "--frequency", f"{omega:.10g}"],
+                                 capture_output=True, text=True)
+        val = summary(out.stdout) or {}
+        m = re.search(r"^one frequency omega = .*?, A/a at s/d0: (.*)$", out.stdout, re.M)
+        amps = dict((float(k), float(v)) for k, v in (kv.split(":") for kv in m.group(1).split(", "))) if m else {}
+        near = min(amps, key=lambda k: abs(k - 5.05)) if amps else None
+        built = DELTA0 * math.exp(wave_n(omega, g, near)) if near is not None else None
+        if near is None or not abs(amps[near] / built - 1) < 0.01:
+            failures.append(f"--frequency {name}: A/a {amps.get(near)} at {near} d0, built {built} (1%)")
+        m = re.search(r"grows at ([0-9.]+) of its own Weber growth .*?by quarters (.*?); the line", out.stdout)
+        quarters = [float(q) for q in m.group(2).split(", ")] if m else []
+        got = val.get("freq_growth_over_theory")
+        if got is None or not abs(got - 1) < 0.01 or len(quarters) != 4 or any(not abs(q - 1) < 0.01 for q in quarters):
+            failures.append(f"--frequency {name}: growth over its theory {got}, quarters {quarters}; built 1 (1%)")
+        if not abs(val.get("freq_C", 0) - math.log(1 / DELTA0)) < 0.05:
+            failures.append(f"--frequency {name}: C {val.get('freq_C')}, built {math.log(1 / DELTA0):.3f} (0.05)")
+    return failures
+
+
 def check_wave_falling():
     """--wave 0.5 8 on the built wave in a run falling at 300 m/s^2: at the stretch's middle, s =
     4.25 d0, the jet moves at U(z) = sqrt(u0^2 + 2 g z) with radius a(z) = a sqrt(u0 / U(z))
@@ -425,6 +477,7 @@ def main():
     failures += check_rows_noise()
     failures += check_falling()
     failures += check_wave_falling()
+    failures += check_frequency()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
