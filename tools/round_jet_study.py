@@ -234,7 +234,7 @@ OWN_QUIET_D0, OWN_QUIET_SPANS, OWN_QUIET_FACTOR = 5.0, 4, 2.0
 # the 0.36 m/s jet falling from the tube's relaxed state held 1.3-3.0e-2 a there over four spans from
 # 24 ms, breaking at 12-21 d0 at the end of its pocket of local absolute instability, and was taken
 # as quiet, its window at 0.087-0.149 s (13.9 tube d0, -60%); at d0/dx 10 the same jet went quiet at
-# 0.459 s and was 25 tube d0 long from 0.577 s. 1e-3 a at 5 d0 is an orifice disturbance of about
+# 0.41-0.46 s and was 25-26 tube d0 long from 0.53-0.58 s (two realizations). 1e-3 a at 5 d0 is an orifice disturbance of about
 # e^-1 of it (Weber's growth over 5 d0), C = ln(a/delta0) near 8, below the floor of 10 that a quiet
 # jet is held to and far below the quiet jets' 15-18; their spans there hold 1e-7 to 1e-6 a.
 OWN_QUIET_LEVEL = 1e-3
