@@ -343,7 +343,7 @@ def check_frequency():
     that wave's own Weber growth along the jet (wave_n, independent of the tool): without gravity
     and falling at 300 m/s^2. The amplitude read at the built frequency must be the built one
     within 1% at the slice 5.05 d0 (the Hann window over 399 sample spacings, 5.985 periods,
-    leaks about 1e-3); the growth over the wave's theory 1 within 1% over the stretch and each
+    reads a steady sine within 2e-5; 1% is the envelope's tolerance above); the growth over the wave's theory 1 within 1% over the stretch and each
     quarter (the tolerance of k_s above: the grid of Jet against Simpson differs by about
     1e-6); and the line's C = ln(a/delta0) = 9.21 within 0.05, as the fit's. A list of failures."""
     omega = 2 * math.pi * 6 / (SAMPLES * 1e-4)
