@@ -149,14 +149,8 @@ class Jet:
         top = ONE_KA0_PAST * 0.7 * (speed[-1] / u) ** 1.5
         self.ka0 = [ONE_KA0_LOW * ONE_KA0_STEP ** i
                     for i in range(int(math.log(top / ONE_KA0_LOW) / math.log(ONE_KA0_STEP)) + 2)]
-        # each point's Ohnesorge number and capillary rate scale, the same for every frequency
-        local = [(uz, a, mu / math.sqrt(rho * sigma * a), math.sqrt(sigma / (rho * a ** 3)))
-                 for uz, a in zip(speed, radius)]
-        each = []
-        for ka0 in self.ka0:
-            omega = ka0 * u / a0
-            each.append(cumulate([weber_omega(omega * a / uz, oh) * scale / uz for uz, a, oh, scale in local],
-                                 self.dz))
+        local = self.grid_points()
+        each = [self.wave_exponent(ka0 * u / a0, local) for ka0 in self.ka0]
         # best_ka0: the grid's frequency that has grown most (its exit ka); at z = 0, where every N is 0,
         # it is the grid's first, and means nothing
         self.n, self.best_ka0 = [], []
@@ -178,22 +172,31 @@ class Jet:
         i = min(max(int(round(z / self.dz)), 1), GRID - 1)
         return self.best_ka0[i] * self.u / self.a0
 
-    def wave_exponent(self, omega):
+    def grid_points(self):
+        """Each grid point's speed, radius, Ohnesorge number and capillary rate scale, the same for
+        every frequency."""
+        rho, sigma, mu = self.rho, self.sigma, self.mu
+        speed = [math.sqrt(self.u * self.u + 2.0 * self.g * i * self.dz) for i in range(GRID)]
+        return [(uz, a, mu / math.sqrt(rho * sigma * a), math.sqrt(sigma / (rho * a ** 3)))
+                for uz, a in ((uz, self.a0 * math.sqrt(self.u / uz)) for uz in speed)]
+
+    def wave_exponent(self, omega, points=None):
         """N_omega on the grid (a list, 0 at the orifice): the growth of the one wave of angular
         frequency omega [1/s], carried down at that frequency, at Weber's rate at its local ka =
-        omega a(z) / U(z) (the one-frequency picture's integrand; below 0 where that ka is stable)."""
-        rates = []
-        for i in range(GRID):
-            uz, a = self.local(i * self.dz)
-            oh = self.mu / math.sqrt(self.rho * self.sigma * a)
-            rates.append(weber_omega(omega * a / uz, oh) * math.sqrt(self.sigma / (self.rho * a ** 3)) / uz)
-        return cumulate(rates, self.dz)
+        omega a(z) / U(z) (the one-frequency picture's integrand; below 0 where that ka is stable).
+        points: grid_points(), when the caller has them."""
+        points = self.grid_points() if points is None else points
+        return cumulate([weber_omega(omega * a / uz, oh) * scale / uz for uz, a, oh, scale in points], self.dz)
+
+    def exponent_at(self, n, z):
+        """A grid's N (this one's n, or a wave_exponent) at z [1], linear between grid points."""
+        i = min(int(z / self.dz), GRID - 2)
+        t = z / self.dz - i
+        return (1.0 - t) * n[i] + t * n[i + 1]
 
     def exponent(self, z):
         """N(z) [1], linear between grid points."""
-        i = min(int(z / self.dz), GRID - 2)
-        t = z / self.dz - i
-        return (1.0 - t) * self.n[i] + t * self.n[i + 1]
+        return self.exponent_at(self.n, z)
 
     def length(self, c):
         """The z [m] at which N reaches c (None beyond the grid)."""

@@ -404,12 +404,7 @@ def one_frequency(surface, omega, c, summary):
     d0 = c["d0"]
     jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"])
     n = jet.wave_exponent(omega)
-
-    def exponent(s):   # linear between the grid's points, as Jet.exponent
-        z = s * d0 / jet.dz
-        i = min(int(z), len(n) - 2)
-        return (1.0 - (z - i)) * n[i] + (z - i) * n[i + 1]
-    got = growth_over(env, fit[2], fit[3], exponent)
+    got = growth_over(env, fit[2], fit[3], lambda s: jet.exponent_at(n, s * d0))
     if got is None:
         return
     print(f"  over s = {fit[2]:.2f}-{fit[3]:.2f} d0 it grows at {got[0]:.3f} of its own Weber growth along the "
