@@ -18,8 +18,13 @@ flags rather than a copy of them. Checks, each with its reason:
 - d0/dx = 16: within 3% of Weber's (measured +2.1%; +0.9% at d0/dx 20, too long for the
   default set), and nearer to it than at d0/dx 10: the growth converges on Weber's as the rows
   get finer;
-- bad input: a planar case is refused naming domain.geometry; --ka 1.2 (a stable wave) and
-  --d0-over-dx 15 (7.5 rings across the radius) are refused naming the option.
+- --speed-ratio R builds the lattice of a jet that has sped up R times (no run, the case text
+  only): at R = 1.5 the radius and the spacing across are R^-1/2 of R = 1's, the spacing along
+  the axis R times, h the same, so each ring keeps the volume r dr dz of its nozzle's ring
+  (to 1e-12, rounding); at R = 1 the text is the one without the option, byte for byte;
+- bad input: a planar case is refused naming domain.geometry; --ka 1.2 (a stable wave),
+  --d0-over-dx 15 (7.5 rings across the radius) and --speed-ratio 0.5 (a jet that slows) are
+  refused naming the option.
 
 usage: check_jet_column.py SPHJET SOURCE_DIR WORK_DIR
 """
@@ -39,6 +44,41 @@ STUDY = ["run", "--eps", "0", "--quiet-jets", "--gravity", "--column", "1", "--s
 RUN = "mc_u0.7814"
 EPS = 1e-5
 BOUNDS = {10: 0.08, 16: 0.03}   # |growth / Weber - 1| at each d0/dx (the docstring's reasons)
+
+
+def check_speed_ratio(jet_column, resolved):
+    """The lattice of a jet sped up R times (the docstring's check) from the jet's case as sphjet
+    wrote it (jet_column.resolve's) -> the failures."""
+    import math
+    import tomllib
+    with open(resolved, "rb") as f:
+        jet = tomllib.load(f)
+    fails = []
+    plain = jet_column.column_case(jet, "jet", 10, 0.7, EPS, 5e-3)
+    one = jet_column.column_case(jet, "jet", 10, 0.7, EPS, 5e-3, 1.0)
+    ok = plain[0] == one[0]
+    print(f"{'ok' if ok else 'FAIL'}: --speed-ratio 1 writes the case without the option, byte for byte")
+    if not ok:
+        fails.append("--speed-ratio 1 changes the column's case")
+    r = 1.5
+    cols = [tomllib.loads(jet_column.column_case(jet, "jet", 10, 0.7, EPS, 5e-3, ratio)[0]) for ratio in (1.0, r)]
+    res = [c["resolution"] for c in cols]
+    rad = [c["fluid"]["cylinder"][0]["radius"] for c in cols]
+    got = {"radius": rad[1] / rad[0], "dx": res[1]["dx"] / res[0]["dx"], "dz": res[1]["dz"] / res[0]["dz"],
+           "h": res[1]["h"] / res[0]["h"]}
+    want = {"radius": r ** -0.5, "dx": r ** -0.5, "dz": r, "h": 1.0}
+    ring = (rad[1] * res[1]["dx"] * res[1]["dz"]) / (rad[0] * res[0]["dx"] * res[0]["dz"])
+    ok = all(abs(got[k] / want[k] - 1) <= 1e-12 for k in want) and abs(ring - 1) <= 1e-12
+    print(f"{'ok' if ok else 'FAIL'}: --speed-ratio {r:g} against 1: " + ", ".join(f"{k} x {got[k]:.12g} (expected {want[k]:.12g})" for k in want)
+          + f"; a ring's r dr dz x {ring:.12g} (expected 1)")
+    if not ok:
+        fails.append(f"--speed-ratio {r:g} builds {got}, ring volume x {ring:.12g}")
+    ok = math.isclose(res[1]["dz"], res[0]["dx"] * r, rel_tol=1e-12)
+    print(f"{'ok' if ok else 'FAIL'}: at R = {r:g} the rings are R spacings apart along the axis: dz {res[1]['dz']:.6g} m "
+          f"against R dx = {res[0]['dx'] * r:.6g} m")
+    if not ok:
+        fails.append("dz is not R times the jet's spacing")
+    return fails
 
 
 def main():
@@ -91,6 +131,11 @@ def main():
             print(f"{'ok' if ok else 'FAIL'}: the start reads {amp[0]:.9g} a, expected {want:.9g} a within 1e-3")
             if not ok:
                 fails.append(f"the start reads {amp[0]:.6g} a against {want:.6g}")
+    resolved = os.path.join(work, "n10", "jet", "case.toml")
+    if os.path.isfile(resolved):
+        fails += check_speed_ratio(jet_column, resolved)
+    else:
+        fails.append(f"{resolved}: not written (the d0/dx 10 column's run above failed); --speed-ratio not checked")
     if len(errors) == 2:
         ok = errors[16] < errors[10]
         print(f"{'ok' if ok else 'FAIL'}: |growth / Weber - 1| {errors[16]:.4f} at d0/dx 16 against "
@@ -100,7 +145,8 @@ def main():
     tool = os.path.join(src, "tools", "jet_column.py")
     for extra, want in (([os.path.join(src, "cases", "jet", "jet.toml")], "domain.geometry"),
                         ([case, "--ka", "1.2"], "--ka 1.2"),
-                        ([case, "--d0-over-dx", "15"], "--d0-over-dx")):
+                        ([case, "--d0-over-dx", "15"], "--d0-over-dx"),
+                        ([case, "--speed-ratio", "0.5"], "--speed-ratio")):
         r = subprocess.run([sys.executable, tool, *extra, "--sphjet", sphjet], capture_output=True, text=True)
         ok = r.returncode != 0 and want in r.stderr
         print(f"{'ok' if ok else 'FAIL'}: {' '.join(extra[1:]) or os.path.basename(extra[0])}: exit "
