@@ -5,7 +5,8 @@ and its growth rate against Weber's.
 
 Usage (Debian's python3 has numpy and h5py):
   /usr/bin/python3 tools/jet_column.py SOURCE [--set KEY=VALUE ...] [--d0-over-dx N] [--ka 0.7]
-      [--eps 1e-5] [--speed-ratio 1] [--out DIR] [--threads 1] [--sphjet build/cpp_driver/sphjet] [--force]
+      [--eps 1e-5] [--speed-ratio 1] [--rows] [--out DIR] [--threads 1] [--sphjet build/cpp_driver/sphjet]
+      [--force]
 
 SOURCE is a round-jet case file (a modern .toml with a [nozzle]) or a run directory (its
 case.toml); --set overrides its keys as `sphjet run --set` does, before the column is built
@@ -35,6 +36,12 @@ e-fold runs at about 0.6 of the settled rate and its second at 0.9-1.0. Above 1e
 slices' reading departs: the e-fold before 1.5e-2 a reads 10-30% faster than the ones before
 it. Between them the rate per e-fold holds within 1% (measured at d0/dx 10-20). The rate over
 each e-fold of the amplitude is printed too, so that the fit's range can be judged.
+
+--rows prints the curvature the surface tension gives each row, counted inward from the surface
+row of each slice of z, over the snapshots whose wave lies in the fit's range: its mean times a
+(-1 for a cylinder, sphjet's sign) and its wave over the column's geometric one (1 is right;
+row_curvatures). The CSF acts on every row the kernel's reach from the surface touches (four at
+h = 2 dx), each with its own curvature.
 
 Prints the table and a line
   SUMMARY d0_over_dx=N a_over_dx=.. ka=.. eps=.. growth=.. weber=.. growth_over_weber=.. ... speed_ratio=R
@@ -193,6 +200,45 @@ def column_amplitudes(run, a, dz, wavelength):
     return np.array(times), np.array(amps)
 
 
+def row_curvatures(run, a, dz, wavelength, lo, hi):
+    """The curvature the CSF gives each row, counted from the surface inward in each row's slice
+    of z (row 0 its largest radius), over the snapshots whose wave is between lo and hi a ->
+    [(row, share of its slices where the curvature is not zero, mean curvature times a, its
+    wave over the geometric one)], medians over those snapshots; the rows down to the last whose
+    curvature is not zero (the surface band). The geometric wave is the column's: r = a + A
+    cos(kz) bends the surface by kappa' = A (1 - (ka)^2) / a^2 in sphjet's sign (a cylinder's
+    kappa is -1/a), so that 1 is right; the wave is the first Fourier mode over the period,
+    taken in phase with the surface's."""
+    import numpy as np
+    k = 2.0 * math.pi / wavelength
+    nb = max(1, int(round(wavelength / dz)))
+    zc = (np.arange(nb) + 0.5) * wavelength / nb
+    phase = np.exp(-1j * k * zc)
+    per = {}
+    for d in axisymmetric.snapshots(run):
+        f = axisymmetric.fluid(d)
+        if "curvature" not in f:
+            raise ColumnError(f"{run}: the snapshots hold no curvature (a run older than the field)")
+        b = np.floor(np.mod(f["z"], wavelength) / wavelength * nb).astype(int) % nb
+        rows = [np.nonzero(b == i)[0] for i in range(nb)]
+        if any(len(r) == 0 for r in rows):
+            break
+        rows = [r[np.argsort(-f["x"][r])] for r in rows]
+        rs = np.array([f["x"][r[0]] for r in rows])
+        wave = 2.0 * np.mean((rs - rs.mean()) * phase)
+        if not lo <= abs(wave) / a <= hi:
+            continue
+        geometric = wave * (1.0 - (k * a) ** 2) / a ** 2
+        for j in range(min(len(r) for r in rows)):
+            kj = np.array([f["curvature"][r[j]] for r in rows])
+            if not np.any(kj):
+                break
+            m = 2.0 * np.mean((kj - kj.mean()) * phase)
+            per.setdefault(j, []).append((float(np.mean(kj != 0.0)), float(kj.mean()) * a,
+                                          float((m / geometric).real)))
+    return [(j, *(float(np.median([v[i] for v in vals])) for i in range(3))) for j, vals in sorted(per.items())]
+
+
 def growth_fit(t, amp, lo, hi):
     """-> (slope of ln amp against t over lo <= amp <= hi, samples, the rms of the line's residual
     in ln amp), the samples before the amplitude first passes hi."""
@@ -236,6 +282,9 @@ def main(argv=None):
                     help="the lattice of a falling jet where it has sped up R times: its rings R times as far "
                          "apart along the axis, the radius and the radial spacing R^-1/2 times (h and the step "
                          "kept; default 1)")
+    ap.add_argument("--rows", action="store_true",
+                    help="also print the curvature the CSF gives each row from the surface inward, against the "
+                         "column's geometric curvature, over the fit's range")
     ap.add_argument("--out", default=None, help="run directory (default: a temporary one, removed after)")
     ap.add_argument("--force", action="store_true", help="write into a non-empty --out")
     ap.add_argument("--threads", "-j", type=int, default=1)
@@ -285,6 +334,13 @@ def main(argv=None):
               f"growth={rate:.5g} weber={p['weber']:.5g} growth_over_weber={rate / p['weber']:.4f} "
               f"fit_from={a.fit_from:g} fit_to={a.fit_to:g} samples={m} fit_rms={rms:.3g} "
               f"speed_ratio={a.speed_ratio:g}")
+        if a.rows:
+            got = row_curvatures(run, p["a"], p["dz"], p["wavelength"], a.fit_from, a.fit_to)
+            print(f"the rows' curvature over the snapshots with the wave at {a.fit_from:g}-{a.fit_to:g} a (medians; "
+                  "row 0 the surface's; the share of its slices with a curvature; its mean times a, -1 a "
+                  "cylinder's; its wave over the geometric one, 1 right):")
+            print("\n".join(f"  row {j}: in {share:.0%} of the slices, mean {m:+.3f}, wave {w:+.3f}"
+                            for j, share, m, w in got) or "  no snapshot in that range")
         if rms > ONE_EXPONENTIAL:
             print(f"not one exponential over the fit's range: the rms residual of ln A is {rms:.3g} "
                   f"(above {ONE_EXPONENTIAL:g}): the rate above is no growth rate")

@@ -22,6 +22,11 @@ flags rather than a copy of them. Checks, each with its reason:
   only): at R = 1.5 the radius and the spacing across are R^-1/2 of R = 1's, the spacing along
   the axis R times, h the same, so each ring keeps the volume r dr dz of its nozzle's ring
   (to 1e-12, rounding); at R = 1 the text is the one without the option, byte for byte;
+- --rows reads each row's curvature against the column's geometric one (row_curvatures, no
+  run: a snapshot written here, five rows under r = a + A cos(kz), A = 1e-3 a, ka 0.49, each
+  row j given the curvature -1/a + c_j A (1 - (ka)^2)/a^2 cos(kz) with c_j = 1, 0.5, -2, 3, 0
+  and the fifth row none): the means -1 and the waves c_j to 1e-9 (sums of a sampled cosine
+  over whole periods), the rows down to the fourth, in every slice;
 - bad input: a planar case is refused naming domain.geometry; --ka 1.2 (a stable wave),
   --d0-over-dx 15 (7.5 rings across the radius) and --speed-ratio 0.5 (a jet that slows) are
   refused naming the option.
@@ -81,6 +86,39 @@ def check_speed_ratio(jet_column, resolved):
     return fails
 
 
+def check_row_curvatures(jet_column, work):
+    """--rows' reading on a snapshot written here (the docstring's check) -> the failures."""
+    import math
+    import h5py
+    import numpy as np
+    run = os.path.join(work, "rows")
+    os.makedirs(run, exist_ok=True)
+    a, ka, amp, nb, n_rows = 1e-3, 0.49, 1e-6, 40, 5
+    lam = 2 * math.pi * a / ka
+    dz, k = lam / nb, ka / a
+    c = [1.0, 0.5, -2.0, 3.0, 0.0]
+    z = np.repeat((np.arange(nb) + 0.5) * dz, n_rows)
+    j = np.tile(np.arange(n_rows), nb)
+    wave = np.cos(k * z)
+    x = (a - (j + 0.5) * a / n_rows) + amp * wave
+    curv = np.where(j < 4, -1.0 / a + np.take(c, j) * amp * (1 - ka ** 2) / a ** 2 * wave, 0.0)
+    with h5py.File(os.path.join(run, "snap_000000.h5"), "w") as h:
+        g = h.create_group("particles")
+        for name, v in (("x", x), ("z", z), ("curvature", curv), ("m", np.ones_like(x)),
+                        ("rho", np.ones_like(x)), ("kind", np.full(len(x), 2))):
+            g[name] = v
+        h.attrs["time"] = 0.0
+    got = jet_column.row_curvatures(run, a, dz, lam, 1e-4, 1e-2)
+    fails = []
+    ok = len(got) == 4 and all(abs(m + 1) <= 1e-9 and abs(w - c[r]) <= 1e-9 and share == 1.0
+                               for r, share, m, w in got)
+    print(f"{'ok' if ok else 'FAIL'}: --rows on a written snapshot: " + "; ".join(
+        f"row {r} in {share:.0%}, mean {m:+.9f}, wave {w:+.9f} (expected {c[r]:+g})" for r, share, m, w in got))
+    if not ok:
+        fails.append(f"--rows read {got}, expected means -1 and waves {c[:4]}")
+    return fails
+
+
 def main():
     with_h5py()
     sphjet, src, work = sys.argv[1:4]
@@ -131,6 +169,7 @@ def main():
             print(f"{'ok' if ok else 'FAIL'}: the start reads {amp[0]:.9g} a, expected {want:.9g} a within 1e-3")
             if not ok:
                 fails.append(f"the start reads {amp[0]:.6g} a against {want:.6g}")
+    fails += check_row_curvatures(jet_column, work)
     resolved = os.path.join(work, "n10", "jet", "case.toml")
     if os.path.isfile(resolved):
         fails += check_speed_ratio(jet_column, resolved)
