@@ -3,7 +3,7 @@
 (cases/CASE_FORMAT.md, [breakup]): where it starts, how fast it grows, and how quiet the exit is.
 
     /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--to T1] [--rows] [--plot OUT.png]
-        [--wave S0 S1] [--frequency OMEGA] [--at S ...]
+        [--wave S0 S1] [--frequency OMEGA] [--row-curvature S0 S1] [--at S ...]
 
 The samples read are those from T to T1 (default: the run's last), so that two runs can be read
 over the same times while one of them goes on.
@@ -48,6 +48,11 @@ over the same times while one of them goes on.
   nozzle's lattice, n = a/dx rows), medians over the snapshots: a column at rest holds a fixed
   pattern (the lattice's), and a lattice that deforms as the jet stretches shows it in its rows
   first.
+- rows' curvature (--row-curvature S0 S1; a round jet with surface tension and resolution.dx,
+  from the snapshots at T <= t <= T1): on the stretch S0-S1 d0, each row of rings' curvature
+  (the one the surface tension gives it) against the surface's geometric curvature, as a slope
+  (row_curvature): 1 where the row is bent as the surface is, below 0 where it pulls the other
+  way. The rings are found as the nozzle's rows, layers of one z, so it reads where those hold.
 - at (--at S ...): the envelope at those distances (the nearest slice), so that the same
   places can be compared over successive stretches of time (--from, --to).
 - start-up front (the samples before T): at each one the first slice past 1 d0 where r_s departs
@@ -381,6 +386,73 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
              median(in_rows[b]) if b in in_rows else None) for b, v in sorted(per.items())]
 
 
+LAYER_GAP = 0.4     # --row-curvature: rings further apart along the axis than this share of the
+                    # spacing start a new layer (a nozzle row's rings keep one z to within 0.05 of it)
+LAYER_FIT = 4       # the surface's curvature: a parabola through this many layers either side
+MIN_LAYERS = 30     # a snapshot with fewer layers in the stretch is passed over
+
+
+def row_curvature(run, c, t0, t1, s0, s1):
+    """--row-curvature S0 S1: over the snapshots at t0 <= t <= t1, the curvature that the surface
+    tension gives each row of rings against the surface's geometric curvature, on the stretch
+    S0-S1 d0 of a round jet. The rings are found as layers (one nozzle row's, nearly one z: sorted
+    along the axis and split where the gap passes LAYER_GAP spacings, the layers of a/dx rings
+    +-1 kept); row j is each layer's (j+1)-th widest ring. The surface's curvature at a layer
+    (sphjet's sign, -1/a for a cylinder) is that of the parabola through the widest rings of the
+    LAYER_FIT layers either side. Each row's curvature against it, both less their straight line
+    along the stretch (the taper), gives a slope: 1 where the row is bent as the surface is,
+    below 0 where it pulls the other way -> [(row, median slope, first and third quartiles,
+    snapshots)] and the median count of layers, or ([], 0) without MIN_LAYERS layers in any."""
+    import h5py
+    import numpy as np
+    names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
+    d0, dx = c["d0"], c["dx"]
+    n = max(1, round(0.5 * d0 / dx))
+    sign = 1.0 if c["axis"] == "down" else -1.0
+    per, counts = {}, []
+    for name in names:
+        with h5py.File(os.path.join(run, name), "r") as f:
+            t = float(f.attrs["time"])
+            if t < t0 or t > t1:
+                continue
+            g = f["particles"]
+            if "curvature" not in g:
+                raise NoiseError(f"{run}/{name}: no particles/curvature in the snapshot, which --row-curvature reads")
+            on = (g["active"][:] == 1) & (g["kind"][:] == 2)
+            x, z, kap = np.abs(g["x"][:][on]), g["z"][:][on], g["curvature"][:][on]
+        s = sign * (c["z0"] - z) / d0
+        m = (s >= s0) & (s < s1) & (x < d0)
+        x, s, kap = x[m], s[m], kap[m]
+        o = np.argsort(s)
+        x, s, kap = x[o], s[o], kap[o]
+        cuts = np.nonzero(np.diff(s) * d0 / dx > LAYER_GAP)[0] + 1
+        layers = [ly[np.argsort(-x[ly])] for ly in np.split(np.arange(len(s)), cuts) if abs(len(ly) - n) <= 1]
+        if len(layers) < MIN_LAYERS:
+            continue
+        counts.append(len(layers))
+        zl = np.array([s[ly].mean() * d0 for ly in layers])
+        rl = np.array([x[ly[0]] for ly in layers])
+        kg = np.full(len(layers), np.nan)
+        for i in range(LAYER_FIT, len(layers) - LAYER_FIT):
+            q = np.polyfit(zl[i - LAYER_FIT:i + LAYER_FIT + 1] - zl[i], rl[i - LAYER_FIT:i + LAYER_FIT + 1], 2)
+            r, r1, r2 = q[2], q[1], 2.0 * q[0]
+            kg[i] = -(1.0 / (r * math.sqrt(1.0 + r1 * r1)) - r2 / (1.0 + r1 * r1) ** 1.5)
+        for j in range(n + 1):
+            kj = np.array([kap[ly[j]] if len(ly) > j else np.nan for ly in layers])
+            use = ~np.isnan(kg) & ~np.isnan(kj) & (kj != 0.0)
+            if use.sum() < MIN_LAYERS // 2:
+                continue
+            line = np.vstack([np.ones(use.sum()), zl[use]]).T
+            gg = kg[use] - line @ np.linalg.lstsq(line, kg[use], rcond=None)[0]
+            yy = kj[use] - line @ np.linalg.lstsq(line, kj[use], rcond=None)[0]
+            if np.dot(gg, gg) > 0.0:
+                per.setdefault(j, []).append(float(np.dot(gg, yy) / np.dot(gg, gg)))
+    if not counts:
+        return [], 0
+    return ([(j, float(np.median(v)), float(np.percentile(v, 25)), float(np.percentile(v, 75)), len(v))
+             for j, v in sorted(per.items())], int(np.median(counts)))
+
+
 def one_frequency(surface, omega, c, summary):
     """--frequency: prints the amplitude of r_s at omega along the jet (frequency_envelope), its
     growing stretch (fit_growth's rule) and, on a round jet with surface tension, its growth
@@ -414,13 +486,14 @@ def one_frequency(surface, omega, c, summary):
     summary.update({"freq_growth_over_theory": got[0], "freq_C": -got[2]})
 
 
-def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=None):
+def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=None, row_curv=None):
     """Prints the measures of the run directory `run` over its samples at t0 <= t <= t1 (t0 None:
     twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
     read. at: distances s/d0 at which to print the envelope (the nearest slice). show_rows: print
     the rows' pressures and radii along the jet (noise_along; round jets). frequency: None or
-    the angular frequency [1/s] whose own amplitude and growth to read. NoiseError for
+    the angular frequency [1/s] whose own amplitude and growth to read. row_curv: None or (s0,
+    s1), the stretch whose rows' curvature to read (row_curvature; round jets). NoiseError for
     a run without the files or samples it needs."""
     try:
         c = read_case(run)
@@ -554,6 +627,20 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=
             summary.update({"wave_ka": ka, "wave_speed": c_lab})
     if frequency is not None:
         one_frequency(surface, frequency, c, summary)
+    if row_curv is not None:
+        if not (c["round"] and sig > 0 and c["dx"]):
+            print("rows' curvature: only for a round jet with surface tension and resolution.dx in its case.toml")
+        else:
+            got, layers = row_curvature(run, c, t0, t1, *row_curv)
+            if not got:
+                print(f"rows' curvature over s = {row_curv[0]:g}-{row_curv[1]:g} d0: no snapshot with {MIN_LAYERS} "
+                      "layers of rings there (the rings no longer lie in layers, or no snapshots)")
+            else:
+                print(f"rows' curvature over s = {row_curv[0]:g}-{row_curv[1]:g} d0 ({layers} layers of rings, median "
+                      "over the snapshots): each row's against the surface's geometric curvature (1 bent as the "
+                      "surface, below 0 the other way), row 0 the surface's: " + "; ".join(
+                          f"row {j} {m:+.2f} ({lo:+.2f} to {hi:+.2f}, {k} snapshots)" for j, m, lo, hi, k in got))
+                summary.update({f"row{j}_curvature_slope": m for j, m, _lo, _hi, _k in got})
     spec = spectrum(surface, d0, a)
     if spec:
         kpk, apk = max(spec, key=lambda e: e[1])
@@ -657,6 +744,9 @@ def main(argv=None):
                          "over that wave's own Weber growth")
     ap.add_argument("--wave", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read the dominant wave of r_s over s = S0-S1 d0 (its ka and speed)")
+    ap.add_argument("--row-curvature", nargs=2, type=float, default=None, metavar=("S0", "S1"),
+                    help="read, from the snapshots, how each row of rings over s = S0-S1 d0 is bent by the surface "
+                         "tension against the surface's geometric curvature (round jets)")
     args = ap.parse_args(argv)
     if args.t0 is not None and args.t1 is not None and args.t1 < args.t0:
         ap.error(f"--to {args.t1:g} is before --from {args.t0:g}")
@@ -664,8 +754,12 @@ def main(argv=None):
         ap.error(f"--frequency needs an angular frequency above 0 (1/s), got {args.frequency:g}")
     if args.wave is not None and not 0.0 <= args.wave[0] < args.wave[1]:
         ap.error(f"--wave S0 S1 needs 0 <= S0 < S1 (d0), got {args.wave[0]:g} {args.wave[1]:g}")
+    if args.row_curvature is not None and not 0.0 <= args.row_curvature[0] < args.row_curvature[1]:
+        ap.error(f"--row-curvature S0 S1 needs 0 <= S0 < S1 (d0), got {args.row_curvature[0]:g} "
+                 f"{args.row_curvature[1]:g}")
     try:
-        got = analyse(args.run, args.t0, args.wave, args.t1, args.at, args.rows, args.frequency)
+        got = analyse(args.run, args.t0, args.wave, args.t1, args.at, args.rows, args.frequency,
+                      args.row_curvature)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

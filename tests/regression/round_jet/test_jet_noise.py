@@ -55,6 +55,14 @@ quarters, with water's surface tension and with half of it, and a run with no [g
 1% against that; with gz = 0 no such line; the constant growth above must read above 2
 (check_falling).
 
+With `--row-curvature` (jet_noise.row_curvature) on snapshots of layers of five rings 1.3 dx
+apart along the axis (the rings of a layer within 0.04 dx of its z, a layer of three rings
+among them, to be passed over), the widest at r = a - dx/2 + 1e-2 a cos(k z), ka 0.5, and
+rows 0-3 given c_j times that surface's exact curvature, c_j = 1, 0.5, -2, 3 (row 4 none): the
+slopes must be c_j within 2% (the parabola through nine layers reads the curvature of a wave
+of 48 layers to 0.6%: measured), the layers counted, rows 0-3 only; on snapshots without the
+curvature field it exits 1 naming it (check_row_curvature).
+
 With `--to 0.02995` the first 200 samples only (20 whole periods), k_s and C as above; `--to`
 before `--from` refused with a message naming both.
 
@@ -406,6 +414,56 @@ def check_wave_falling():
     return failures
 
 
+def check_row_curvature():
+    """--row-curvature on layers of rings bent by known multiples of the surface's curvature (the
+    docstring's check): a list of failures."""
+    import h5py
+    import numpy as np
+    sys.path.insert(0, os.path.join(REPO, "tools"))
+    import jet_noise
+    fails = []
+    c = {"d0": D0, "dx": DX, "axis": "down", "z0": 0.11}
+    amp, k = 1e-2 * A, 0.5 / A
+    factors = [1.0, 0.5, -2.0, 3.0, 0.0]
+    s_layers = np.arange(5.0, 45.0, 0.13)   # 1.3 dx apart, in d0
+    xs, zs, ks = [], [], []
+    for i, sl in enumerate(s_layers):
+        z = 0.11 - sl * D0
+        r0 = A - 0.5 * DX + amp * math.cos(k * z)
+        r1, r2 = -amp * k * math.sin(k * z), -amp * k * k * math.cos(k * z)
+        kappa = -(1.0 / (r0 * math.sqrt(1 + r1 * r1)) - r2 / (1 + r1 * r1) ** 1.5)
+        rings = 3 if i == 100 else 5
+        for j in range(rings):
+            xs.append(r0 - j * 0.9 * DX)
+            zs.append(z + 0.04 * DX * ((j % 3) - 1))
+            ks.append(factors[j] * kappa)
+    with tempfile.TemporaryDirectory() as d:
+        for n in range(3):
+            with h5py.File(os.path.join(d, f"snap_{n:06d}.h5"), "w") as f:
+                f.attrs["time"] = 0.01 * n
+                g = f.create_group("particles")
+                g["x"], g["z"], g["curvature"] = np.array(xs), np.array(zs), np.array(ks)
+                g["active"] = np.ones(len(xs), dtype=np.int32)
+                g["kind"] = np.full(len(xs), 2, dtype=np.int32)
+        got, layers = jet_noise.row_curvature(d, c, 0.0, 1.0, 10.0, 40.0)
+        print("--row-curvature on the built layers: " + "; ".join(f"row {j} {m:+.4f}" for j, m, *_ in got)
+              + f"; {layers} layers")
+        want_layers = int(np.sum((s_layers >= 10.0) & (s_layers < 40.0))) - 1   # the three-ring layer
+        if [j for j, *_ in got] != [0, 1, 2, 3] or layers != want_layers:
+            fails.append(f"--row-curvature: rows {[j for j, *_ in got]} over {layers} layers, built rows 0-3 "
+                         f"over {want_layers}")
+        for j, m, _lo, _hi, n in got:
+            if j < 4 and not (abs(m / factors[j] - 1) <= 0.02 and n == 3):
+                fails.append(f"--row-curvature: row {j} slope {m:.4f} over {n} snapshots, built {factors[j]} (2%), 3")
+    with tempfile.TemporaryDirectory() as d:
+        write_run(d)
+        write_snapshots(d)   # no curvature field
+        out = subprocess.run([PY, TOOL, d, "--from", "0", "--row-curvature", "2", "8"], capture_output=True, text=True)
+        if out.returncode != 1 or "curvature" not in out.stderr:
+            fails.append(f"--row-curvature without the curvature field: exit {out.returncode}, {out.stderr.strip()!r}")
+    return fails
+
+
 def main():
     if os.path.realpath(sys.executable) != os.path.realpath(PY):   # h5py and numpy are Debian's
         os.execv(PY, [PY, os.path.abspath(__file__)])
@@ -478,6 +536,7 @@ def main():
     failures += check_falling()
     failures += check_wave_falling()
     failures += check_frequency()
+    failures += check_row_curvature()
     for f in failures:
         print("FAIL: " + f)
     print("OK" if not failures else f"{len(failures)} failure(s)")
