@@ -20,7 +20,7 @@ Weber's rate takes from eps to --fit-to, and two of its e-folds more.
 
 A falling jet speeds up from U0 to U and each ring keeps its mass and volume: the rings move
 U/U0 times as far apart along the axis and the radius and the radial spacing shrink as
-(U0/U)^1/2, while h stays the nozzle's (measured on the 0.78 m/s jet at d0/dx 16, 75 d0 down:
+(U0/U)^1/2, while h stays the nozzle's (measured on the 0.78 m/s jet at d0/dx 16, 35a8c29, 75 d0 down:
 rings 1.50 spacings apart on the axis, radius 0.796 a, against U/U0 = 1.55). --speed-ratio R
 builds the column on that lattice: radius a R^-1/2 (ka and Weber's rate are the column's own),
 R^-1/2 of the spacing across, R times it along the axis, h and the step as at R = 1. At R = 1 the

@@ -387,7 +387,8 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
 
 
 LAYER_GAP = 0.4     # --row-curvature: rings further apart along the axis than this share of the
-                    # spacing start a new layer (a nozzle row's rings keep one z to within 0.05 of it)
+                    # spacing start a new layer (a nozzle row's rings stay much closer in z than
+                    # that while the lattice holds; the layers are about a spacing apart or more)
 LAYER_FIT = 4       # the surface's curvature: a parabola through this many layers either side
 MIN_LAYERS = 30     # a snapshot with fewer layers in the stretch is passed over
 
@@ -395,9 +396,9 @@ MIN_LAYERS = 30     # a snapshot with fewer layers in the stretch is passed over
 def row_curvature(run, c, t0, t1, s0, s1):
     """--row-curvature S0 S1: over the snapshots at t0 <= t <= t1, the curvature that the surface
     tension gives each row of rings against the surface's geometric curvature, on the stretch
-    S0-S1 d0 of a round jet. The rings are found as layers (one nozzle row's, nearly one z: sorted
-    along the axis and split where the gap passes LAYER_GAP spacings, the layers of a/dx rings
-    +-1 kept); row j is each layer's (j+1)-th widest ring. The surface's curvature at a layer
+    S0-S1 d0 of a round jet (its fluid within d0 of the axis). The rings are found as layers (one
+    nozzle row's, nearly one z: sorted along the axis and split where the gap passes LAYER_GAP
+    spacings, the layers of a/dx rings +-1 kept); row j is each layer's (j+1)-th widest ring. The surface's curvature at a layer
     (sphjet's sign, -1/a for a cylinder) is that of the parabola through the widest rings of the
     LAYER_FIT layers either side. Each row's curvature against it, both less their straight line
     along the stretch (the taper), gives a slope: 1 where the row is bent as the surface is,
