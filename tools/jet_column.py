@@ -208,7 +208,8 @@ def row_curvatures(run, a, dz, wavelength, lo, hi):
     curvature is not zero (the surface band). The geometric wave is the column's: r = a + A
     cos(kz) bends the surface by kappa' = A (1 - (ka)^2) / a^2 in sphjet's sign (a cylinder's
     kappa is -1/a), so that 1 is right; the wave is the first Fourier mode over the period,
-    taken in phase with the surface's."""
+    taken in phase with the surface's (it means something for a row in the band in every slice;
+    --rows prints it only for those)."""
     import numpy as np
     k = 2.0 * math.pi / wavelength
     nb = max(1, int(round(wavelength / dz)))
@@ -339,7 +340,8 @@ def main(argv=None):
             print(f"the rows' curvature over the snapshots with the wave at {a.fit_from:g}-{a.fit_to:g} a (medians; "
                   "row 0 the surface's; the share of its slices with a curvature; its mean times a, -1 a "
                   "cylinder's; its wave over the geometric one, 1 right):")
-            print("\n".join(f"  row {j}: in {share:.0%} of the slices, mean {m:+.3f}, wave {w:+.3f}"
+            print("\n".join(f"  row {j}: in {share:.0%} of the slices, mean {m:+.3f}, "
+                            + (f"wave {w:+.3f}" if share == 1.0 else "wave not read (a row partly in the band)")
                             for j, share, m, w in got) or "  no snapshot in that range")
         if rms > ONE_EXPONENTIAL:
             print(f"not one exponential over the fit's range: the rms residual of ln A is {rms:.3g} "
