@@ -138,8 +138,9 @@ class Jet:
     def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU, one_frequency=False):
         self.u, self.a0, self.g, self.rho, self.sigma, self.mu = u, a0, g, rho, sigma, mu
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
-        speed = [math.sqrt(u * u + 2.0 * g * i * self.dz) for i in range(GRID)]
-        radius = [a0 * math.sqrt(u / uz) for uz in speed]
+        # the grid points' speed and radius (local()'s, on the grid)
+        self.speed = speed = [math.sqrt(u * u + 2.0 * g * i * self.dz) for i in range(GRID)]
+        self.radius = radius = [a0 * math.sqrt(u / uz) for uz in speed]
         if not one_frequency:
             flat = omega_max(a0, rho, sigma, mu) / u if g == 0.0 else None   # one rate along a jet without gravity
             self.n = cumulate([flat if flat is not None else omega_max(a, rho, sigma, mu) / uz
@@ -176,9 +177,8 @@ class Jet:
         """Each grid point's speed, radius, Ohnesorge number and capillary rate scale, the same for
         every frequency."""
         rho, sigma, mu = self.rho, self.sigma, self.mu
-        speed = [math.sqrt(self.u * self.u + 2.0 * self.g * i * self.dz) for i in range(GRID)]
         return [(uz, a, mu / math.sqrt(rho * sigma * a), math.sqrt(sigma / (rho * a ** 3)))
-                for uz, a in ((uz, self.a0 * math.sqrt(self.u / uz)) for uz in speed)]
+                for uz, a in zip(self.speed, self.radius)]
 
     def wave_exponent(self, omega, points=None):
         """N_omega on the grid (a list, 0 at the orifice): the growth of the one wave of angular
