@@ -411,13 +411,20 @@ def growth(a):
 
 
 # ---------------------------------------------------------------- roughness
-def row_radii(d, period, dx):
-    """The surface radius of each row of a periodic column (period in z, rows dx apart): the
-    largest |x| in each of round(period / dx) slices of z; None when a slice is empty (the
-    column has broken)."""
+def row_slices(d, period, dx):
+    """The slice of z each particle of a periodic column lies in (period in z, rows dx apart):
+    (round(period / dx) slices, each particle's slice index)."""
     import numpy as np
     nb = max(1, int(round(period / dx)))
-    b = np.floor(np.mod(d["z"], period) / period * nb).astype(int) % nb
+    return nb, np.floor(np.mod(d["z"], period) / period * nb).astype(int) % nb
+
+
+def row_radii(d, period, dx):
+    """The surface radius of each row of a periodic column (period in z, rows dx apart): the
+    largest |x| in each of row_slices' slices of z; None when a slice is empty (the column has
+    broken)."""
+    import numpy as np
+    nb, b = row_slices(d, period, dx)
     rs = np.full(nb, np.nan)
     np.fmax.at(rs, b, np.abs(d["x"]))
     return None if np.isnan(rs).any() else rs

@@ -212,20 +212,17 @@ def row_curvatures(run, a, dz, wavelength, lo, hi):
     --rows prints it only for those)."""
     import numpy as np
     k = 2.0 * math.pi / wavelength
-    nb = max(1, int(round(wavelength / dz)))
-    zc = (np.arange(nb) + 0.5) * wavelength / nb
-    phase = np.exp(-1j * k * zc)
     per = {}
     for d in axisymmetric.snapshots(run):
         f = axisymmetric.fluid(d)
         if "curvature" not in f:
             raise ColumnError(f"{run}: the snapshots hold no curvature (a run older than the field)")
-        b = np.floor(np.mod(f["z"], wavelength) / wavelength * nb).astype(int) % nb
-        rows = [np.nonzero(b == i)[0] for i in range(nb)]
-        if any(len(r) == 0 for r in rows):
+        rs = axisymmetric.row_radii(f, wavelength, dz)
+        if rs is None:   # a slice is empty: the column has broken
             break
-        rows = [r[np.argsort(-f["x"][r])] for r in rows]
-        rs = np.array([f["x"][r[0]] for r in rows])
+        nb, b = axisymmetric.row_slices(f, wavelength, dz)
+        phase = np.exp(-1j * k * (np.arange(nb) + 0.5) * wavelength / nb)   # at the slices' centres
+        rows = [r[np.argsort(-np.abs(f["x"][r]))] for r in (np.nonzero(b == i)[0] for i in range(nb))]
         wave = 2.0 * np.mean((rs - rs.mean()) * phase)
         if not lo <= abs(wave) / a <= hi:
             continue
