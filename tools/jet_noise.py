@@ -317,6 +317,24 @@ def dominant_wave(surface, s0, s1):
     return 0.5 * k[j], float(w[i]), float(w[i] / k[j]), len(times)
 
 
+def snapshot_names(run):
+    """The run's snapshot files (snap_*.h5), in order."""
+    return sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
+
+
+def fluid_snapshots(run, t0, t1):
+    """Each snapshot of the run at t0 <= t <= t1: (file name, t, its particles group, the mask of
+    its active fluid particles), while the file is open."""
+    import h5py
+    for name in snapshot_names(run):
+        with h5py.File(os.path.join(run, name), "r") as f:
+            t = float(f.attrs["time"])
+            if t < t0 or t > t1:
+                continue
+            g = f["particles"]
+            yield name, t, g, (g["active"][:] == 1) & (g["kind"][:] == 2)  # fluid (ParticleKind)
+
+
 def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf):
     """[(s0 of a 2 d0 slice, median p std / (sigma/a), median axis order or None, rows or None,
     median p std about the rows' own means / (sigma/a) or None)]
@@ -332,28 +350,20 @@ def noise_along(run, z0, d0, p_unit, t0, jet, axis_dx=None, u0=None, t1=math.inf
     [j, j + 1) a_s / n. The last, pressure std about the rows' means, is the slice's spread with
     the rows' fixed pattern taken out (each particle's pressure less its row's mean): what is
     left is noise, where a lattice of many rows holds a steady pattern of its own."""
-    names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
-    if not names:
+    if not snapshot_names(run):
         return None
-    import h5py
     import numpy as np
     times = [float(r["time"]) for r in jet]
     per, order, rows, in_rows = {}, {}, {}, {}
     n_rows = max(1, round(0.5 * d0 / axis_dx)) if axis_dx else 0
-    for n in names:
-        with h5py.File(os.path.join(run, n), "r") as f:
-            t = float(f.attrs["time"])
-            if t < t0 or t > t1:
-                continue
-            row = jet[min(range(len(times)), key=lambda i: abs(times[i] - t))]
-            if row["broken"] != "1":
-                continue
-            g = f["particles"]
-            on = (g["active"][:] == 1) & (g["kind"][:] == 2)  # fluid (ParticleKind)
-            s = (z0 - g["z"][:][on]) / d0
-            p = g["p"][:][on]
-            if axis_dx:
-                r, w = np.abs(g["x"][:][on]), g["w"][:][on]
+    for _name, t, g, on in fluid_snapshots(run, t0, t1):
+        row = jet[min(range(len(times)), key=lambda i: abs(times[i] - t))]
+        if row["broken"] != "1":
+            continue
+        s = (z0 - g["z"][:][on]) / d0
+        p = g["p"][:][on]
+        if axis_dx:
+            r, w = np.abs(g["x"][:][on]), g["w"][:][on]
         length = float(row["L_over_d0"])
         for b in range(int(length // 2.0)):
             m = (s >= 2.0 * b) & (s < 2.0 * b + 2.0)
@@ -398,29 +408,21 @@ def row_curvature(run, c, t0, t1, s0, s1):
     tension gives each row of rings against the surface's geometric curvature, on the stretch
     S0-S1 d0 of a round jet (its fluid within d0 of the axis). The rings are found as layers (one
     nozzle row's, nearly one z: sorted along the axis and split where the gap passes LAYER_GAP
-    spacings, the layers of a/dx rings +-1 kept); row j is each layer's (j+1)-th widest ring. The surface's curvature at a layer
-    (sphjet's sign, -1/a for a cylinder) is that of the parabola through the widest rings of the
-    LAYER_FIT layers either side. Each row's curvature against it, both less their straight line
+    spacings, the layers of a/dx rings +-1 kept); row j is each layer's (j+1)-th widest ring.
+    The surface's curvature at a layer (sphjet's sign, -1/a for a cylinder) is that of the
+    parabola through the widest rings of the LAYER_FIT layers either side. Each row's curvature against it, both less their straight line
     along the stretch (the taper), gives a slope: 1 where the row is bent as the surface is,
     below 0 where it pulls the other way -> [(row, median slope, first and third quartiles,
     snapshots)] and the median count of layers, or ([], 0) without MIN_LAYERS layers in any."""
-    import h5py
     import numpy as np
-    names = sorted(n for n in os.listdir(run) if n.startswith("snap_") and n.endswith(".h5"))
     d0, dx = c["d0"], c["dx"]
     n = max(1, round(0.5 * d0 / dx))
     sign = 1.0 if c["axis"] == "down" else -1.0
     per, counts = {}, []
-    for name in names:
-        with h5py.File(os.path.join(run, name), "r") as f:
-            t = float(f.attrs["time"])
-            if t < t0 or t > t1:
-                continue
-            g = f["particles"]
-            if "curvature" not in g:
-                raise NoiseError(f"{run}/{name}: no particles/curvature in the snapshot, which --row-curvature reads")
-            on = (g["active"][:] == 1) & (g["kind"][:] == 2)
-            x, z, kap = np.abs(g["x"][:][on]), g["z"][:][on], g["curvature"][:][on]
+    for name, _t, g, on in fluid_snapshots(run, t0, t1):
+        if "curvature" not in g:
+            raise NoiseError(f"{run}/{name}: no particles/curvature in the snapshot, which --row-curvature reads")
+        x, z, kap = np.abs(g["x"][:][on]), g["z"][:][on], g["curvature"][:][on]
         s = sign * (c["z0"] - z) / d0
         m = (s >= s0) & (s < s1) & (x < d0)
         x, s, kap = x[m], s[m], kap[m]
@@ -443,9 +445,8 @@ def row_curvature(run, c, t0, t1, s0, s1):
             use = ~np.isnan(kg) & ~np.isnan(kj) & (kj != 0.0)
             if use.sum() < MIN_LAYERS // 2:
                 continue
-            line = np.vstack([np.ones(use.sum()), zl[use]]).T
-            gg = kg[use] - line @ np.linalg.lstsq(line, kg[use], rcond=None)[0]
-            yy = kj[use] - line @ np.linalg.lstsq(line, kj[use], rcond=None)[0]
+            zu = zl[use]
+            gg, yy = (v - np.polyval(np.polyfit(zu, v, 1), zu) for v in (kg[use], kj[use]))   # less the taper
             if np.dot(gg, gg) > 0.0:
                 per.setdefault(j, []).append(float(np.dot(gg, yy) / np.dot(gg, gg)))
     if not counts:
