@@ -66,7 +66,7 @@ def check_speed_ratio(jet_column, resolved):
     if not ok:
         fails.append("--speed-ratio 1 changes the column's case")
     r = 1.5
-    cols = [tomllib.loads(jet_column.column_case(jet, "jet", 10, 0.7, EPS, 5e-3, ratio)[0]) for ratio in (1.0, r)]
+    cols = [tomllib.loads(text) for text in (one[0], jet_column.column_case(jet, "jet", 10, 0.7, EPS, 5e-3, r)[0])]
     res = [c["resolution"] for c in cols]
     rad = [c["fluid"]["cylinder"][0]["radius"] for c in cols]
     got = {"radius": rad[1] / rad[0], "dx": res[1]["dx"] / res[0]["dx"], "dz": res[1]["dz"] / res[0]["dz"],
