@@ -80,6 +80,7 @@ module sphjet_types
     integer(c_int) :: curvature = 0          !< free-surface curvature: 0 the normals' divergence, 1 surface fit
     integer(c_int) :: free_bodies = 0        !< 1: each free body's net surface-tension force removed
     integer(c_int) :: thin_rings = 0         !< 1: free rings thinner than the kernel take the normals' curvature
+    integer(c_int) :: fit_points_min = 3     !< the fewest points a surface fit may pass through (0-3: a parabola's 3)
     real(c_double) :: sigma = 0.0_rp         !< surface tension [N/m]; 0 = off
   end type sph_surface_tension_t
 

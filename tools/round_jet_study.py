@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--relaxed-exit] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--relaxed-exit] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--relaxed-exit] [--out cases/round_jet]
       [--set-name mc paper] [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -89,6 +89,10 @@ jet at d0/dx 20 flew back up against gravity and broke the jet ("Fragments that 
 ring narrower than a tube of radius 1.5 h the normals' curvature instead of the fit
 (surface_tension.thin_rings_normals): the fit pulled such a ring, flung out from a slow falling
 jet at d0/dx 20, back onto the jet and stopped the run ("Thin rings let go").
+--fit-points N (with the surface fit; suffix _fpN) refuses surface fits through fewer than N
+points (surface_tension.fit_points_min): a row at the edge of the kernel's reach of the surface
+sees three, and where a falling jet has sped up their parabola bent that row the wrong way
+("The jets' own capillary growth").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
 to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
 mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
@@ -716,7 +720,8 @@ def plan(opts):
     fixed_step, step_cap: F of a fixed or capped step F cfl h / c0 (step_sets), None for neither;
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
     bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
-    thin_rings: surface_tension.thin_rings_normals; relaxed_exit: the mc runs' plugs at the tube's
+    thin_rings: surface_tension.thin_rings_normals; fit_points: surface_tension.fit_points_min
+    (None: the key's 3); relaxed_exit: the mc runs' plugs at the tube's
     relaxed state (relaxed_exit), their info with "tube": (U, d0) the measured jet's (L_meas is
     over that d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
@@ -765,6 +770,8 @@ def plan(opts):
         extra.append("surface_tension.balance_free_bodies=true")
     if opts.thin_rings:
         extra.append("surface_tension.thin_rings_normals=true")
+    if opts.fit_points is not None:
+        extra.append(f"surface_tension.fit_points_min={opts.fit_points}")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -819,6 +826,7 @@ def study_flags(opts):
             + (" --bound-xsph" if opts.bound_xsph else "")
             + (" --free-bodies" if opts.free_bodies else "")
             + (" --thin-rings" if opts.thin_rings else "")
+            + ("" if opts.fit_points is None else f" --fit-points {opts.fit_points}")
             + (" --relaxed-exit" if opts.relaxed_exit else "")
             + ("" if opts.box_radius == BOX_RADIUS_D0 else f" --box-radius {opts.box_radius:g}"))
     if is_quiet_jets(opts):
@@ -841,7 +849,8 @@ def study_dir(opts):
             + ("" if opts.step_cap is None else f"_cap{opts.step_cap:g}") + ("_land" if opts.landed else "")
             + ("" if opts.margin is None else f"_margin{opts.margin:g}")
             + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else "")
-            + ("_tr" if opts.thin_rings else "") + ("_rx" if opts.relaxed_exit else "")
+            + ("_tr" if opts.thin_rings else "")
+            + ("" if opts.fit_points is None else f"_fp{opts.fit_points}") + ("_rx" if opts.relaxed_exit else "")
             + ("" if opts.box_radius == BOX_RADIUS_D0 else f"_box{opts.box_radius:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
@@ -1322,6 +1331,10 @@ def parse(argv=None):
                        help="a free ring narrower than a tube of radius 1.5 h takes the normals' curvature "
                             "instead of the surface fit (surface_tension.thin_rings_normals; with the "
                             "surface fit: --axis-pair rings_fit or --quiet-jets; suffix _tr)")
+        p.add_argument("--fit-points", type=int, default=None, metavar="N",
+                       help="surface fits through fewer than N points refused, N > 3 "
+                            "(surface_tension.fit_points_min; with the surface fit: --axis-pair rings_fit "
+                            "or --quiet-jets; suffix _fpN)")
         p.add_argument("--relaxed-exit", action="store_true",
                        help="the measured jets' plugs at the speed and diameter to which the tube's "
                             "parabolic exit profile relaxes (x = U_f / U from x - (2/We_d) x^(-1/2) = "
@@ -1388,6 +1401,9 @@ def parse(argv=None):
     if args.thin_rings and args.axis_pair != "rings_fit":
         ap.error("--thin-rings takes thin free rings off the surface fit (surface_tension.thin_rings_normals): "
                  "give --axis-pair rings_fit or --quiet-jets")
+    if args.fit_points is not None and not (args.fit_points > 3 and args.axis_pair == "rings_fit"):
+        ap.error(f"--fit-points {args.fit_points}: expected a number of points above 3 with the surface fit "
+                 "(surface_tension.fit_points_min): give --axis-pair rings_fit or --quiet-jets")
     if args.leapfrog and not args.quiet_exit:
         ap.error("--leapfrog needs the bulk viscosity of --quiet-exit (numerics.integrator = \"leapfrog\" "
                  "is refused without numerics.bulk_viscosity > 0)")

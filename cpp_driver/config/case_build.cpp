@@ -373,6 +373,11 @@ void read_domain(const Ctx& ctx, const Section& top, CaseSpec& spec) {
                              std::string("domain.geometry = \"") + to_string(p.geometry) +
                                  "\", surface_tension.curvature = \"" + to_string(p.curvature) + "\"");
     }
+    if (const auto f = st.integer("fit_points_min"); f && f->value > 3 && p.curvature != CurvatureModel::SurfaceFit)
+        throw InputError(ctx.where(st.key_path("fit_points_min")),
+                         "surface_tension.fit_points_min refuses surface fits through fewer points",
+                         "surface_tension.curvature = \"surface_fit\" with surface_tension.fit_points_min > 3",
+                         "surface_tension.curvature = \"" + to_string(p.curvature) + "\"");
 }
 
 // [[obstacle]], [[wall]] and [gate]: boundary particles in the box.

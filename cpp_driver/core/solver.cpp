@@ -77,6 +77,7 @@ sph_params_t core_params(const SimParams& p, const OutputSpec& out, const Domain
     c.surface_tension.curvature = static_cast<int>(p.curvature);
     c.surface_tension.free_bodies = p.balance_free_bodies ? 1 : 0;
     c.surface_tension.thin_rings = p.thin_rings_normals ? 1 : 0;
+    c.surface_tension.fit_points_min = p.fit_points_min;
     c.surface_tension.sigma = p.sigma;
 
     c.nozzle.u = p.drive_u;

@@ -253,6 +253,14 @@ const Param kParams[] = {
             "which draws a tube narrower than the kernel's reach too sharply bent",
      .legacy = "(none)", .h5_optional = true},
 
+    {.key = "surface_tension.fit_points_min", .attr = "fit_points_min", .type = K::Int, .unit = "points",
+     .member = member<&SimParams::fit_points_min>(), .range = between(3, kNoLimit), .def = "3",
+     .allowed = "needs `curvature = \"surface_fit\"` when above 3",
+     .doc = "the fewest outer-row points a surface fit may pass through: a fit through fewer is refused and its "
+            "particle keeps the normals' curvature; with the rings pair's `neighbour_mean` it enters no mean and "
+            "takes its neighbours'. 3 determine the parabola and no more",
+     .legacy = "(none)", .h5_optional = true},
+
     // [gravity]
     {.key = "gravity.gx", .attr = "gx", .type = K::Float, .unit = "m/s^2", .member = member<&SimParams::gx>(),
      .doc = "gravity along x", .legacy = "(none: legacy fixes g = (0, -9.81))", .echo = "m/s^2"},

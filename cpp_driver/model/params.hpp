@@ -281,6 +281,9 @@ struct SimParams {
     // Free rings thinner than the kernel's reach take the normals' curvature (case key
     // surface_tension.thin_rings_normals; fortran_core/loops/free_body_loops.f90).
     bool thin_rings_normals = false;
+    // The fewest points a surface fit may pass through (case key surface_tension.fit_points_min;
+    // fortran_core/physics/surface_tension.f90).
+    int fit_points_min = 3;
 
     // Sound speed at rest, from B: c0 = sqrt(gamma B / rho0)
     [[nodiscard]] double c0() const;

@@ -109,6 +109,7 @@ contains
       .and. any(prm%surface_tension%rings_curvature == [RINGS_CURVATURE_MEAN, RINGS_CURVATURE_OWN]) &
       .and. any(prm%surface_tension%curvature_normals == [CURV_NORMALS_ALL, CURV_NORMALS_BAND]) &
       .and. any(prm%surface_tension%curvature == [CURVATURE_NORMALS, CURVATURE_SURFACE_FIT]) &
+      .and. prm%surface_tension%fit_points_min >= 0 &
       .and. prm%geometry%axis_m1 >= 0.0_rp .and. prm%numerics%density_diffusion >= 0.0_rp &
       .and. prm%numerics%bulk_viscosity >= 0.0_rp .and. prm%viscosity%artificial_alpha >= 0.0_rp &
       .and. prm%numerics%shifting >= 0.0_rp &
@@ -357,32 +358,37 @@ contains
 
   !> The surface fit's parabola (physics/surface_tension.f90: csf_fit_point, csf_fit_curvature)
   !> through n points (px, pz) with weights om, seen from a particle at the origin with unit
-  !> normal (nx, nz) and particle spacing sqrt(V) = spacing: its in-plane curvature kin, the
-  !> radial part nrx of its normal and its point's offset c0 along the normal; fitted = 0 where
-  !> the fit is refused (kin, nrx, c0 then 0), 1 where it is taken.
-  function sph_surface_fit(n, px, pz, om, nx, nz, spacing, kin, nrx, c0, fitted) result(status) &
-      bind(C, name="sph_surface_fit")
+  !> normal (nx, nz) and particle spacing sqrt(V) = spacing, refused through fewer than
+  !> points_min points (surface_tension.fit_points_min; 3 or less: the three a parabola needs,
+  !> no more): its in-plane curvature kin,
+  !> the radial part nrx of its normal and its point's offset c0 along the normal; fitted = 0
+  !> where the fit is refused (kin, nrx, c0 then 0), 1 where it is taken, 2 where it is refused
+  !> for too few points.
+  function sph_surface_fit(n, px, pz, om, nx, nz, spacing, points_min, kin, nrx, c0, fitted) &
+      result(status) bind(C, name="sph_surface_fit")
     integer(c_int64_t), value :: n
     real(c_double), intent(in) :: px(n), pz(n), om(n)
     real(c_double), value :: nx, nz, spacing
+    integer(c_int), value :: points_min
     real(c_double), intent(out) :: kin, nrx, c0
     integer(c_int), intent(out) :: fitted
     integer(c_int) :: status
     real(rp) :: fit(N_FIT)
-    logical :: ok
+    logical :: ok, sparse
     integer(i8) :: i
     status = SPH_ERR_ARGUMENT
     kin = 0.0_rp
     nrx = 0.0_rp
     c0 = 0.0_rp
     fitted = 0
-    if (n < 0 .or. .not. (spacing > 0.0_rp) .or. abs(hypot(nx, nz) - 1.0_rp) > 1.0e-12_rp) return
+    if (n < 0 .or. .not. (spacing > 0.0_rp) .or. abs(hypot(nx, nz) - 1.0_rp) > 1.0e-12_rp &
+        .or. points_min < 0) return
     fit = 0.0_rp
     do i = 1, n
       call csf_fit_point(om(i), px(i), pz(i), nx, nz, fit)
     end do
-    call csf_fit_curvature(fit, nx, nz, spacing, kin, nrx, c0, ok)   ! refused: nothing set
-    fitted = merge(1, 0, ok)
+    call csf_fit_curvature(fit, nx, nz, spacing, points_min, kin, nrx, c0, ok, sparse)   ! refused: nothing set
+    fitted = merge(1, merge(2, 0, sparse), ok)
     status = SPH_OK
   end function sph_surface_fit
 

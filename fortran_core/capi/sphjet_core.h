@@ -91,6 +91,7 @@ typedef struct sph_surface_tension_t {
     int curvature;            /* free-surface curvature: 0 the normals' divergence, 1 surface fit */
     int free_bodies;          /* 1: each free body's net surface-tension force removed (surface_tension_loops.f90) */
     int thin_rings;           /* 1: free rings thinner than the kernel take the normals' curvature (free_body_loops.f90) */
+    int fit_points_min;       /* the fewest points a surface fit may pass through, >= 0; 0-3 the three a parabola needs */
     double sigma;             /* surface tension [N/m]; 0 = off */
 } sph_surface_tension_t;
 
@@ -221,7 +222,8 @@ int sph_kernel_eval(int kernel, double h, int64_t n, const double* r, double* w,
    along the normal; fitted = 0 where the fit is refused (fewer than three distinct points along
    the tangent, or a radius of curvature below one spacing), the outputs then 0. */
 int sph_surface_fit(int64_t n, const double* px, const double* pz, const double* om, double nx,
-                    double nz, double spacing, double* kin, double* nrx, double* c0, int* fitted);
+                    double nz, double spacing, int points_min, double* kin, double* nrx, double* c0,
+                    int* fitted);
 int sph_neighbour_pairs(const sph_params_t* prm, const sph_arrays_t* arr, int64_t capacity,
                         int64_t* pi_, int64_t* pj_, int64_t* npairs);
 int sph_eos(const sph_params_t* prm, int64_t n, const double* rho, double* p, double* c);

@@ -78,8 +78,8 @@ contains
   end subroutine bodies_of
 
   !> The slots (images too) of the free rings thinner than THIN_RING_H h (above) taken out of the
-  !> surface fit: outer(k) = 0 and fit(1, k) = 0, so that their particles keep the normals'
-  !> curvature; v the slots' meridian areas m / rho.
+  !> surface fit: outer(k) = 0 and fit(:, k) = 0 (no self point, no count), so that their
+  !> particles keep the normals' curvature; v the slots' meridian areas m / rho.
   subroutine thin_free_rings(prm, s, v, root, held, outer, fit)
     type(sph_params_t), intent(in) :: prm
     type(sorted_t), intent(in) :: s
@@ -106,7 +106,7 @@ contains
       a = root(k)
       if (held(a) .or. on_axis(a) .or. area(a) >= pi * (THIN_RING_H * h)**2) cycle
       outer(k) = 0.0_rp
-      fit(1, k) = 0.0_rp
+      fit(:, k) = 0.0_rp
     end do
   end subroutine thin_free_rings
 

@@ -38,12 +38,12 @@ module surface_tension_loops
   use omp_team, only: team_work_t, in_team
   use traversal, only: pair_body_t, pair_list_t, pair_sweep, PAIRS_ANY_FLUID, SWEEP_KEEP, &
                        SWEEP_REUSE
-  use surface_tension, only: csf_threshold, csf_normal_pair, csf_unit_normal, &
-                             csf_curvature_pair, csf_curvature, csf_acceleration, &
-                             csf_surface_weight, csf_tangential_pair, csf_depth_table, &
-                             csf_depth, csf_surface_curvature, ST_DELTA_COLOUR, DEPTH_TABLE_N, &
-                             CURV_BAND_H, csf_fit_point, csf_fit_curvature, N_FIT, FIT_DEPTH, &
-                             depth_moved
+  use surface_tension, only: csf_threshold, csf_unit_normal, csf_curvature, csf_acceleration, &
+                             csf_surface_weight, csf_depth_table, csf_depth, csf_surface_curvature, &
+                             ST_DELTA_COLOUR, DEPTH_TABLE_N, CURV_BAND_H, csf_fit_curvature, N_FIT, &
+                             FIT_DEPTH, depth_moved
+  use csf_pair_sums, only: NG_NX, NG_NZ, NG_GX, NG_GZ, N_NG, colour_pairs, normal_pairs, &
+                           curvature_pairs, surface_fit_pairs, band_curvature_pairs, surface_mean_pairs
   implicit none
   private
   public :: surface_tension_rates
@@ -71,10 +71,6 @@ module surface_tension_loops
   !> (eq 23) of ST_DELTA_COLOUR; the fields written out are n and the curvature used. Other
   !> values are rejected by the C entry points (params_ok).
 
-  !> Rows of csf_work_t%ng, a slot's normal sums: the normal n (eq 18) x, z and the
-  !> free-surface delta's sum_b V_b (g_a + g_b) grad_a W_ab x, z
-  integer, parameter :: NG_NX = 1, NG_NZ = 2, NG_GX = 3, NG_GZ = 4, N_NG = 4
-
   integer, parameter :: PASS_COLOUR = 1, PASS_NORMAL = 2, PASS_CURVATURE = 3, &
                         PASS_SURFACE_CURVATURE = 4, PASS_SURFACE_MEAN = 5, PASS_BAND_CURVATURE = 6, &
                         PASS_SURFACE_FIT = 7
@@ -98,8 +94,9 @@ module surface_tension_loops
     !> density and its gradient, which decide where the free surface is (see below)
     real(rp), allocatable :: c2(:), n2x(:), n2z(:)
     !> the rings pair with surface_tension.rings_curvature = "neighbour_mean" (the default) only
-    !> (surface_mean_pairs): each particle's own curvature and force weight
-    real(rp), allocatable :: kown(:), wt(:)
+    !> (surface_mean_pairs): each particle's own curvature, force weight and weight in the mean
+    !> (the force weight, or 0 where its surface fit had fewer than fit_points_min points)
+    real(rp), allocatable :: kown(:), wt(:), wm(:)
     !> curvature_normals = "surface_band" only: 1 where the particle passes the filter and lies
     !> within CURV_BAND_H h of the surface, else 0 (band_curvature_pairs)
     real(rp), allocatable :: band(:)
@@ -175,7 +172,7 @@ contains
     surface_mean = prm%geometry%kind == GEOM_AXISYMMETRIC .and. prm%geometry%axis_pair == AXIS_PAIR_RINGS &
                    .and. prm%surface_tension%delta /= ST_DELTA_COLOUR &
                    .and. prm%surface_tension%rings_curvature == RINGS_CURVATURE_MEAN
-    if (surface_mean) allocate(wk%kown(n), wk%wt(n), source=0.0_rp)
+    if (surface_mean) allocate(wk%kown(n), wk%wt(n), wk%wm(n), source=0.0_rp)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
@@ -262,6 +259,7 @@ contains
                               < FIT_DEPTH * sqrt(wk%v(k)))
           wk%fit(:, k) = 0.0_rp
           wk%fit(1, k) = wk%outer(k) * wk%v(k) * w0
+          wk%fit(N_FIT, k) = wk%outer(k)   ! the self point counted
         end do
         !$omp end parallel do
         if (allocated(body) .and. prm%surface_tension%thin_rings /= 0) &   ! no fit points (free_body_loops.f90)
@@ -284,7 +282,9 @@ contains
   !> kappa_b V_b W_ab / sum_b w_b V_b W_ab (b = a included; w the force weight,
   !> csf_surface_weight): the rows within 2h of the surface (four at h = 2 dx) balance one
   !> pressure, the surface's, where each row's own curvature from its own normals goes wrong
-  !> next to a pole (cases/axisymmetric/README.md).
+  !> next to a pole (cases/axisymmetric/README.md). A particle whose surface fit was refused for
+  !> too few points (surface_tension.fit_points_min) enters no mean, its own included (w 0 in
+  !> the sums), and takes its neighbours' mean with its force weight.
   subroutine surface_mean_force(prm, kern, st, s, wk, kappa, w0, axi)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
@@ -300,11 +300,12 @@ contains
     if (s%n > s%n_real) then
       call copy_to_images(s, wk%kown, .false.)
       call copy_to_images(s, wk%wt, .false.)
+      call copy_to_images(s, wk%wm, .false.)
     end if
     !$omp parallel do schedule(static)
     do k = 1, n
-      wk%num(k) = wk%wt(k) * wk%kown(k) * wk%v(k) * w0
-      wk%den(k) = wk%wt(k) * wk%v(k) * w0
+      wk%num(k) = wk%wm(k) * wk%kown(k) * wk%v(k) * w0
+      wk%den(k) = wk%wm(k) * wk%v(k) * w0
     end do
     !$omp end parallel do
     call sweep(PASS_SURFACE_MEAN, kern, s, wk, .true., axi)
@@ -418,7 +419,7 @@ contains
     integer, intent(in) :: which
     integer :: k, n
     real(rp) :: kap, ax, az, wt, kin, kaz, depth, nrx, xr, c0
-    logical :: fitted
+    logical :: fitted, sparse
     n = self%s%n
     associate (prm => self%prm, kern => self%kern, s => self%s, wk => self%wk, &
                kappa => self%kappa, w0 => self%w0, eps => self%eps, axi => self%axi, &
@@ -463,6 +464,7 @@ contains
             kappa(k) = 0.0_rp
             cycle
           end if
+          sparse = .false.
           if (axi) then   ! both principal curvatures (physics/axisymmetric.f90)
             if (colour_delta) then
               kin = csf_curvature(wk%num(k), wk%den(k), wk%flag(k))
@@ -473,8 +475,8 @@ contains
               xr = s%x(k)
               depth = csf_depth(wk%c(k), depth_cache(:, kern%kind), prm%numerics%h)
               if (allocated(wk%fit)) then   ! the fitted curve's curvature, normal and point
-                call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), sqrt(wk%v(k)), kin, nrx, &
-                                       c0, fitted)
+                call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), sqrt(wk%v(k)), &
+                                       prm%surface_tension%fit_points_min, kin, nrx, c0, fitted, sparse)
                 if (fitted) then   ! the outer row's point nearest to k, at its own depth
                   xr = max(0.0_rp, s%x(k) + c0 * wk%nhx(k))
                   depth = max(0.0_rp, depth + c0)
@@ -490,8 +492,8 @@ contains
             kap = csf_surface_curvature(wk%num(k), wk%tden(k), wk%flag(k), depth)
             if (allocated(wk%fit)) then   ! the fitted curve's, moved to the surface
               kin = kap
-              call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), sqrt(wk%v(k)), kin, nrx, c0, &
-                                     fitted)
+              call csf_fit_curvature(wk%fit(:, k), wk%nhx(k), wk%nhz(k), sqrt(wk%v(k)), &
+                                     prm%surface_tension%fit_points_min, kin, nrx, c0, fitted, sparse)
               if (fitted) kap = depth_moved(kin, max(0.0_rp, depth + c0))
             end if
           end if
@@ -499,6 +501,7 @@ contains
           if (allocated(wk%kown)) then   ! the rings pair: force after surface_mean_pairs
             wk%kown(k) = kap
             wk%wt(k) = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%numerics%h)
+            wk%wm(k) = merge(0.0_rp, wk%wt(k), sparse)
             cycle
           end if
           if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
@@ -523,25 +526,6 @@ contains
       end select
     end associate
   end subroutine csf_particle_loops
-
-  !> The sums of the weighted mean curvature of the fluid pairs of a list (the rings pair):
-  !> num += w_b kappa_b V_b W_ab, den += w_b V_b W_ab, and b's likewise.
-  pure subroutine surface_mean_pairs(np, pa, pb, w, mixed, v, wx, kx, num, den)
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: w(*), v(*), wx(*), kx(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: num(*), den(*)
-    integer :: k, a, b
-    do k = 1, np
-      if (mixed(k)) cycle
-      a = pa(k)
-      b = pb(k)
-      num(a) = num(a) + wx(b) * kx(b) * v(b) * w(k)
-      den(a) = den(a) + wx(b) * v(b) * w(k)
-      num(b) = num(b) + wx(a) * kx(a) * v(a) * w(k)
-      den(b) = den(b) + wx(a) * v(a) * w(k)
-    end do
-  end subroutine surface_mean_pairs
 
   !> One sweep over the fluid-fluid pairs closer than 2h (the common traversal): over the
   !> kept pairs of the last SWEEP_KEEP with PAIRS_ANY_FLUID when kept (the rates sweep's, or
@@ -594,7 +578,7 @@ contains
         call band_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%flag, &
                                   wk%band, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
       case (PASS_SURFACE_MEAN)   ! the rings pair's weighted mean curvature
-        call surface_mean_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%wt, wk%kown, wk%num, &
+        call surface_mean_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%wm, wk%kown, wk%num, &
                                 wk%den)
       case default            ! PASS_SURFACE_CURVATURE: numerator, tangential denominator
         call curvature_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
@@ -603,198 +587,5 @@ contains
     end associate
     red = max(red, 0.0_rp)
   end subroutine csf_visit
-
-  !> Colour sums (eq 14) of the fluid pairs of a list; two (axisymmetric): also the second
-  !> colour c2 with the weights v2, in the same loop (otherwise v2, c2 are not referenced).
-  !> A particle's pairs follow each other in the list (neighbours/verlet_list.f90) and none
-  !> of them has it as b: its sums are carried along its run (the same additions in the
-  !> same order as one pair at a time), as in rates.f90.
-  pure subroutine colour_pairs(two, np, pa, pb, w, mixed, v, v2, c, c2)
-    logical, intent(in) :: two
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: w(*), v(*), v2(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: c(*), c2(*)
-    integer :: k, a, b
-    real(rp) :: ca, c2a
-    k = 1
-    do while (k <= np)
-      a = pa(k)
-      ca = c(a)
-      if (two) c2a = c2(a)
-      do while (k <= np)
-        if (pa(k) /= a) exit
-        if (.not. mixed(k)) then
-          b = pb(k)
-          ca = ca + v(b) * w(k)
-          c(b) = c(b) + v(a) * w(k)
-          if (two) then
-            c2a = c2a + v2(b) * w(k)
-            c2(b) = c2(b) + v2(a) * w(k)
-          end if
-        end if
-        k = k + 1
-      end do
-      c(a) = ca
-      if (two) c2(a) = c2a
-    end do
-  end subroutine colour_pairs
-
-  !> Normal (eq 18) and the free-surface delta's pair sums sum_b V_b (g_a + g_b) grad_a W_ab
-  !> of the fluid pairs of a list, in one loop (independent sets of sums): for the delta,
-  !> planar V = m/rho, g = 1/2 (sum_b V_b grad_a W_ab, doubled by the caller: g_a + g_b = 1,
-  !> so the pair's gradient is the normal's); axisymmetric V = m/(2 pi rho) and g = 1/g(x)
-  !> (the weights of its pressure pair). two (axisymmetric): also the gradient n2 of the
-  !> second colour c2 with the weights vmu, in the same loop; otherwise gi, c2, n2x, n2z are
-  !> not referenced. The normal and delta sums go to ng(NG_*, slot) (csf_work_t%ng).
-  pure subroutine normal_pairs(two, np, pa, pb, dx, dz, f, mixed, v, c, vmu, gi, c2, ng, &
-                               n2x, n2z)
-    logical, intent(in) :: two
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), f(*), v(*), c(*), vmu(*), gi(*), c2(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: ng(N_NG, *), n2x(*), n2z(*)
-    integer :: k, a, b
-    real(rp) :: gx, gz, da1, da2, db1, db2, gsum, s2x, s2z
-    real(rp) :: sa(N_NG)
-    k = 1
-    do while (k <= np)   ! a's sums carried along its run (colour_pairs)
-      a = pa(k)
-      sa = ng(:, a)
-      if (two) then
-        s2x = n2x(a)
-        s2z = n2z(a)
-      end if
-      do while (k <= np)
-        if (pa(k) /= a) exit
-        if (.not. mixed(k)) then
-          b = pb(k)
-          gx = f(k) * dx(k)
-          gz = f(k) * dz(k)
-          call csf_normal_pair(v(a), v(b), c(a), c(b), gx, gz, da1, da2, db1, db2)
-          sa(NG_NX) = sa(NG_NX) + da1
-          sa(NG_NZ) = sa(NG_NZ) + da2
-          ng(NG_NX, b) = ng(NG_NX, b) + db1
-          ng(NG_NZ, b) = ng(NG_NZ, b) + db2
-          if (two) then
-            call csf_normal_pair(vmu(a), vmu(b), c2(a), c2(b), gx, gz, da1, da2, db1, db2)
-            s2x = s2x + da1
-            s2z = s2z + da2
-            n2x(b) = n2x(b) + db1
-            n2z(b) = n2z(b) + db2
-            gsum = (gi(a) + gi(b)) * f(k)
-            gx = gsum * dx(k)
-            gz = gsum * dz(k)
-          end if   ! planar: g_a + g_b = 1/2 + 1/2 = 1 exactly, and gx, gz are the normal's
-          sa(NG_GX) = sa(NG_GX) + vmu(b) * gx
-          sa(NG_GZ) = sa(NG_GZ) + vmu(b) * gz
-          ng(NG_GX, b) = ng(NG_GX, b) - vmu(a) * gx
-          ng(NG_GZ, b) = ng(NG_GZ, b) - vmu(a) * gz
-        end if
-        k = k + 1
-      end do
-      ng(:, a) = sa
-      if (two) then
-        n2x(a) = s2x
-        n2z(a) = s2z
-      end if
-    end do
-  end subroutine normal_pairs
-
-  !> Curvature sums of the fluid pairs of a list whose particles both pass the filter: eq
-  !> 23's numerator (num) and, into den, its Shepard denominator when shepard, else the
-  !> tangential denominator of the free-surface curvature (csf_tangential_pair). Plain arrays,
-  !> so that the loop keeps their addresses in registers.
-  pure subroutine curvature_pairs(shepard, np, pa, pb, dx, dz, f, w, mixed, flag, v, nhx, nhz, &
-                                  num, den)
-    logical, intent(in) :: shepard
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), f(*), w(*), flag(*), v(*), nhx(*), nhz(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: num(*), den(*)
-    integer :: k, a, b
-    real(rp) :: da1, da2, db1, db2, sn, sd
-    k = 1
-    do while (k <= np)   ! a's sums carried along its run (colour_pairs)
-      a = pa(k)
-      if (flag(a) == 0.0_rp) then   ! none of a's pairs adds anything
-        do while (k <= np)
-          if (pa(k) /= a) exit
-          k = k + 1
-        end do
-        cycle
-      end if
-      sn = num(a)
-      sd = den(a)
-      do while (k <= np)
-        if (pa(k) /= a) exit
-        b = pb(k)
-        if (.not. mixed(k) .and. flag(b) /= 0.0_rp) then
-          call csf_curvature_pair(flag(a), flag(b), v(a), v(b), nhx(a), nhz(a), nhx(b), &
-                                  nhz(b), f(k) * dx(k), f(k) * dz(k), w(k), da1, da2, db1, db2)
-          sn = sn + da1
-          num(b) = num(b) + db1
-          if (.not. shepard) call csf_tangential_pair(flag(a), flag(b), v(a), v(b), nhx(a), &
-                                                      nhz(a), nhx(b), nhz(b), dx(k), dz(k), &
-                                                      f(k), da2, db2)
-          sd = sd + da2
-          den(b) = den(b) + db2
-        end if
-        k = k + 1
-      end do
-      num(a) = sn
-      den(a) = sd
-    end do
-  end subroutine curvature_pairs
-
-  !> The free-surface curvature's sums of the fluid pairs of a list with curvature_normals =
-  !> "surface_band": as curvature_pairs (tangential denominator), but particle a (flag 1) takes
-  !> neighbour b's normal only where b lies in the surface band (band 1), and b a's likewise.
-  !> The surface fit (surface_tension.curvature = "surface_fit"): a flagged particle's sums take
-  !> each outer neighbour's position relative to it, in its frame (csf_fit_point), weighted
-  !> V_b W_ab.
-  pure subroutine surface_fit_pairs(np, pa, pb, dx, dz, w, mixed, flag, outer, v, nhx, nhz, fit)
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), w(*), flag(*), outer(*), v(*), nhx(*), nhz(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: fit(N_FIT, *)
-    integer :: k, a, b
-    do k = 1, np
-      if (mixed(k)) cycle
-      a = pa(k)
-      b = pb(k)
-      ! dx = x_a - x_b: b lies at -dx from a, a at +dx from b
-      if (flag(a) > 0.0_rp .and. outer(b) > 0.0_rp) &
-        call csf_fit_point(v(b) * w(k), -dx(k), -dz(k), nhx(a), nhz(a), fit(:, a))
-      if (flag(b) > 0.0_rp .and. outer(a) > 0.0_rp) &
-        call csf_fit_point(v(a) * w(k), dx(k), dz(k), nhx(b), nhz(b), fit(:, b))
-    end do
-  end subroutine surface_fit_pairs
-
-  pure subroutine band_curvature_pairs(np, pa, pb, dx, dz, f, mixed, flag, band, v, nhx, nhz, &
-                                       num, den)
-    integer, intent(in) :: np, pa(*), pb(*)
-    real(rp), intent(in) :: dx(*), dz(*), f(*), flag(*), band(*), v(*), nhx(*), nhz(*)
-    logical, intent(in) :: mixed(*)
-    real(rp), intent(inout) :: num(*), den(*)
-    integer :: k, a, b
-    real(rp) :: da1, da2, db1, db2, wa, wb
-    do k = 1, np
-      if (mixed(k)) cycle
-      a = pa(k)
-      b = pb(k)
-      wa = flag(a) * band(b)
-      wb = flag(b) * band(a)
-      if (wa == 0.0_rp .and. wb == 0.0_rp) cycle
-      call csf_curvature_pair(1.0_rp, 1.0_rp, v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
-                              f(k) * dx(k), f(k) * dz(k), 0.0_rp, da1, da2, db1, db2)
-      num(a) = num(a) + wa * da1
-      num(b) = num(b) + wb * db1
-      call csf_tangential_pair(1.0_rp, 1.0_rp, v(a), v(b), nhx(a), nhz(a), nhx(b), nhz(b), &
-                               dx(k), dz(k), f(k), da2, db2)
-      den(a) = den(a) + wa * da2
-      den(b) = den(b) + wb * db2
-    end do
-  end subroutine band_curvature_pairs
 
 end module surface_tension_loops

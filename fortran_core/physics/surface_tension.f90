@@ -91,10 +91,11 @@ module surface_tension
   !> Depth of the surface band whose normals enter the free-surface curvature with
   !> curvature_normals = "surface_band", in units of h.
   real(rp), parameter :: CURV_BAND_H = 1.0_rp
-  !> The surface fit's sums per particle (csf_fit_point), and the smallest determinant of its
-  !> normal equations relative to the product of their diagonal's (about 1e-3 for points spread
-  !> evenly over the support; 1e-9 leaves out only fits through fewer than three distinct s).
-  integer, parameter :: N_FIT = 8
+  !> The surface fit's sums per particle (csf_fit_point; the ninth counts the points), and the
+  !> smallest determinant of its normal equations relative to the product of their diagonal's
+  !> (about 1e-3 for points spread evenly over the support; 1e-9 leaves out only fits through
+  !> fewer than three distinct s).
+  integer, parameter :: N_FIT = 9
   real(rp), parameter :: FIT_DET_MIN = 1.0e-9_rp
   !> The smallest radius of curvature a fit may give, in units of the particle's spacing
   !> sqrt(V): a parabola bent more sharply than a circle through neighbours one spacing apart
@@ -227,31 +228,42 @@ contains
   !> depth: kappa = num / tden, then kappa / (1 - kappa delta) (the factor kept >= 1/2);
   !> 0 without a valid normal or with a denominator below TANGENTIAL_MIN.
   !> Adds the point (s, eta) with weight om to a particle's least-squares sums of the surface
-  !> fit: fit = sum om (1, s, s^2, s^3, s^4, eta, eta s, eta s^2). (rx, rz) = the point minus
-  !> the particle; (nx, nz) the particle's unit normal.
+  !> fit: fit(1:8) = sum om (1, s, s^2, s^3, s^4, eta, eta s, eta s^2), and counts it in fit(9)
+  !> when om > 0. (rx, rz) = the point minus the particle; (nx, nz) the particle's unit normal.
   pure subroutine csf_fit_point(om, rx, rz, nx, nz, fit)
     real(rp), intent(in) :: om, rx, rz, nx, nz
     real(rp), intent(inout) :: fit(N_FIT)
     real(rp) :: s, e
     s = -rx * nz + rz * nx
     e = rx * nx + rz * nz
-    fit = fit + om * [1.0_rp, s, s * s, s**3, s**4, e, e * s, e * s * s]
+    fit(1:8) = fit(1:8) + om * [1.0_rp, s, s * s, s**3, s**4, e, e * s, e * s * s]
+    if (om > 0.0_rp) fit(9) = fit(9) + 1.0_rp
   end subroutine csf_fit_point
 
   !> The fitted parabola's in-plane curvature kin and, through nrx, the radial part of its unit
   !> normal at the fitted point and that point's offset c0 along the normal. ok = .false. (and
-  !> nothing set) when the points do not determine a parabola (fewer than three distinct s) or
-  !> when it bends more sharply than a circle of FIT_RADIUS_MIN spacings (spacing: the
-  !> particle's, sqrt(V)).
-  pure subroutine csf_fit_curvature(fit, nx, nz, spacing, kin, nrx, c0, ok)
+  !> nothing set) when the points do not determine a parabola (fewer than three distinct s), when
+  !> they are fewer than points_min (case key surface_tension.fit_points_min; sparse = .true.
+  !> then, else .false.), or when it bends more sharply than a circle of FIT_RADIUS_MIN spacings
+  !> (spacing: the particle's, sqrt(V)). Three points determine the parabola and no more: a row
+  !> at the edge of the kernel's reach of the surface sees the outer row over a chord of about
+  !> three points, and on a lattice stretched along the axis (a falling jet sped up 1.35 times)
+  !> their parabola gave that row a mean curvature of the wrong sign (cases/round_jet/README.md,
+  !> "The jets' own capillary growth").
+  pure subroutine csf_fit_curvature(fit, nx, nz, spacing, points_min, kin, nrx, c0, ok, sparse)
     real(rp), intent(in) :: fit(N_FIT), nx, nz, spacing
+    integer, intent(in) :: points_min
     real(rp), intent(inout) :: kin, nrx, c0
-    logical, intent(out) :: ok
+    logical, intent(out) :: ok, sparse
     real(rp) :: m(3, 3), r(3), det, c1, c2, mx, mz, kfit
+    sparse = .false.
     m = reshape([fit(1), fit(2), fit(3), fit(2), fit(3), fit(4), fit(3), fit(4), fit(5)], [3, 3])
     r = fit(6:8)
     det = det3(m(:, 1), m(:, 2), m(:, 3))
     ok = abs(det) > FIT_DET_MIN * fit(1) * fit(3) * fit(5)
+    if (.not. ok) return
+    sparse = fit(9) < points_min
+    ok = .not. sparse
     if (.not. ok) return
     c1 = det3(m(:, 1), r, m(:, 3)) / det
     c2 = det3(m(:, 1), m(:, 2), r) / det

@@ -419,6 +419,19 @@ def main():
         # --bound-xsph is refused without the rings pair
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--bound-xsph"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair rings" in p.stderr, f"--bound-xsph alone: {p.stderr}")
+        # --fit-points N: every run's surface_tension.fit_points_min, suffix _fpN; refused at 3 or
+        # without the surface fit
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                            "--fit-points", "4", "--set-name", "mc"], capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all("--set surface_tension.fit_points_min=4" in ln for ln in steps)
+              and "_sink15_fp4 " in p.stdout, f"--fit-points: {p.stdout[:400]}")
+        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--fit-points", "4"]))
+              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --fit-points 4", "the report's run command with --fit-points")
+        for extra in (["--quiet-jets", "--fit-points", "3"], ["--axis-pair", "rings", "--fit-points", "4"]):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", *extra], capture_output=True, text=True)
+            check(p.returncode == 2 and "--fit-points" in p.stderr and "rings_fit or --quiet-jets" in p.stderr,
+                  f"{' '.join(extra)}: {p.stderr}")
         # --thin-rings is refused without the surface fit
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--axis-pair", "rings", "--thin-rings"],
                            capture_output=True, text=True)

@@ -277,16 +277,21 @@ TEST(CoreSurfaceTension, SurfaceFitIgnoresSlidingAlongTheSurface) {
 //  - Two bunches of points either side of the particle, a surface that runs along its normal as
 //    where a froth of rings meets the axis: kin = 293 / h, refused (the loops then keep the
 //    normals' curvature there).
-//  - A normal that is not a unit vector, a spacing that is not positive or a negative count is an
-//    argument error.
+//  - surface_tension.fit_points_min: three points of the circle at s = -h, 0, h give a parabola
+//    (taken at 3, kin = -1/R within 1%: the circle's quartic term is not fitted); at 4 the same
+//    fit is refused for too few points (fitted 2, kin 0), and the nine points are taken at 4
+//    and at 9 and refused at 10. Points of weight 0 are not counted.
+//  - A normal that is not a unit vector, a spacing that is not positive, a negative count or a
+//    negative points_min is an argument error.
 TEST(CoreSurfaceTension, SurfaceFitRefusesCurvesTighterThanTheParticles) {
     const double h = 0.002, dx = 0.5 * h, R = 10 * h, d = 0.5 * h;
     double nrx = 0;
     auto fit = [dx, &nrx](const std::vector<double>& px, const std::vector<double>& pz, double nx,
-                          double nz, double& kin, double& c0, int& fitted, double spacing = -1) {
+                          double nz, double& kin, double& c0, int& fitted, double spacing = -1,
+                          int points_min = 3) {
         const std::vector<double> om(px.size(), 1.0);
         return sph_surface_fit(static_cast<std::int64_t>(px.size()), px.data(), pz.data(), om.data(), nx,
-                               nz, spacing < 0 ? dx : spacing, &kin, &nrx, &c0, &fitted);
+                               nz, spacing < 0 ? dx : spacing, points_min, &kin, &nrx, &c0, &fitted);
     };
     std::vector<double> px, pz;
     for (int i = -4; i <= 4; ++i) {
@@ -325,8 +330,30 @@ TEST(CoreSurfaceTension, SurfaceFitRefusesCurvesTighterThanTheParticles) {
     EXPECT_EQ(kin, 0.0);
     EXPECT_EQ(fit(px, pz, 0, 2, kin, c0, fitted), SPH_ERR_ARGUMENT);
     EXPECT_EQ(fit(px, pz, 0, 1, kin, c0, fitted, 0.0), SPH_ERR_ARGUMENT);
-    EXPECT_EQ(sph_surface_fit(-1, px.data(), pz.data(), px.data(), 0, 1, dx, &kin, &nrx, &c0, &fitted),
+    EXPECT_EQ(fit(px, pz, 0, 1, kin, c0, fitted, -1, -1), SPH_ERR_ARGUMENT);
+    EXPECT_EQ(sph_surface_fit(-1, px.data(), pz.data(), px.data(), 0, 1, dx, 3, &kin, &nrx, &c0, &fitted),
               SPH_ERR_ARGUMENT);
+
+    // fit_points_min: three of the circle's points, s = -h, 0, h (px[2], px[4], px[6])
+    const std::vector<double> px3{px[2], px[4], px[6]}, pz3{pz[2], pz[4], pz[6]};
+    ASSERT_EQ(fit(px3, pz3, 0, 1, kin, c0, fitted), SPH_OK);
+    EXPECT_EQ(fitted, 1);
+    EXPECT_NEAR(kin * R, -1.0, 1e-2);
+    ASSERT_EQ(fit(px3, pz3, 0, 1, kin, c0, fitted, -1, 4), SPH_OK);
+    EXPECT_EQ(fitted, 2);
+    EXPECT_EQ(kin, 0.0);
+    for (int points_min : {4, 9, 10}) {
+        ASSERT_EQ(fit(px, pz, 0, 1, kin, c0, fitted, -1, points_min), SPH_OK);
+        EXPECT_EQ(fitted, points_min <= 9 ? 1 : 2) << points_min;
+    }
+    std::vector<double> om4(px.size(), 0.0);   // nine points, four of them weighted
+    for (int i : {1, 3, 5, 7}) om4[i] = 1.0;
+    ASSERT_EQ(sph_surface_fit(9, px.data(), pz.data(), om4.data(), 0, 1, dx, 5, &kin, &nrx, &c0, &fitted),
+              SPH_OK);
+    EXPECT_EQ(fitted, 2);
+    ASSERT_EQ(sph_surface_fit(9, px.data(), pz.data(), om4.data(), 0, 1, dx, 4, &kin, &nrx, &c0, &fitted),
+              SPH_OK);
+    EXPECT_EQ(fitted, 1);
 }
 
 // The same on a square lattice: the staircase edge has its own curvature of order 1/dx at

@@ -1096,6 +1096,24 @@ TEST(ModernCase, ThinRingsNormals) {
     EXPECT_NE(e.find("surface_tension.curvature = \"surface_fit\""), std::string::npos) << e;
 }
 
+// surface_tension.fit_points_min (cases/CASE_FORMAT.md): 3 by default; read and written back;
+// below 3 refused as out of range, above 3 refused without the surface fit, naming the key and
+// what it needs.
+TEST(ModernCase, FitPointsMin) {
+    const std::string jet = round_jet_case();
+    EXPECT_EQ(parse_modern_case(jet, "jet.toml").params.fit_points_min, 3);
+    const CaseSpec s = parse_modern_case(
+        jet, "jet.toml", {"surface_tension.curvature=surface_fit", "surface_tension.fit_points_min=4"});
+    EXPECT_EQ(s.params.fit_points_min, 4);
+    expect_round_trip(s);
+    std::string e = error_of(jet, {"surface_tension.curvature=normals", "surface_tension.fit_points_min=4"});
+    EXPECT_NE(e.find("surface_tension.fit_points_min"), std::string::npos) << e;
+    EXPECT_NE(e.find("surface_tension.curvature = \"surface_fit\""), std::string::npos) << e;
+    e = error_of(jet, {"surface_tension.curvature=surface_fit", "surface_tension.fit_points_min=2"});
+    EXPECT_NE(e.find("surface_tension.fit_points_min"), std::string::npos) << e;
+    EXPECT_NE(e.find("out of range"), std::string::npos) << e;
+}
+
 // The renormalised continuity's reach along a jet (core/jet_run.hpp): the intact length less
 // the margin in nozzle diameters, never below 0, none while the jet is unbroken; margin 0
 // leaves the length itself (bit for bit: the runs made before the key are unchanged).
