@@ -352,7 +352,9 @@ public:
             dtfile_.emplace(dir_ / "DT", opts.resume);
             stepsfile_.emplace(dir_ / "steps.txt", opts.resume);
         }
-        if (h5_ && !opts.resume) h5_->write(solver.particles(), st, extra_fields(solver));
+        // the start's snapshot: a failed write stops the run as one in the loop does (nothing
+        // complete yet, no checkpoint: run the case again)
+        if (h5_ && !opts.resume) or_stop([&] { h5_->write(solver.particles(), st, extra_fields(solver)); });
         saved_.output = st.n_outputs;
         if (!opts.resume) saved_.output_time = st.time;
         if (opts.resume) {

@@ -36,16 +36,18 @@ import sys
 
 SKIP = 77
 # tmpfs sizes: with the outputs below (HDF5 1.10.8, Debian 12), the first write that does not
-# fit is the checkpoint before any checkpoint was written (350k), a snapshot (700k: 680k-811k
-# stop there), the XDMF index (817k: 814k-820k) and the checkpoint that would replace an
-# earlier one (850k: 823k-966k); measured by stepping the size from 560k to 1700k. No size
-# of that scan stopped at a PART file, so the PART writer's disk-full path is checked by the
-# unit tests DiskFull.* only. The test checks
-# that the four sizes stop the run at four different writes (which file each is, is printed:
-# another HDF5 may shift them, and then SIZES must be chosen again, or the test would cover
-# fewer ways to fail), and that at least one stopped before and one after the first checkpoint
-# (so that both the "run the case again" and the resume paths are checked).
-SIZES = ["350k", "700k", "817k", "850k"]
+# fit is the start's snapshot (300k: up to 340k), the first checkpoint (430k: 355k-500k), a
+# later snapshot (750k: 680k-824k), the XDMF index after a checkpoint (828k: 825k-832k) and a
+# later checkpoint (900k: 834k-966k); measured at 8716f3a by stepping the size from 300k to
+# 1000k (at 345k-350k the start's XDMF index, between 560k and 650k the second checkpoint). No
+# size of that scan stopped at a PART file, so the PART writer's disk-full path is checked by
+# the unit tests DiskFull.* only. The test checks that the sizes stop the run at as many
+# different writes (which file each is, and whether a checkpoint was written before it, is
+# printed: another HDF5, or a new attribute in the files, may shift them, and then SIZES must
+# be chosen again, or the test would cover fewer ways to fail), and that at least one stopped
+# before and one after the first checkpoint (so that both the "run the case again" and the
+# resume paths are checked).
+SIZES = ["300k", "430k", "750k", "828k", "900k"]
 TMAX = "0.01"
 SETS = ["--format", "both", "-j", "1", "-q",
         "--set", "time.out=0.001", "--set", "output.checkpoint_every_steps=20",
