@@ -94,26 +94,34 @@ def check_speed_ratio(jet_column, resolved):
     return fails
 
 
+def run_column(jet_column, case, sphjet, out, sets, extra=()):
+    """jet_column.py on the case with the study's overrides sets and the options extra, its output
+    echoed -> (exit status, output)."""
+    argv = [case, "--sphjet", sphjet, "--out", out, *extra]
+    for s in sets:
+        argv += ["--set", s]
+    text = io.StringIO()
+    with contextlib.redirect_stdout(text):
+        rc = jet_column.main(argv)
+    print(text.getvalue(), end="")
+    return rc, text.getvalue()
+
+
 def check_fit_points(jet_column, sets, case, sphjet, work):
     """surface_tension.fit_points_min on the stretched eight-ring column (the docstring's check);
     sets: the study's d0/dx 16 run's overrides -> the failures."""
     import re
-    fails, rows = [], {}
+    fails = []
     for points in (3, 4):
-        argv = [case, "--sphjet", sphjet, "--out", os.path.join(work, f"fp{points}"), "--speed-ratio", "1.35",
-                "--ka", "0.49", "--eps", "1e-4", "--fit-from", "1e-3", "--fit-to", "1e-2", "--rows"]
-        for s in sets + [f"surface_tension.fit_points_min={points}"]:
-            argv += ["--set", s]
-        text = io.StringIO()
-        with contextlib.redirect_stdout(text):
-            rc = jet_column.main(argv)
-        print(text.getvalue(), end="")
+        rc, text = run_column(jet_column, case, sphjet, os.path.join(work, f"fp{points}"),
+                              sets + [f"surface_tension.fit_points_min={points}"],
+                              ["--speed-ratio", "1.35", "--ka", "0.49", "--eps", "1e-4", "--fit-from", "1e-3",
+                               "--fit-to", "1e-2", "--rows"])
         if rc != 0:
             fails.append(f"fit_points_min {points}: jet_column.py exited {rc}")
             continue
-        ratio = float(summary(text.getvalue())["growth_over_weber"])
-        waves = [float(w) for w in re.findall(r"^\s*row \d+: .*wave ([-+][0-9.]+)", text.getvalue(), re.M)]
-        rows[points] = waves
+        ratio = float(summary(text)["growth_over_weber"])
+        waves = [float(w) for w in re.findall(r"^\s*row \d+: .*wave ([-+][0-9.]+)", text, re.M)]
         if points == 3:
             ok = len(waves) >= 5 and waves[-1] < 0
             want = "the deepest row's wave negative"
@@ -178,17 +186,11 @@ def main():
         if n == 16:
             fails += check_fit_points(jet_column, sets, case, sphjet, work)
         out = os.path.join(work, f"n{n}")
-        argv = [case, "--sphjet", sphjet, "--out", out, "--eps", f"{EPS:g}"]
-        for s in sets:
-            argv += ["--set", s]
-        text = io.StringIO()
-        with contextlib.redirect_stdout(text):
-            rc = jet_column.main(argv)
-        print(text.getvalue(), end="")
+        rc, text = run_column(jet_column, case, sphjet, out, sets, ["--eps", f"{EPS:g}"])
         if rc != 0:
             fails.append(f"d0/dx {n}: jet_column.py exited {rc}")
             continue
-        s = summary(text.getvalue())
+        s = summary(text)
         ratio = float(s["growth_over_weber"])
         errors[n] = abs(ratio - 1)
         ok = s["fit_rms"] <= jet_column.ONE_EXPONENTIAL
