@@ -94,9 +94,9 @@ module surface_tension_loops
     !> density and its gradient, which decide where the free surface is (see below)
     real(rp), allocatable :: c2(:), n2x(:), n2z(:)
     !> the rings pair with surface_tension.rings_curvature = "neighbour_mean" (the default) only
-    !> (surface_mean_pairs): each particle's own curvature, force weight and weight in the mean
-    !> (the force weight, or 0 where its surface fit had fewer than fit_points_min points)
-    real(rp), allocatable :: kown(:), wt(:), wm(:)
+    !> (surface_mean_pairs): each particle's own curvature and its weight in the mean (its force
+    !> weight, or 0 where its surface fit had fewer than fit_points_min points)
+    real(rp), allocatable :: kown(:), wt(:)
     !> curvature_normals = "surface_band" only: 1 where the particle passes the filter and lies
     !> within CURV_BAND_H h of the surface, else 0 (band_curvature_pairs)
     real(rp), allocatable :: band(:)
@@ -172,7 +172,7 @@ contains
     surface_mean = prm%geometry%kind == GEOM_AXISYMMETRIC .and. prm%geometry%axis_pair == AXIS_PAIR_RINGS &
                    .and. prm%surface_tension%delta /= ST_DELTA_COLOUR &
                    .and. prm%surface_tension%rings_curvature == RINGS_CURVATURE_MEAN
-    if (surface_mean) allocate(wk%kown(n), wk%wt(n), wk%wm(n), source=0.0_rp)
+    if (surface_mean) allocate(wk%kown(n), wk%wt(n), source=0.0_rp)
     if (axi) then   ! the free-surface delta follows the axisymmetric pressure pair
       allocate(wk%vmu(n), wk%gi(n), hoop(n), wk%c2(n), wk%n2x(n), wk%n2z(n))
       call axis_weights_of(kern, s%x(1:n), wk%gi, hoop)
@@ -284,7 +284,8 @@ contains
   !> pressure, the surface's, where each row's own curvature from its own normals goes wrong
   !> next to a pole (cases/axisymmetric/README.md). A particle whose surface fit was refused for
   !> too few points (surface_tension.fit_points_min) enters no mean, its own included (w 0 in
-  !> the sums), and takes its neighbours' mean with its force weight.
+  !> the sums), and takes its neighbours' mean; the force weight is csf_surface_weight's, taken
+  !> again here.
   subroutine surface_mean_force(prm, kern, st, s, wk, kappa, w0, axi)
     type(sph_params_t), intent(in) :: prm
     type(kernel_t), intent(in) :: kern
@@ -295,27 +296,27 @@ contains
     real(rp), intent(in) :: w0
     logical, intent(in) :: axi
     integer :: n, k
-    real(rp) :: ax, az
+    real(rp) :: ax, az, wf
     n = s%n
     if (s%n > s%n_real) then
       call copy_to_images(s, wk%kown, .false.)
       call copy_to_images(s, wk%wt, .false.)
-      call copy_to_images(s, wk%wm, .false.)
     end if
     !$omp parallel do schedule(static)
     do k = 1, n
-      wk%num(k) = wk%wm(k) * wk%kown(k) * wk%v(k) * w0
-      wk%den(k) = wk%wm(k) * wk%v(k) * w0
+      wk%num(k) = wk%wt(k) * wk%kown(k) * wk%v(k) * w0
+      wk%den(k) = wk%wt(k) * wk%v(k) * w0
     end do
     !$omp end parallel do
     call sweep(PASS_SURFACE_MEAN, kern, s, wk, .true., axi)
-    !$omp parallel do schedule(static) private(ax, az)
+    !$omp parallel do schedule(static) private(ax, az, wf)
     do k = 1, n
       if (wk%flag(k) == 0.0_rp .or. s%grid%order(k) > st%n) cycle
       if (wk%den(k) > 0.0_rp) kappa(k) = wk%num(k) / wk%den(k)
       if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
-        call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kappa(k), wk%wt(k) * wk%ng(NG_GX, k), &
-                              wk%wt(k) * wk%ng(NG_GZ, k), ax, az)
+        wf = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%numerics%h)   ! the force weight
+        call csf_acceleration(prm%surface_tension%sigma, s%rho(k), kappa(k), wf * wk%ng(NG_GX, k), &
+                              wf * wk%ng(NG_GZ, k), ax, az)
         s%rate(R_AX, k) = s%rate(R_AX, k) + ax
         s%rate(R_AZ, k) = s%rate(R_AZ, k) + az
       end if
@@ -500,8 +501,7 @@ contains
           kappa(k) = kap
           if (allocated(wk%kown)) then   ! the rings pair: force after surface_mean_pairs
             wk%kown(k) = kap
-            wk%wt(k) = csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%numerics%h)
-            wk%wm(k) = merge(0.0_rp, wk%wt(k), sparse)
+            wk%wt(k) = merge(0.0_rp, csf_surface_weight(wk%n2x(k), wk%n2z(k), prm%numerics%h), sparse)
             cycle
           end if
           if (s%fluid(k) .and. prm%surface_tension%sigma > 0.0_rp) then
@@ -578,7 +578,7 @@ contains
         call band_curvature_pairs(pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%mixed, wk%flag, &
                                   wk%band, wk%v, wk%nhx, wk%nhz, wk%num, wk%tden)
       case (PASS_SURFACE_MEAN)   ! the rings pair's weighted mean curvature
-        call surface_mean_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%wm, wk%kown, wk%num, &
+        call surface_mean_pairs(pl%n, pl%a, pl%b, pl%w, pl%mixed, wk%v, wk%wt, wk%kown, wk%num, &
                                 wk%den)
       case default            ! PASS_SURFACE_CURVATURE: numerator, tangential denominator
         call curvature_pairs(.false., pl%n, pl%a, pl%b, pl%dx, pl%dz, pl%f, pl%w, pl%mixed, &
