@@ -6,13 +6,13 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--relaxed-exit] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--h-over-dx H] [--relaxed-exit] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--relaxed-exit] [--out cases/round_jet]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--h-over-dx H] [--relaxed-exit] [--out cases/round_jet]
       [--set-name mc paper] [--only RUN ...] [--brief]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
@@ -93,6 +93,11 @@ jet at d0/dx 20, back onto the jet and stopped the run ("Thin rings let go").
 points (surface_tension.fit_points_min): a row at the edge of the kernel's reach of the surface
 sees three, and where a falling jet has sped up their parabola bent that row the wrong way
 ("The jets' own capillary growth").
+--h-over-dx H (suffix _hH) sets the smoothing length to H spacings (resolution.h_over_dx; the
+case's is 2); --step-cap's and --fixed-step's step stay those of the case's h, so that only the
+kernel's reach changes. A falling jet's rings move apart along the axis as it speeds up, and on
+such a stretched lattice a kernel of 2 spacings grows capillary waves too fast ("A stretched
+lattice").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
 to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
 mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
@@ -721,7 +726,7 @@ def plan(opts):
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
     bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
     thin_rings: surface_tension.thin_rings_normals; fit_points: surface_tension.fit_points_min
-    (None: the key's 3); relaxed_exit: the mc runs' plugs at the tube's
+    (None: the key's 3); h_over_dx: resolution.h_over_dx (None: the case's); relaxed_exit: the mc runs' plugs at the tube's
     relaxed state (relaxed_exit), their info with "tube": (U, d0) the measured jet's (L_meas is
     over that d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
@@ -772,6 +777,8 @@ def plan(opts):
         extra.append("surface_tension.thin_rings_normals=true")
     if opts.fit_points is not None:
         extra.append(f"surface_tension.fit_points_min={opts.fit_points}")
+    if opts.h_over_dx is not None:
+        extra.append(f"resolution.h_over_dx={opts.h_over_dx:g}")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -827,6 +834,7 @@ def study_flags(opts):
             + (" --free-bodies" if opts.free_bodies else "")
             + (" --thin-rings" if opts.thin_rings else "")
             + ("" if opts.fit_points is None else f" --fit-points {opts.fit_points}")
+            + ("" if opts.h_over_dx is None else f" --h-over-dx {opts.h_over_dx:g}")
             + (" --relaxed-exit" if opts.relaxed_exit else "")
             + ("" if opts.box_radius == BOX_RADIUS_D0 else f" --box-radius {opts.box_radius:g}"))
     if is_quiet_jets(opts):
@@ -850,7 +858,8 @@ def study_dir(opts):
             + ("" if opts.margin is None else f"_margin{opts.margin:g}")
             + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else "")
             + ("_tr" if opts.thin_rings else "")
-            + ("" if opts.fit_points is None else f"_fp{opts.fit_points}") + ("_rx" if opts.relaxed_exit else "")
+            + ("" if opts.fit_points is None else f"_fp{opts.fit_points}")
+            + ("" if opts.h_over_dx is None else f"_h{opts.h_over_dx:g}") + ("_rx" if opts.relaxed_exit else "")
             + ("" if opts.box_radius == BOX_RADIUS_D0 else f"_box{opts.box_radius:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
@@ -1335,6 +1344,9 @@ def parse(argv=None):
                        help="surface fits through fewer than N points refused, N > 3 "
                             "(surface_tension.fit_points_min; with the surface fit: --axis-pair rings_fit "
                             "or --quiet-jets; suffix _fpN)")
+        p.add_argument("--h-over-dx", type=float, default=None, metavar="H",
+                       help="the smoothing length H spacings (resolution.h_over_dx; the case's 2), the "
+                            "step's cap or fixed step that of the case's h (suffix _hH)")
         p.add_argument("--relaxed-exit", action="store_true",
                        help="the measured jets' plugs at the speed and diameter to which the tube's "
                             "parabolic exit profile relaxes (x = U_f / U from x - (2/We_d) x^(-1/2) = "
@@ -1366,6 +1378,9 @@ def parse(argv=None):
             setattr(args, attr, value)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
+    if args.h_over_dx is not None and not 1.0 <= args.h_over_dx <= 4.0:
+        ap.error(f"--h-over-dx {args.h_over_dx}: expected a smoothing length of 1 to 4 spacings "
+                 "(resolution.h_over_dx; the case's is 2)")
     if not args.box_radius >= 1.0:
         ap.error(f"--box-radius {args.box_radius}: expected R >= 1 (in d0 from the axis; the jet's radius is 0.5 d0)")
     if args.remove_h is not None and not args.remove_h > 0:

@@ -432,6 +432,23 @@ def main():
             p = subprocess.run([PY, TOOL, "run", "--dry-run", *extra], capture_output=True, text=True)
             check(p.returncode == 2 and "--fit-points" in p.stderr and "rings_fit or --quiet-jets" in p.stderr,
                   f"{' '.join(extra)}: {p.stderr}")
+        # --h-over-dx H: every run's resolution.h_over_dx, suffix _hH, the step's cap that of the
+        # case's h (the same time.dt_max as without the option); refused outside 1-4 spacings
+        caps = []
+        for extra in ([], ["--h-over-dx", "2.32"]):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                                "--step-cap", "0.6", "--set-name", "mc", *extra], capture_output=True, text=True)
+            steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+            caps.append([ln.split("--set time.dt_max=")[1].split()[0] for ln in steps])
+        check(len(steps) == 20 and all("--set resolution.h_over_dx=2.32" in ln for ln in steps)
+              and "_cap0.6_h2.32 " in p.stdout, f"--h-over-dx: {p.stdout[:400]}")
+        check(caps[0] == caps[1] and len(caps[0]) == 20, f"--h-over-dx changed the step's cap: {caps}")
+        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--h-over-dx", "2.32"]))
+              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --h-over-dx 2.32", "the report's run command with --h-over-dx")
+        for bad in ("0.5", "5"):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--h-over-dx", bad], capture_output=True, text=True)
+            check(p.returncode == 2 and "--h-over-dx" in p.stderr and "1 to 4 spacings" in p.stderr,
+                  f"--h-over-dx {bad}: {p.stderr}")
         # --thin-rings is refused without the surface fit
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--axis-pair", "rings", "--thin-rings"],
                            capture_output=True, text=True)
