@@ -5,7 +5,7 @@ and its growth rate against Weber's.
 
 Usage (Debian's python3 has numpy and h5py):
   /usr/bin/python3 tools/jet_column.py SOURCE [--set KEY=VALUE ...] [--d0-over-dx N] [--ka 0.7]
-      [--eps 1e-5] [--speed-ratio 1] [--rows] [--out DIR] [--threads 1] [--sphjet build/cpp_driver/sphjet]
+      [--eps 1e-5] [--speed-ratio 1] [--h-over-dx H] [--rows] [--out DIR] [--threads 1] [--sphjet build/cpp_driver/sphjet]
       [--force]
 
 SOURCE is a round-jet case file (a modern .toml with a [nozzle]) or a run directory (its
@@ -24,7 +24,11 @@ U/U0 times as far apart along the axis and the radius and the radial spacing shr
 rings 1.50 spacings apart on the axis, radius 0.796 a, against U/U0 = 1.55). --speed-ratio R
 builds the column on that lattice: radius a R^-1/2 (ka and Weber's rate are the column's own),
 R^-1/2 of the spacing across, R times it along the axis, h and the step as at R = 1. At R = 1 the
-case is the one without the option, byte for byte.
+case is the one without the option, byte for byte. --h-over-dx H gives the column a smoothing length
+of H nozzle spacings (d0 / N) in place of the case's, the step kept: on the lattice of a falling jet
+the kernel's reach along the axis is h / (R dx), 1.11 at h = 2 dx and R = 1.8, where a column of
+five rings grows its wave at 2.3 times Weber's rate (cases/round_jet/README.md, "A stretched
+lattice").
 
 The amplitude is the first Fourier mode over the period of the rows' surface radii (the largest
 radius in each row's slice of z, as `tools/axisymmetric.py roughness` reads them): at the start
@@ -44,7 +48,7 @@ row_curvatures). The CSF acts on every row the kernel's reach from the surface t
 h = 2 dx), each with its own curvature.
 
 Prints the table and a line
-  SUMMARY d0_over_dx=N a_over_dx=.. ka=.. eps=.. growth=.. weber=.. growth_over_weber=.. ... speed_ratio=R
+  SUMMARY d0_over_dx=N a_over_dx=.. ka=.. eps=.. growth=.. weber=.. growth_over_weber=.. ... speed_ratio=R h_over_dx=H
 with the fit's rms residual in ln A (fit_rms), and a line saying so when that is above 0.05: the
 amplitude then does not grow as one exponential and the rate is no growth rate. Exit status 1 with a message naming the file or key on bad input, or when the fit's range holds
 fewer than four samples.
@@ -132,16 +136,19 @@ def need(jet, table, key, source):
         raise ColumnError(f"{source}: {table}.{key}: expected in a round jet's case, found none") from None
 
 
-def column_case(jet, source, d0_over_dx, ka, eps, fit_to, speed_ratio=1.0):
+def column_case(jet, source, d0_over_dx, ka, eps, fit_to, speed_ratio=1.0, h_over_dx=None):
     """-> (the column's case text, its parameters). jet: the resolved jet case (resolve).
     speed_ratio R: the lattice of a jet that has sped up R times (--speed-ratio): the radius and
-    the radial spacing R^-1/2 times the jet's, the axial spacing R times, h and the step kept."""
+    the radial spacing R^-1/2 times the jet's, the axial spacing R times, h and the step kept.
+    h_over_dx H: the smoothing length H times the nozzle's spacing d0 / N (None: the case's h / dx),
+    the step kept."""
     if need(jet, "domain", "geometry", source) != "axisymmetric":
         raise ColumnError(f"{source}: domain.geometry: expected \"axisymmetric\" (a round jet), "
                           f"found {jet['domain']['geometry']!r}")
     d0 = need(jet, "nozzle", "d0", source)
     dx_jet = need(jet, "resolution", "dx", source)
-    h_over_dx = need(jet, "resolution", "h", source) / dx_jet
+    if h_over_dx is None:
+        h_over_dx = need(jet, "resolution", "h", source) / dx_jet
     n = d0_over_dx if d0_over_dx is not None else d0 / dx_jet
     if abs(n / 2 - round(n / 2)) > 1e-3 * n:   # the case's keys carry 9 digits
         # fluid.cylinder lays round(a / dx) rings across the radius: a/dx between two whole
@@ -182,7 +189,8 @@ def column_case(jet, source, d0_over_dx, ka, eps, fit_to, speed_ratio=1.0):
                          | {k: jet["resolution"][k] for k in ("jitter", "jitter_seed") if k in jet["resolution"]}) + "\n"
             + toml_table("time", time) + "\n"
             + '[output]\nformat = "hdf5"\ncheckpoint_every_minutes = 0.0\n')
-    return text, {"a": a, "dx": dx, "dz": dz, "n": n, "wavelength": wavelength, "weber": weber, "oh": oh}
+    return text, {"a": a, "dx": dx, "dz": dz, "n": n, "wavelength": wavelength, "weber": weber, "oh": oh,
+                  "h_over_dx": h_over_dx}
 
 
 def column_amplitudes(run, a, dz, wavelength):
@@ -280,6 +288,9 @@ def main(argv=None):
                     help="the lattice of a falling jet where it has sped up R times: its rings R times as far "
                          "apart along the axis, the radius and the radial spacing R^-1/2 times (h and the step "
                          "kept; default 1)")
+    ap.add_argument("--h-over-dx", type=float, default=None, metavar="H",
+                    help="the column's smoothing length H nozzle spacings d0 / N (default: the case's h / dx), "
+                         "the step kept")
     ap.add_argument("--rows", action="store_true",
                     help="also print the curvature the CSF gives each row from the surface inward, against the "
                          "column's geometric curvature, over the fit's range")
@@ -296,6 +307,8 @@ def main(argv=None):
     if not 1.0 <= a.speed_ratio <= 4.0:
         ap.error(f"--speed-ratio {a.speed_ratio:g}: expected 1 to 4 (a jet that gravity speeds up; at 4 the "
                  "rings are 4 spacings apart along the axis, as far as the kernel reaches)")
+    if a.h_over_dx is not None and not 1.0 <= a.h_over_dx <= 4.0:
+        ap.error(f"--h-over-dx {a.h_over_dx:g}: expected a smoothing length of 1 to 4 spacings")
     if a.d0_over_dx is not None and not a.d0_over_dx >= 4:
         ap.error(f"--d0-over-dx {a.d0_over_dx}: expected >= 4 (2 rows across the radius)")
     if not os.access(a.sphjet, os.X_OK):
@@ -307,7 +320,7 @@ def main(argv=None):
             raise ColumnError(f"--out {a.out}: not empty (give --force to write into it)")
         os.makedirs(work, exist_ok=True)
         jet = resolve(a.source, a.set, a.sphjet, work)
-        text, p = column_case(jet, a.source, a.d0_over_dx, a.ka, a.eps, a.fit_to, a.speed_ratio)
+        text, p = column_case(jet, a.source, a.d0_over_dx, a.ka, a.eps, a.fit_to, a.speed_ratio, a.h_over_dx)
         case = os.path.join(work, "column.toml")
         with open(case, "w") as f:
             f.write(text)
@@ -331,7 +344,7 @@ def main(argv=None):
         print(f"SUMMARY d0_over_dx={p['n']:.4g} a_over_dx={p['n'] / 2:.4g} ka={a.ka:g} eps={a.eps:g} "
               f"growth={rate:.5g} weber={p['weber']:.5g} growth_over_weber={rate / p['weber']:.4f} "
               f"fit_from={a.fit_from:g} fit_to={a.fit_to:g} samples={m} fit_rms={rms:.3g} "
-              f"speed_ratio={a.speed_ratio:g}")
+              f"speed_ratio={a.speed_ratio:g} h_over_dx={p['h_over_dx']:.4g}")
         if a.rows:
             got = row_curvatures(run, p["a"], p["dz"], p["wavelength"], a.fit_from, a.fit_to)
             print(f"the rows' curvature over the snapshots with the wave at {a.fit_from:g}-{a.fit_to:g} a (medians; "
