@@ -95,7 +95,7 @@ sees three, and where a falling jet has sped up their parabola bent that row the
 ("The jets' own capillary growth").
 --h-over-dx H (suffix _hH) sets the smoothing length to H spacings (resolution.h_over_dx; the
 case's is 2); --step-cap's and --fixed-step's step stay those of the case's h, so that only the
-kernel's reach changes. A falling jet's rings move apart along the axis as it speeds up, and on
+kernel's reach changes (and the breakup rule's gap, 1.5 h, with it). A falling jet's rings move apart along the axis as it speeds up, and on
 such a stretched lattice a kernel of 2 spacings grows capillary waves too fast ("A stretched
 lattice").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
