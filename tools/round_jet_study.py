@@ -95,9 +95,10 @@ sees three, and where a falling jet has sped up their parabola bent that row the
 ("The jets' own capillary growth").
 --h-over-dx H (suffix _hH) sets the smoothing length to H spacings (resolution.h_over_dx; the
 case's is 2); --step-cap's and --fixed-step's step stay those of the case's h, so that only the
-kernel's reach changes (and the breakup rule's gap, 1.5 h, with it). A falling jet's rings move apart along the axis as it speeds up, and on
-such a stretched lattice a kernel of 2 spacings grows capillary waves too fast ("A stretched
-lattice").
+kernel's reach changes (and the breakup rule's gap, 1.5 h, with it). A falling jet's rings move
+apart along the axis as it speeds up, and on such a stretched lattice a kernel of 2 spacings
+grows capillary waves too fast; 2.32 spacings lengthen every jet, the fast ones past 20% ("A
+stretched lattice").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
 to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
 mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
@@ -726,9 +727,9 @@ def plan(opts):
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
     bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
     thin_rings: surface_tension.thin_rings_normals; fit_points: surface_tension.fit_points_min
-    (None: the key's 3); h_over_dx: resolution.h_over_dx (None: the case's); relaxed_exit: the mc runs' plugs at the tube's
-    relaxed state (relaxed_exit), their info with "tube": (U, d0) the measured jet's (L_meas is
-    over that d0; as_tube gives a run's lengths so)."""
+    (None: the key's 3); h_over_dx: resolution.h_over_dx (None: the case's); relaxed_exit: the
+    mc runs' plugs at the tube's relaxed state (relaxed_exit), their info with "tube": (U, d0) the
+    measured jet's (L_meas is over that d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     radius = opts.box_radius
