@@ -99,6 +99,9 @@ kernel's reach changes (and the breakup rule's gap, 1.5 h, with it). A falling j
 apart along the axis as it speeds up, and on such a stretched lattice a kernel of 2 spacings
 grows capillary waves too fast; 2.32 spacings lengthen every jet, the fast ones past 20% ("A
 stretched lattice").
+--kernel K (suffix _K) sets numerics.kernel = K in every run (the case's is "wendland"): on such
+a stretched lattice the cubic spline grows a column's wave at Weber's rate to a stretch of
+about 2 at d0/dx 10, where the Wendland kernel goes wrong from about 1.5 ("A stretched lattice").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
 to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
 mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
@@ -269,6 +272,8 @@ FALLING_SETS = (f"gravity.gz={-G_FALL:g}", "domain.renormalise_ring_continuity=t
 # step is scaled from where the study leaves them
 with open(os.path.join(REPO, BASE_CASE), "rb") as _f:
     _CASE = tomllib.load(_f)
+# --kernel: the kernels measured on the jets' stretched lattice ("A stretched lattice")
+STUDY_KERNELS = ("wendland", "cubic_spline")
 CASE_H_OVER_DX, CASE_CFL, CASE_C0 = (_CASE["resolution"]["h_over_dx"], _CASE["time"]["cfl"], _CASE["fluid"]["c0"])
 PAPER_C0 = 4.0   # the paper's jets' sound speed (their runs' fluid.c0)
 # --quiet-jets: the options (attribute, value, flag) of the quiet round jets' numerics, as the
@@ -727,7 +732,8 @@ def plan(opts):
     landed: nozzle.release = "landed"; margin: domain.renormalise_margin_d0 (None: the key's 0);
     bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
     thin_rings: surface_tension.thin_rings_normals; fit_points: surface_tension.fit_points_min
-    (None: the key's 3); h_over_dx: resolution.h_over_dx (None: the case's); relaxed_exit: the
+    (None: the key's 3); h_over_dx: resolution.h_over_dx (None: the case's); kernel:
+    numerics.kernel (None: the case's); relaxed_exit: the
     mc runs' plugs at the tube's relaxed state (relaxed_exit), their info with "tube": (U, d0) the
     measured jet's (L_meas is over that d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
@@ -780,6 +786,8 @@ def plan(opts):
         extra.append(f"surface_tension.fit_points_min={opts.fit_points}")
     if opts.h_over_dx is not None:
         extra.append(f"resolution.h_over_dx={opts.h_over_dx:g}")
+    if opts.kernel is not None:
+        extra.append(f"numerics.kernel={opts.kernel}")
     if opts.sink is not None:
         extra.append(f"breakup.remove_drops_beyond_d0={opts.sink:g}")
     # --c0 is the measured jets' sound speed: the paper's jets keep their own 4 m/s
@@ -836,6 +844,7 @@ def study_flags(opts):
             + (" --thin-rings" if opts.thin_rings else "")
             + ("" if opts.fit_points is None else f" --fit-points {opts.fit_points}")
             + ("" if opts.h_over_dx is None else f" --h-over-dx {opts.h_over_dx:g}")
+            + ("" if opts.kernel is None else f" --kernel {opts.kernel}")
             + (" --relaxed-exit" if opts.relaxed_exit else "")
             + ("" if opts.box_radius == BOX_RADIUS_D0 else f" --box-radius {opts.box_radius:g}"))
     if is_quiet_jets(opts):
@@ -860,7 +869,8 @@ def study_dir(opts):
             + ("_bx" if opts.bound_xsph else "") + ("_fb" if opts.free_bodies else "")
             + ("_tr" if opts.thin_rings else "")
             + ("" if opts.fit_points is None else f"_fp{opts.fit_points}")
-            + ("" if opts.h_over_dx is None else f"_h{opts.h_over_dx:g}") + ("_rx" if opts.relaxed_exit else "")
+            + ("" if opts.h_over_dx is None else f"_h{opts.h_over_dx:g}")
+            + ("" if opts.kernel is None else f"_{opts.kernel}") + ("_rx" if opts.relaxed_exit else "")
             + ("" if opts.box_radius == BOX_RADIUS_D0 else f"_box{opts.box_radius:g}"))
     return os.path.join(opts.root, f"eps{opts.eps:g}_n{opts.d0_over_dx:g}{tail}")
 
@@ -1348,6 +1358,8 @@ def parse(argv=None):
         p.add_argument("--h-over-dx", type=float, default=None, metavar="H",
                        help="the smoothing length H spacings (resolution.h_over_dx; the case's 2), the "
                             "step's cap or fixed step that of the case's h (suffix _hH)")
+        p.add_argument("--kernel", choices=STUDY_KERNELS, default=None,
+                       help="numerics.kernel in every run (the case's wendland; suffix _K)")
         p.add_argument("--relaxed-exit", action="store_true",
                        help="the measured jets' plugs at the speed and diameter to which the tube's "
                             "parabolic exit profile relaxes (x = U_f / U from x - (2/We_d) x^(-1/2) = "

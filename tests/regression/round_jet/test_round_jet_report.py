@@ -449,6 +449,16 @@ def main():
             p = subprocess.run([PY, TOOL, "run", "--dry-run", "--h-over-dx", bad], capture_output=True, text=True)
             check(p.returncode == 2 and "--h-over-dx" in p.stderr and "1 to 4 spacings" in p.stderr,
                   f"--h-over-dx {bad}: {p.stderr}")
+        # --kernel K: every run's numerics.kernel, suffix _K; a kernel not measured on the jets refused
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                            "--kernel", "cubic_spline", "--set-name", "mc"], capture_output=True, text=True)
+        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+        check(len(steps) == 20 and all("--set numerics.kernel=cubic_spline" in ln for ln in steps)
+              and "_sink15_cubic_spline " in p.stdout, f"--kernel: {p.stdout[:400]}")
+        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--kernel", "cubic_spline"]))
+              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --kernel cubic_spline", "the report's run command with --kernel")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--kernel", "gaussian"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--kernel" in p.stderr and "cubic_spline" in p.stderr, f"--kernel gaussian: {p.stderr}")
         # --thin-rings is refused without the surface fit
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--axis-pair", "rings", "--thin-rings"],
                            capture_output=True, text=True)
