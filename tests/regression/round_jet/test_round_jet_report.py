@@ -419,15 +419,20 @@ def main():
         # --bound-xsph is refused without the rings pair
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--bound-xsph"], capture_output=True, text=True)
         check(p.returncode == 2 and "--axis-pair rings" in p.stderr, f"--bound-xsph alone: {p.stderr}")
-        # --fit-points N: every run's surface_tension.fit_points_min, suffix _fpN; refused at 3 or
-        # without the surface fit
-        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
-                            "--fit-points", "4", "--set-name", "mc"], capture_output=True, text=True)
-        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
-        check(len(steps) == 20 and all("--set surface_tension.fit_points_min=4" in ln for ln in steps)
-              and "_sink15_fp4 " in p.stdout, f"--fit-points: {p.stdout[:400]}")
-        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--fit-points", "4"]))
-              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --fit-points 4", "the report's run command with --fit-points")
+        # --fit-points N, --kernel K: every run's surface_tension.fit_points_min or numerics.kernel,
+        # suffix _fpN or _K; --fit-points refused at 3 or without the surface fit, a kernel not
+        # measured on the jets refused
+        for flag, value, key, suffix in (("--fit-points", "4", "surface_tension.fit_points_min", "_fp4"),
+                                         ("--kernel", "cubic_spline", "numerics.kernel", "_cubic_spline")):
+            p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
+                                flag, value, "--set-name", "mc"], capture_output=True, text=True)
+            steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
+            check(len(steps) == 20 and all(f"--set {key}={value}" in ln for ln in steps)
+                  and f"_sink15{suffix} " in p.stdout, f"{flag}: {p.stdout[:400]}")
+            check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", flag, value]))
+                  == f" --eps 0.01 --d0-over-dx 10 --quiet-jets {flag} {value}", f"the report's run command with {flag}")
+        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--kernel", "gaussian"], capture_output=True, text=True)
+        check(p.returncode == 2 and "--kernel" in p.stderr and "cubic_spline" in p.stderr, f"--kernel gaussian: {p.stderr}")
         for extra in (["--quiet-jets", "--fit-points", "3"], ["--axis-pair", "rings", "--fit-points", "4"]):
             p = subprocess.run([PY, TOOL, "run", "--dry-run", *extra], capture_output=True, text=True)
             check(p.returncode == 2 and "--fit-points" in p.stderr and "rings_fit or --quiet-jets" in p.stderr,
@@ -449,16 +454,6 @@ def main():
             p = subprocess.run([PY, TOOL, "run", "--dry-run", "--h-over-dx", bad], capture_output=True, text=True)
             check(p.returncode == 2 and "--h-over-dx" in p.stderr and "1 to 4 spacings" in p.stderr,
                   f"--h-over-dx {bad}: {p.stderr}")
-        # --kernel K: every run's numerics.kernel, suffix _K; a kernel not measured on the jets refused
-        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--root", os.path.join(tmp, "fresh"), "--quiet-jets",
-                            "--kernel", "cubic_spline", "--set-name", "mc"], capture_output=True, text=True)
-        steps = [ln for ln in p.stdout.splitlines() if "sphjet run" in ln]
-        check(len(steps) == 20 and all("--set numerics.kernel=cubic_spline" in ln for ln in steps)
-              and "_sink15_cubic_spline " in p.stdout, f"--kernel: {p.stdout[:400]}")
-        check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", "--kernel", "cubic_spline"]))
-              == " --eps 0.01 --d0-over-dx 10 --quiet-jets --kernel cubic_spline", "the report's run command with --kernel")
-        p = subprocess.run([PY, TOOL, "run", "--dry-run", "--kernel", "gaussian"], capture_output=True, text=True)
-        check(p.returncode == 2 and "--kernel" in p.stderr and "cubic_spline" in p.stderr, f"--kernel gaussian: {p.stderr}")
         # --thin-rings is refused without the surface fit
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--axis-pair", "rings", "--thin-rings"],
                            capture_output=True, text=True)
