@@ -101,7 +101,9 @@ grows capillary waves too fast; 2.32 spacings lengthen every jet, the fast ones 
 stretched lattice").
 --kernel K (suffix _K) sets numerics.kernel = K in every run (the case's is "wendland"): on such
 a stretched lattice the cubic spline grows a column's wave at Weber's rate to a stretch of
-about 2 at d0/dx 10, where the Wendland kernel goes wrong from about 1.5 ("A stretched lattice").
+about 2 at d0/dx 10, where the Wendland kernel goes wrong from about 1.5; its falling jets grow
+at Weber's rate from 0.58 m/s up, and at 0.36-0.40 m/s their two inner rows pair ("The cubic
+spline on a stretched lattice").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
 to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
 mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
@@ -733,9 +735,9 @@ def plan(opts):
     bound_xsph: domain.bound_ring_xsph; free_bodies: surface_tension.balance_free_bodies;
     thin_rings: surface_tension.thin_rings_normals; fit_points: surface_tension.fit_points_min
     (None: the key's 3); h_over_dx: resolution.h_over_dx (None: the case's); kernel:
-    numerics.kernel (None: the case's); relaxed_exit: the
-    mc runs' plugs at the tube's relaxed state (relaxed_exit), their info with "tube": (U, d0) the
-    measured jet's (L_meas is over that d0; as_tube gives a run's lengths so)."""
+    numerics.kernel (None: the case's); relaxed_exit: the mc runs' plugs at the tube's relaxed
+    state (relaxed_exit), their info with "tube": (U, d0) the measured jet's (L_meas is over that
+    d0; as_tube gives a run's lengths so)."""
     size_c, remove_h, axis_pair, quiet = opts.size_c, opts.remove_h, opts.axis_pair, opts.quiet_exit
     eps, n, window, own = opts.eps, opts.d0_over_dx, opts.window, opts.own_window
     radius = opts.box_radius
