@@ -34,7 +34,7 @@ import math
 import os
 import sys
 
-from study_runs import (StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
+from study_runs import (KERNELS, StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
                         md_table, open_report, read_csv, run_all, run_summary, select_runs, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -43,7 +43,6 @@ BASE_CASE = os.path.join("cases", "jet", "jet.toml")
 # The paper's data (DIGEST.md section 3) and constants.
 RHO, MU, SIGMA, D0, G = 1000.0, 1.0e-3, 0.072, 0.01, 9.81
 U0S = (0.07, 0.17, 0.20, 0.25)
-KERNELS = ("wendland", "cubic_spline")
 PAPER_L = {"cubic_spline": dict(zip(U0S, (6.61, 15.83, 20.22, 24.17))),
            "wendland": dict(zip(U0S, (7.73, 16.64, 23.02, 28.10)))}
 PAPER_HEAD_DROP, RAYLEIGH_HEAD_DROP = 1.98, 1.89   # D/D0, fig 5 (u0 = 0.25, Wendland)

@@ -175,7 +175,7 @@ import sys
 import tomllib
 
 import jet_noise
-from study_runs import (StudyError, add_numerics_arguments, add_run_arguments, add_set_argument, blew_up,
+from study_runs import (KERNELS, StudyError, add_numerics_arguments, add_run_arguments, add_set_argument, blew_up,
                         check_numerics, numerics_flags, numerics_sets, numerics_tag, dispatch, drops_at, first_breakup, fmt,
                         is_broken, md_table, open_report, read_csv, run_all, run_summary, select_runs,
                         study_parser)
@@ -274,9 +274,8 @@ FALLING_SETS = (f"gravity.gz={-G_FALL:g}", "domain.renormalise_ring_continuity=t
 # step is scaled from where the study leaves them
 with open(os.path.join(REPO, BASE_CASE), "rb") as _f:
     _CASE = tomllib.load(_f)
-# --kernel: the kernels measured on the jets' stretched lattice ("A stretched lattice")
-STUDY_KERNELS = ("wendland", "cubic_spline")
 CASE_H_OVER_DX, CASE_CFL, CASE_C0 = (_CASE["resolution"]["h_over_dx"], _CASE["time"]["cfl"], _CASE["fluid"]["c0"])
+CASE_KERNEL = _CASE["numerics"]["kernel"]
 PAPER_C0 = 4.0   # the paper's jets' sound speed (their runs' fluid.c0)
 # --quiet-jets: the options (attribute, value, flag) of the quiet round jets' numerics, as the
 # quick start and the validation run them (cases/round_jet/README.md, "One evaluation per step")
@@ -1360,8 +1359,9 @@ def parse(argv=None):
         p.add_argument("--h-over-dx", type=float, default=None, metavar="H",
                        help="the smoothing length H spacings (resolution.h_over_dx; the case's 2), the "
                             "step's cap or fixed step that of the case's h (suffix _hH)")
-        p.add_argument("--kernel", choices=STUDY_KERNELS, default=None,
-                       help="numerics.kernel in every run (the case's wendland; suffix _K)")
+        p.add_argument("--kernel", choices=KERNELS, default=None,
+                       help=f"numerics.kernel in every run (the case's {CASE_KERNEL}, which is the default's "
+                            "runs; suffix _K)")
         p.add_argument("--relaxed-exit", action="store_true",
                        help="the measured jets' plugs at the speed and diameter to which the tube's "
                             "parabolic exit profile relaxes (x = U_f / U from x - (2/We_d) x^(-1/2) = "
@@ -1393,6 +1393,8 @@ def parse(argv=None):
             setattr(args, attr, value)
     if not (0 <= args.eps < 1):
         ap.error(f"--eps {args.eps}: expected 0 <= eps < 1")
+    if args.kernel == CASE_KERNEL:   # the case's own: the default's runs and study directory
+        args.kernel = None
     if args.h_over_dx is not None and not 1.0 <= args.h_over_dx <= 4.0:
         ap.error(f"--h-over-dx {args.h_over_dx}: expected a smoothing length of 1 to 4 spacings "
                  "(resolution.h_over_dx; the case's is 2)")

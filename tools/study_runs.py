@@ -36,6 +36,11 @@ class StudyError(Exception):
     pass
 
 
+# the paper's two kernels (its Table 1), the ones the studies run: jet_study's table1 both,
+# round_jet_study's --kernel either
+KERNELS = ("wendland", "cubic_spline")
+
+
 # ---------------------------------------------------------------- run.log
 def read_lines(path):
     try:

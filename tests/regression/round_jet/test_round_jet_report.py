@@ -431,6 +431,9 @@ def main():
                   and f"_sink15{suffix} " in p.stdout, f"{flag}: {p.stdout[:400]}")
             check(rjs.study_flags(rjs.parse(["report", "--quiet-jets", flag, value]))
                   == f" --eps 0.01 --d0-over-dx 10 --quiet-jets {flag} {value}", f"the report's run command with {flag}")
+        # --kernel naming the case's own kernel is the default's study (same runs, same directory)
+        check(rjs.study_dir(rjs.parse(["run", "--quiet-jets", "--kernel", rjs.CASE_KERNEL]))
+              == rjs.study_dir(rjs.parse(["run", "--quiet-jets"])), "--kernel with the case's kernel")
         p = subprocess.run([PY, TOOL, "run", "--dry-run", "--kernel", "gaussian"], capture_output=True, text=True)
         check(p.returncode == 2 and "--kernel" in p.stderr and "cubic_spline" in p.stderr, f"--kernel gaussian: {p.stderr}")
         for extra in (["--quiet-jets", "--fit-points", "3"], ["--axis-pair", "rings", "--fit-points", "4"]):
