@@ -6,14 +6,14 @@ Usage (Debian's python3 has numpy, matplotlib and h5py):
   /usr/bin/python3 tools/round_jet_study.py run [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--h-over-dx H] [--relaxed-exit] [--set-name mc paper]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--h-over-dx H] [--relaxed-exit] [--kernel K] [--set-name mc paper]
       [--only RUN ...] [--threads 2] [--parallel 1]
       [--sphjet build/cpp_driver/sphjet] [--dry-run]
   /usr/bin/python3 tools/round_jet_study.py report [--root runs/round_jet] [--eps 0.01]
       [--d0-over-dx 10] [--size-c C] [--remove-drops-below-h D] [--axis-pair rings|rings_own|rings_fit]
       [--quiet-exit] [--artificial-alpha A [--reconstruct]] [--c0 C] [--sink M] [--window 1] [--own-window]
-      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--h-over-dx H] [--relaxed-exit] [--out cases/round_jet]
-      [--set-name mc paper] [--only RUN ...] [--brief]
+      [--cfl K] [--leapfrog] [--xsph E] [--quiet-jets] [--gravity] [--fixed-step F | --step-cap F] [--landed] [--renormalise-margin M] [--bound-xsph] [--free-bodies] [--thin-rings] [--fit-points N] [--h-over-dx H] [--relaxed-exit] [--kernel K] [--out cases/round_jet]
+      [--set-name mc paper] [--only RUN ...] [--brief] [--keep-rows]
 
 The plan: `--set` overrides on cases/round_jet/round_jet.toml, in ROOT/epsEPS_nN/NAME:
   mc     mc_u{U} for every speed of cases/round_jet/mansour_chigier_1994.csv (d0 = 1.194 mm)
@@ -163,6 +163,10 @@ measured one, eq 37 and Weber's law with the measurements' C, beside Weber's len
 run's own disturbance at the orifice (delta0 and the growth fitted by tools/jet_noise.py over
 the window), and beside where that fitted envelope reaches a (its own delta0 and growth); its
 main drops beside Rayleigh's, and the particles that left the box, if any.
+`report --keep-rows` keeps, for the runs not in the study directory, the rows that the report
+already in --out gives them (a study made on several machines: runs/ stays on each), and says
+which; their lengths enter the fits and the count within 20% as they were reported. The earlier
+report must be of the same study (its study directory's name), else the report stops.
 """
 import contextlib
 import csv
@@ -170,6 +174,7 @@ import functools
 import io
 import math
 import os
+import re
 import statistics
 import sys
 import tomllib
@@ -1055,6 +1060,8 @@ def report(args):
     open_report(sdir, args.out, "round_jet_study.py run" + study_flags(args))
     chosen = select_runs(plan(args), args.set_name or SET_NAMES, args.only, None, dry_run=True)   # no binary needed
     runs = [(s, name) + as_tube(info, read_run(os.path.join(sdir, name), info)) for s, name, _sets, info in chosen]
+    earlier = (earlier_report(args.out, sdir, [name for _s, name, _i, r in runs if r["status"] == "missing"])
+               if args.keep_rows else {})
     header = ["run", "U [m/s]", "We_d", "Oh_d", "x = sqrt(We_d)(1+3Oh_d)", "L/d0 measured",
               "L/d0 eq37 (radius)", "L/d0 13x (diameter)", "L/d0 SPH (std)", "L/d0 window halves",
               "window samples", "window from t [s] (its own L/U)",
@@ -1072,9 +1079,19 @@ def report(args):
             "C = ln(a/delta0) falling, measured / SPH", "C falling at one frequency, measured / SPH"]
     rows, missing, notes = [], [], []
     pts_m, pts_s = [], []   # (x, L/d0, convectively unstable) of the measured jets and the runs
-    for s, name, info, r in runs:
+    for at, (s, name, info, r) in enumerate(runs):
         g = groups(info["U"], info["d0"])
         convective = not absolutely_unstable(g["We_d"])
+        if name in earlier:   # its row as the earlier report gave it, under this report's header
+            row, r = kept_row(earlier[name], header, name)
+            runs[at] = (s, name, info, r)
+            notes += [f"{name}: {n}" for n in r["notes"]]
+            if info["L_meas"] is not None:
+                pts_m.append((g["x"], info["L_meas"], convective))
+            if s == "mc" and r["L"] is not None:
+                pts_s.append((g["x"], r["L"], convective))
+            rows.append(row)
+            continue
         if r["status"] == "missing":
             missing.append(name)
         err = (None if r["L"] is None or info["L_meas"] is None
@@ -1138,7 +1155,7 @@ def report(args):
                 else f"none ({band[0]:.3f} > {band[1]:.3f})")
 
     text = (f"# Round jets (generated by tools/round_jet_study.py report)\n\n"
-            f"Study {os.path.relpath(sdir, REPO) if sdir.startswith(REPO) else sdir}: d0/dx = "
+            f"Study {repo_path(sdir)}: d0/dx = "
             f"{args.d0_over_dx:g}, nozzle disturbance {args.eps:g} (plug speed u0 (1 + eps "
             f"sin(omega t)), k a = 0.697), the same for every run.\n\n"
             + md_table(header, rows) +
@@ -1161,6 +1178,8 @@ def report(args):
                ", where this model (no gravity) cannot form the measured jet.\n\n")
             + f"Rayleigh's drop of the fastest-growing wave: {RAYLEIGH_DROP} d0.\n"
             f"Missing runs ({len(missing)}): {', '.join(missing) if missing else 'none'}.\n"
+            + (f"Rows kept from the earlier report in {repo_path(args.out)} ({len(earlier)}; their runs "
+               f"are not in this study directory): {', '.join(sorted(earlier))}.\n" if earlier else "")
             + left_text([r for _s, _n, _i, r in runs])
             + cost_text([r for _s, _n, _i, r in runs])
             + ("\nNotes:\n" + "".join(f"- {n}\n" for n in notes) if notes else ""))
@@ -1170,9 +1189,68 @@ def report(args):
         figure(args.out, runs, origin_c(pts_m), origin_c(pts_s))
     if args.brief:
         c_all = measured_c()
-        text = "\n\n".join(brief(sdir, args, name, info, r, c_all) for _s, name, info, r in runs)
+        text = "\n\n".join(f"{name}: kept from the earlier report (its run is not in this study directory)"
+                           if r.get("kept") else brief(sdir, args, name, info, r, c_all)
+                           for _s, name, info, r in runs)
     print(text)
     return 0
+
+
+def repo_path(path):
+    """path as the report names it: relative to the repository when inside it."""
+    path = os.path.abspath(path)
+    return os.path.relpath(path, REPO) if path.startswith(REPO + os.sep) else path
+
+
+def earlier_report(out, sdir, names):
+    """The report already in `out` (round_jets.csv, and the notes of round_jets.md): {run: (its
+    row as a dict of header -> cell, its notes)} for the runs in `names` it holds as made; {}
+    without one. It must be a report of the study in sdir (its md names the study directory);
+    a report of another study is an error, not a source of rows."""
+    csv_path, md_path = os.path.join(out, "round_jets.csv"), os.path.join(out, "round_jets.md")
+    if not names or not os.path.isfile(csv_path):
+        return {}
+    try:
+        with open(md_path) as f:
+            md = f.read()
+    except OSError as e:
+        raise StudyError(f"--keep-rows: {md_path}: {e}") from None
+    study = re.search(r"^Study (\S+): ", md, re.M)
+    if study is None or os.path.basename(study.group(1)) != os.path.basename(sdir):
+        raise StudyError(f"--keep-rows: {md_path}: expected a report of the study "
+                         f"{os.path.basename(sdir)}, found "
+                         f"{'no study line' if study is None else os.path.basename(study.group(1))}")
+    notes = {}
+    for line in md.split("\nNotes:\n", 1)[1].splitlines() if "\nNotes:\n" in md else []:
+        name, sep, note = line.removeprefix("- ").partition(": ")
+        if sep:
+            notes.setdefault(name, []).append(note)
+    with open(csv_path, newline="") as f:
+        made = {row["run"]: row for row in csv.DictReader(f) if row.get("status", "missing") != "missing"}
+    return {name: (made[name], notes.get(name, [])) for name in names if name in made}
+
+
+def kept_row(earlier, header, name):
+    """An earlier report's row (earlier_report's (row, notes)) -> (this report's row, a summary in
+    read_run's terms for the fits, the figure and the box's line). A column the earlier report
+    lacks is '-'."""
+    row, notes = earlier
+    cells = [row.get(col, "-") for col in header]
+    cells[0] = name
+
+    def number(col, at=0):
+        try:
+            return float(row.get(col, "-").replace("(", " ").replace(")", " ").split()[at])
+        except (ValueError, IndexError):
+            return None
+
+    left = number("particles left the box (in the window)")
+    inside = number("particles left the box (in the window)", 1)
+    r = {"kept": True, "status": row.get("status", "-"), "notes": notes,
+         "L": number("L/d0 SPH (std)"), "L_std": number("L/d0 SPH (std)", 1),
+         "left": None if left is None else int(left), "left_window": None if inside is None else int(inside),
+         "wall_s": number("wall [s]"), "particle_steps": None}
+    return cells, r
 
 
 def left_text(summaries):
@@ -1193,14 +1271,17 @@ def left_text(summaries):
 def cost_text(summaries):
     """The report's line on what the runs cost, from their read_run summaries (run.log's walls
     and particle-steps, summed over every part of every run): '' without a run.log."""
-    walls = [r["wall_s"] for r in summaries if r.get("wall_s")]
-    if not walls:
+    here = [r for r in summaries if not r.get("kept")]
+    walls = [r["wall_s"] for r in here if r.get("wall_s")]
+    kept = [r["wall_s"] for r in summaries if r.get("kept") and r.get("wall_s")]
+    if not walls and not kept:
         return ""
-    steps = sum(r.get("particle_steps") or 0.0 for r in summaries)
+    steps = sum(r.get("particle_steps") or 0.0 for r in here)
     mantissa, exponent = f"{steps:.2e}".split("e")
-    return (f"Cost: {mantissa}e{int(exponent)} particle-steps; the runs' walls sum to {sum(walls):.0f} s "
-            f"of one core ({sum(walls) / 7200:.2f} h on two cores if the runs pack, at the speed they "
-            f"ran at).\n")
+    return ((f"Cost: {mantissa}e{int(exponent)} particle-steps; the runs' walls sum to {sum(walls):.0f} s "
+             f"of one core ({sum(walls) / 7200:.2f} h on two cores if the runs pack, at the speed they "
+             f"ran at)" if walls else "Cost: no run read here")
+            + (f"; the {len(kept)} kept rows' walls sum to {sum(kept):.0f} s more" if kept else "") + ".\n")
 
 
 def brief(sdir, args, name, info, r, c_all):
@@ -1384,6 +1465,10 @@ def parse(argv=None):
             p.add_argument("--brief", action="store_true",
                            help="print each run in a few lines (its length beside the measurement and "
                                 "the theory, its drops beside Rayleigh's) instead of the table")
+            p.add_argument("--keep-rows", action="store_true",
+                           help="keep the rows of the report already in --out for the runs that are not "
+                                "in this study directory (a study made on several machines); the fits and "
+                                "the count within 20%% take them as they were reported")
     args = ap.parse_args(argv)
     if args.quiet_jets:
         for attr, value, flag in QUIET_JETS:

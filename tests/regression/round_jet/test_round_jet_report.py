@@ -27,6 +27,7 @@ usage: test_round_jet_report.py   (exit 0 on success, 1 with a message on failur
 import csv
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -158,6 +159,33 @@ def main():
               f"the skipped sample's note: {md[-900:]}")
         check("mc_u1.2545: 1 of 21 samples after t = 0.1378 s intact to the box's end" in md,
               f"the box's end note: {md[-900:]}")
+        # --keep-rows: a study made on two machines. This machine holds mc_u1.5699 only; the report
+        # in `out` keeps the earlier rows of the runs not here (mc_u0.7814's row as it was, its L in
+        # the fits) and says which; a missing run stays missing. A report of another study is
+        # refused rather than merged.
+        root2 = os.path.join(tmp, "root2")
+        shutil.copytree(os.path.join(sdir, "mc_u1.5699"), os.path.join(root2, "eps0.01_n10", "mc_u1.5699"))
+        shutil.copytree(out, os.path.join(tmp, "out_before"))
+        p = subprocess.run([PY, TOOL, "report", "--root", root2, "--out", out, "--no-figures", "--keep-rows"],
+                           capture_output=True, text=True)
+        check(p.returncode == 0, f"--keep-rows report exit {p.returncode}: {p.stderr}")
+        with open(os.path.join(out, "round_jets.csv")) as f:
+            kept = {r["run"]: r for r in csv.DictReader(f)}
+        check(kept.get("mc_u0.7814") == r and kept.get("mc_u1.5699") == r3,
+              f"--keep-rows: the kept row and the one read here as before: {kept.get('mc_u0.7814')}")
+        check(kept.get("mc_u0.3441", {}).get("status") == "missing", "--keep-rows: a missing run stays missing")
+        with open(os.path.join(out, "round_jets.md")) as f:
+            md2 = f.read()
+        check(f"| SPH (2 runs) | {c_two:.2f} |" in md2, f"--keep-rows: the kept length in the fit: {md2[-900:]}")
+        check("(3; their runs are not in this study directory): mc_u0.7814, mc_u1.0179, mc_u1.2545." in md2
+              and "mc_u1.2545: 1 of 21 samples after t = 0.1378 s intact to the box's end" in md2,
+              f"--keep-rows: the kept rows named, their notes kept: {md2[-900:]}")
+        other = os.path.join(tmp, "out_before")
+        os.makedirs(os.path.join(root2, "eps0_n10"))
+        p = subprocess.run([PY, TOOL, "report", "--root", root2, "--out", other, "--no-figures", "--keep-rows",
+                            "--eps", "0"], capture_output=True, text=True)
+        check(p.returncode != 0 and "expected a report of the study eps0_n10" in p.stderr
+              and "found eps0.01_n10" in p.stderr, f"--keep-rows into another study's report: {p.stderr}")
         # one C within 20% of every measured c x: [max c / 1.2, min c / 0.8]
         lo, hi = rjs.one_c_band([15.0, 20.0], 0.2)
         check(abs(lo - 20.0 / 1.2) < 1e-12 and abs(hi - 15.0 / 0.8) < 1e-12, f"band of 15, 20: {lo}, {hi}")
@@ -327,7 +355,6 @@ def main():
               f"--gravity without a rings pair: exit {p.returncode} {p.stderr}")
         check(rjs.study_flags(rjs.parse(["report", "--axis-pair", "rings", "--gravity"]))
               == " --eps 0.01 --d0-over-dx 10 --axis-pair rings --gravity", "the report's run command with --gravity")
-        import shutil
         import jet_gravity_theory  # noqa: E402
         shutil.copytree(d, os.path.join(root, "eps0.01_n10_rings_g", "mc_u0.7814"))
         gout = os.path.join(tmp, "gout")
