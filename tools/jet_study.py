@@ -16,7 +16,7 @@ The plan: `--set` overrides on the base case cases/jet/jet.toml, every run at re
             phys_nosigma (surface_tension.sigma=0), phys_fine (resolution.dx = DX/2)
 
 `run` runs what is missing, one run at a time, resumable, a blow-up counted as a result
-(tools/study_runs.py says how; its lock is ROOT/dxDX/.lock). A hidden --tmax T is passed to
+(tools/study_runs.py says how; its runs' locks are ROOT/dxDX/.NAME.lock). A hidden --tmax T is passed to
 sphjet as --tmax (short plumbing checks; use a scratch --root: such runs count as finished).
 
 `report` reads the run directories that exist (missing ones are listed, not fatal) and writes

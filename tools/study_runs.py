@@ -10,7 +10,9 @@ when there is one, else starts afresh (--force: a directory without a checkpoint
 to keep). The first failure stops the study with the run's exit code and the end of its log;
 runs still going are stopped with a checkpoint. SIGINT/SIGTERM are forwarded to sphjet, which
 writes a checkpoint and exits; the study then exits with 128 + signal, and the next `run`
-resumes. One `run` per study directory at a time (a lock file, STUDY_DIR/.lock).
+resumes. Several `run`s may work in one study directory (two single runs side by side, say):
+each run is made by one of them at a time (a lock file per run, STUDY_DIR/.NAME.lock, held
+until that `run` ends), and the others skip it.
 
 Reading: run_summary starts a run's summary from its run.log and hands the rows of its jet.csv
 (one row a breakup check: time, step, broken, L_over_d0, ...) to the study's own reduction;
@@ -22,6 +24,7 @@ tests/unit/python/test_study_runs.py tests this module.
 """
 import argparse
 import csv
+import fcntl
 import os
 import re
 import shlex
@@ -332,16 +335,31 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
     more_time(name, run_dir): for a finished run, None, or (t, why) when it is to go on to the
     end t [s] (it resumes with --tmax t; asked again when that part ends), or (None, why) when
     it is made no longer for a reason worth printing beside "done". -> exit code."""
-    lock = None
+    locks = {}   # name -> the open lock file of a run this `run` makes
+    try:
+        return _run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel,
+                        more_time, locks)
+    finally:
+        for f in locks.values():
+            f.close()
+
+
+def _run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel, more_time, locks):
+    """run_all's loop; locks: name -> the open lock file of each run it takes."""
     if not dry_run:
         os.makedirs(sdir, exist_ok=True)
-        import fcntl
-        lock = open(os.path.join(sdir, ".lock"), "w")
-        try:
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            raise StudyError(f"{sdir}: another `{tool}` is working in this study "
-                             f"(lock {lock.name}); one at a time")
+
+    def take(name):
+        """Whether this `run` may make the run `name`: its lock taken (or held already)."""
+        if name not in locks:
+            f = open(os.path.join(sdir, f".{name}.lock"), "w")
+            try:
+                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                f.close()
+                return False
+            locks[name] = f
+        return True
 
     got_signal = []
     running = {}   # Popen -> its queue entry (k, (name, sets))
@@ -374,7 +392,7 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
 
     m = len(todo)
     print(title, flush=True)
-    n_done = n_run = 0
+    n_done = n_run = n_busy = 0
     failed = None   # the exit code to return once the runs still going have stopped
     queue = list(enumerate(todo, 1))
     while queue or running:
@@ -394,6 +412,10 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
             if state == "done":
                 print(f"{head}: finished, skipped{why_not}", flush=True)
                 n_done += 1
+                continue
+            if not dry_run and not take(name):
+                print(f"{head}: another `{tool}` is making it (lock {sdir}/.{name}.lock); skipped", flush=True)
+                n_busy += 1
                 continue
             what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer
                     else "resuming from its checkpoint" if state == "resume" else "starting")
@@ -467,7 +489,8 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
     if dry_run:
         print(f"dry run: {m - n_done} of {m} run(s) to do")
     else:
-        print(f"{tool.split()[0]}: {n_run} run(s) made, {n_done} already finished, {m} in all")
+        busy = f", {n_busy} being made by another `{tool}`" if n_busy else ""
+        print(f"{tool.split()[0]}: {n_run} run(s) made, {n_done} already finished{busy}, {m} in all")
     return 0
 
 

@@ -7,6 +7,7 @@ test says otherwise.
 
 usage: test_study_runs.py   (unittest; exit 0 when every test passes)
 """
+import fcntl
 import io
 import os
 import stat
@@ -360,6 +361,23 @@ class RunAllTests(unittest.TestCase):
         self.assertEqual(rc, 0)
         self.assertIn("[2/2] r2: finished, skipped", out)
         self.assertIn("0 run(s) made, 2 already finished", out)
+
+    def test_a_run_another_run_command_makes_is_skipped(self):
+        # another `run` in the same study directory holds r1's lock: this one makes r2 alone,
+        # leaves r1's directory untouched and says so; once the lock is let go, r1 is made
+        os.makedirs(self.sdir)
+        with open(os.path.join(self.sdir, ".r1.lock"), "w") as held:
+            fcntl.flock(held, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            rc, out, _ = self.run_all([("r1", []), ("r2", [])])
+        self.assertEqual(rc, 0)
+        self.assertIn("[1/2] r1: another `study.py run` is making it", out)
+        self.assertIn("[2/2] r2: done", out)
+        self.assertIn("1 run(s) made, 0 already finished, 1 being made by another `study.py run`, 2 in all", out)
+        self.assertFalse(os.path.exists(os.path.join(self.sdir, "r1")))
+        rc, out, _ = self.run_all([("r1", []), ("r2", [])])
+        self.assertEqual(rc, 0)
+        self.assertIn("[1/2] r1: done", out)
+        self.assertIn("1 run(s) made, 1 already finished, 2 in all", out)
 
     def test_first_failure_stops_with_its_code(self):
         os.environ["FAKE_RC"] = "3"
