@@ -35,7 +35,7 @@ import os
 import sys
 
 from study_runs import (KERNELS, StudyError, add_run_arguments, blew_up, dispatch, drops_at, first_breakup, fmt,
-                        md_table, open_report, read_csv, run_all, run_summary, select_runs, study_parser)
+                        md_table, open_report, read_csv, run_all, run_summary, select_runs, shown, study_parser)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE_CASE = os.path.join("cases", "jet", "jet.toml")
@@ -104,12 +104,6 @@ def study_dir(root, dx):
 
 
 # ---------------------------------------------------------------- run
-def shown(path):
-    """A path as a committed report may name it: relative to the repository when inside it."""
-    rel = os.path.relpath(os.path.abspath(path), REPO)
-    return path if rel.startswith("..") else rel
-
-
 def cmd_run(args):
     root = args.root
     sdir = study_dir(root, args.dx)
@@ -278,7 +272,7 @@ def report_tables(out, runs, dx, sdir):
 
     # table1.md
     md = [f"# Table 1: jet breakup length, ours at {res} against the paper\n\n",
-          f"Runs: `{shown(sdir)}` (tools/jet_study.py; base case {BASE_CASE}). L/D0 is the first "
+          f"Runs: `{shown(sdir, REPO)}` (tools/jet_study.py; base case {BASE_CASE}). L/D0 is the first "
           "breakup (jet.csv, first row with broken = 1). Errors are signed, (L - eq 37)/eq 37; "
           "the paper prints their magnitude. Groups radius-based as the paper: "
           "We = rho u0^2 R/sigma, Re = rho u0 R/mu, Fr = u0/sqrt(g D0), "
@@ -346,7 +340,7 @@ def report_tables(out, runs, dx, sdir):
     write_csv(os.path.join(out, "physics.csv"), header, rows)
     write_text(os.path.join(out, "physics.md"),
                f"# What breaks a planar 2D jet: u0 = 0.25 m/s, Wendland, {res} unless said\n\n"
-               f"Runs: `{shown(sdir)}`. At the first breakup (jet.csv, first row with broken = 1): its "
+               f"Runs: `{shown(sdir, REPO)}`. At the first breakup (jet.csv, first row with broken = 1): its "
                "time, L/D0, the number of drops and their equivalent diameters (drops.csv, "
                "same step, largest first), the head drop.\n\n" +
                md_table(["run", "change", "D0/dx", "status", "t break (s)", "L/D0", "drops",

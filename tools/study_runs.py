@@ -550,6 +550,13 @@ def fmt(v, spec=".2f", none="-"):
     return none if v is None else format(v, spec)
 
 
+def shown(path, repo):
+    """A path as a committed report names it: relative to the repository `repo` when inside it,
+    else as given."""
+    rel = os.path.relpath(os.path.abspath(path), repo)
+    return path if rel.startswith("..") else rel
+
+
 def md_table(header, rows):
     """A Markdown table (header, then one line a row)."""
     out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]

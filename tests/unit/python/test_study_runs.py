@@ -461,6 +461,12 @@ class TableTests(unittest.TestCase):
         self.assertEqual(sr.md_table(["a", "b"], [[1, "x"], [2.5, None]]),
                          "| a | b |\n|---|---|\n| 1 | x |\n| 2.5 | None |\n")
 
+    def test_shown(self):
+        # inside the repository: relative to it; outside: as given
+        repo = os.path.join(os.sep, "r", "repo")
+        self.assertEqual(sr.shown(os.path.join(repo, "runs", "s"), repo), os.path.join("runs", "s"))
+        self.assertEqual(sr.shown(os.path.join(os.sep, "tmp", "s"), repo), os.path.join(os.sep, "tmp", "s"))
+
 
 if __name__ == "__main__":
     unittest.main()
