@@ -1079,54 +1079,49 @@ def report(args):
             "C = ln(a/delta0) falling, measured / SPH", "C falling at one frequency, measured / SPH"]
     rows, missing, notes = [], [], []
     pts_m, pts_s = [], []   # (x, L/d0, convectively unstable) of the measured jets and the runs
-    for at, (s, name, info, r) in enumerate(runs):
+    for k, (s, name, info, r) in enumerate(runs):
         g = groups(info["U"], info["d0"])
         convective = not absolutely_unstable(g["We_d"])
         if name in earlier:   # its row as the earlier report gave it, under this report's header
             row, r = kept_row(earlier[name], header, name)
-            runs[at] = (s, name, info, r)
-            notes += [f"{name}: {n}" for n in r["notes"]]
-            if info["L_meas"] is not None:
-                pts_m.append((g["x"], info["L_meas"], convective))
-            if s == "mc" and r["L"] is not None:
-                pts_s.append((g["x"], r["L"], convective))
-            rows.append(row)
-            continue
+            runs[k] = (s, name, info, r)
+        else:
+            err = (None if r["L"] is None or info["L_meas"] is None
+                   else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
+            row = [name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
+                   fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
+                   f"{fmt(r['L'])} ({fmt(r['L_std'])})",
+                   "-" if r["L_halves"] is None else f"{fmt(r['L_halves'][0])} / {fmt(r['L_halves'][1])}",
+                   f"{r['n_window']}" + (f" ({r['n_intact']} intact)" if r["n_intact"] else ""),
+                   "-" if r["L"] is None else
+                   f"{r['t0']:.4g} ({r['t0'] * info.get('plug', (info['U'],))[0] / (r['L'] * info['d0']):.2f})",
+                   fmt(err, "+.0f") + ("%" if err is not None else ""),
+                   f"{fmt(None if info['L_meas'] is None else info['L_meas'] / g['x'], '.1f')} / "
+                   f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",
+                   "convective" if convective else "absolute",
+                   f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
+                   f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
+                   f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
+                   fmt(r["particles"], "d"),
+                   f"{fmt(r.get('left'), 'd')} ({fmt(r.get('left_window'), 'd')})",
+                   fmt(r["wall_s"], ".0f")]
+            if args.own_window:
+                row[header.index("window to t [s]"):header.index("window to t [s]")] = [
+                    "-" if r["L"] is None else f"{r['t1']:.4g}",
+                    "-" if r["status"] == "missing" else fmt(r["quiet"], ".4g")]
+            if falling:
+                at = header.index("instability without gravity") - 2
+                row[at:at] = [f"{fmt(falling(info, info['L_meas'], one), '.1f')} / "
+                              f"{fmt(falling(info, r['L'], one), '.1f')}" for one in (False, True)]
         if r["status"] == "missing":
             missing.append(name)
-        err = (None if r["L"] is None or info["L_meas"] is None
-               else 100.0 * (r["L"] - info["L_meas"]) / info["L_meas"])
         if info["L_meas"] is not None:
             pts_m.append((g["x"], info["L_meas"], convective))
         if r["notes"]:
             notes.append(f"{name}: " + "; ".join(r["notes"]))
         if s == "mc" and r["L"] is not None:
             pts_s.append((g["x"], r["L"], convective))
-        rows.append([name, f"{info['U']:g}", f"{g['We_d']:.3g}", f"{g['Oh_d']:.3g}", f"{g['x']:.3f}",
-                     fmt(info["L_meas"]), fmt(g["eq37"]), fmt(g["eq37_d"]),
-                     f"{fmt(r['L'])} ({fmt(r['L_std'])})",
-                     "-" if r["L_halves"] is None else f"{fmt(r['L_halves'][0])} / {fmt(r['L_halves'][1])}",
-                     f"{r['n_window']}" + (f" ({r['n_intact']} intact)" if r["n_intact"] else ""),
-                     "-" if r["L"] is None else
-                     f"{r['t0']:.4g} ({r['t0'] * info.get('plug', (info['U'],))[0] / (r['L'] * info['d0']):.2f})",
-                     fmt(err, "+.0f") + ("%" if err is not None else ""),
-                     f"{fmt(None if info['L_meas'] is None else info['L_meas'] / g['x'], '.1f')} / "
-                     f"{fmt(None if r['L'] is None else r['L'] / g['x'], '.1f')}",
-                     "convective" if convective else "absolute",
-                     f"{fmt(r['t_first'], '.4f')}, {fmt(r['L_first'])}", fmt(r["drops_main"]),
-                     f"{fmt(r['drops_median'])} ({r['n_main_window']})", fmt(r["drops_mode"], ".1f"),
-                     f"{fmt(r['n_drops'], 'd')} ({fmt(r['n_sat'], 'd')})", r["status"],
-                     fmt(r["particles"], "d"),
-                     f"{fmt(r.get('left'), 'd')} ({fmt(r.get('left_window'), 'd')})",
-                     fmt(r["wall_s"], ".0f")])
-        if args.own_window:
-            rows[-1][header.index("window to t [s]"):header.index("window to t [s]")] = [
-                "-" if r["L"] is None else f"{r['t1']:.4g}",
-                "-" if r["status"] == "missing" else fmt(r["quiet"], ".4g")]
-        if falling:
-            at = header.index("instability without gravity") - 2
-            rows[-1][at:at] = [f"{fmt(falling(info, info['L_meas'], one), '.1f')} / "
-                               f"{fmt(falling(info, r['L'], one), '.1f')}" for one in (False, True)]
+        rows.append(row)
     with open(os.path.join(args.out, "round_jets.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(header)
