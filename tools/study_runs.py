@@ -335,163 +335,158 @@ def run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, 
     more_time(name, run_dir): for a finished run, None, or (t, why) when it is to go on to the
     end t [s] (it resumes with --tmax t; asked again when that part ends), or (None, why) when
     it is made no longer for a reason worth printing beside "done". -> exit code."""
-    locks = {}   # name -> the open lock file of a run this `run` makes
+    locks = {}   # name -> the open lock file of a run this `run` makes (held until it returns)
     try:
-        return _run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel,
-                        more_time, locks)
+        if not dry_run:
+            os.makedirs(sdir, exist_ok=True)
+
+        def take(name):
+            """Whether this `run` may make the run `name`: its lock taken (or held already)."""
+            if name not in locks:
+                f = open(os.path.join(sdir, f".{name}.lock"), "w")
+                try:
+                    fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                except OSError:
+                    f.close()
+                    return False
+                locks[name] = f
+            return True
+
+        got_signal = []
+        running = {}   # Popen -> its queue entry (k, (name, sets))
+        asked = {}     # name -> more_time's answer for a run that has just ended
+        readers = {}   # Popen -> the thread that copies its output (parallel > 1)
+        out_lock = threading.Lock()
+
+        def send_all(sig):
+            for p in running:
+                if p.poll() is None:
+                    try:
+                        p.send_signal(sig)
+                    except ProcessLookupError:
+                        pass
+
+        def ask(name, run_dir):
+            try:
+                return more_time(name, run_dir)
+            except (OSError, ValueError, KeyError, IndexError, csv.Error) as e:
+                print(f"{name}: cannot tell whether it is to go on ({e}); left as it is", file=sys.stderr, flush=True)
+                return None
+
+        def forward(sig, _frame):
+            got_signal.append(sig)
+            send_all(sig)
+
+        if not dry_run:
+            signal.signal(signal.SIGINT, forward)
+            signal.signal(signal.SIGTERM, forward)
+
+        m = len(todo)
+        print(title, flush=True)
+        n_done = n_run = n_busy = 0
+        failed = None   # the exit code to return once the runs still going have stopped
+        queue = list(enumerate(todo, 1))
+        while queue or running:
+            while queue and len(running) < parallel and not got_signal and failed is None:
+                entry = queue.pop(0)
+                k, (name, sets) = entry
+                run_dir = os.path.join(sdir, name)
+                head = f"[{k}/{m}] {name}"
+                longer = asked.pop(name, None)
+                if longer is None and more_time and finished(run_dir):
+                    longer = ask(name, run_dir)
+                why_not = f" ({longer[1]})" if longer and longer[0] is None else ""
+                if why_not:
+                    longer = None
+                state, argv = run_command(sphjet, case, run_dir, sets, threads, longer[0] if longer else tmax,
+                                          go_on=bool(longer))
+                if state == "done":
+                    print(f"{head}: finished, skipped{why_not}", flush=True)
+                    n_done += 1
+                    continue
+                if not dry_run and not take(name):
+                    print(f"{head}: another `{tool}` is making it (lock {sdir}/.{name}.lock); skipped", flush=True)
+                    n_busy += 1
+                    continue
+                what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer
+                        else "resuming from its checkpoint" if state == "resume" else "starting")
+                print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
+                if dry_run:
+                    continue
+                os.makedirs(os.path.dirname(run_dir), exist_ok=True)
+                try:
+                    if parallel == 1:   # sphjet's own output, its progress line on a terminal
+                        running[subprocess.Popen(argv, cwd=cwd)] = entry
+                    else:
+                        p = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE,
+                                             stderr=subprocess.STDOUT, text=True, errors="replace")
+                        running[p] = entry
+                        readers[p] = prefixed_copy(p.stdout, f"{name}| ", out_lock)
+                except OSError as e:   # e.g. the binary replaced by a build while the study ran
+                    send_all(signal.SIGTERM)
+                    for p in running:
+                        p.wait()
+                    raise StudyError(f"{head}: cannot start {argv[0]}: {e.strerror}; the runs made "
+                                     f"so far are kept, run `{tool}` again to go on (a study can use "
+                                     f"a copy of the binary: --sphjet PATH)")
+            if not running:   # none left to start (all done, a failure or a signal)
+                break
+            ended = [p for p in running if p.poll() is not None]
+            if not ended:
+                time.sleep(0.2)
+                continue
+            for p in ended:
+                entry = running.pop(p)
+                k, (name, _sets) = entry
+                run_dir, head = os.path.join(sdir, name), f"[{k}/{m}] {name}"
+                if p in readers:
+                    readers.pop(p).join()   # its last lines before what follows on its end
+                rc = p.returncode
+                log = os.path.join(run_dir, "run.log")
+                if got_signal:
+                    print(f"{head}: stopped by signal {got_signal[0]} (sphjet exit {rc}); "
+                          f"run `{tool}` again to resume", file=sys.stderr, flush=True)
+                    continue
+                if rc != 0 and blew_up(run_dir):
+                    # A blow-up is a result (reported by `report`); the study goes on.
+                    print(f"{head}: blew up ({blew_up(run_dir)[:160]}); going on", flush=True)
+                    n_run += 1
+                    continue
+                if rc != 0 or not finished(run_dir):
+                    if failed is None and running:
+                        send_all(signal.SIGTERM)   # they stop with a checkpoint
+                    if rc != 0:
+                        print(f"{head}: FAILED with exit code {rc}; the end of {log}:\n{tail(log)}",
+                              file=sys.stderr, flush=True)
+                        if failed is None:
+                            failed = rc if 0 < rc < 256 else 1
+                    else:
+                        print(f"{head}: sphjet exited 0 but {log} has no `done:` line; the end of it:\n"
+                              f"{tail(log)}", file=sys.stderr, flush=True)
+                        if failed is None:
+                            failed = 1
+                    continue
+                longer = ask(name, run_dir) if more_time else None
+                if longer and longer[0] is not None:
+                    asked[name] = longer
+                    queue.insert(0, entry)   # made longer next, before the runs not yet started
+                    continue
+                n_run += 1
+                print(f"{head}: done" + (f" ({longer[1]})" if longer else ""), flush=True)
+        if got_signal:
+            return 128 + got_signal[0]
+        if failed is not None:
+            return failed
+        if dry_run:
+            print(f"dry run: {m - n_done} of {m} run(s) to do")
+        else:
+            busy = f", {n_busy} being made by another `{tool}`" if n_busy else ""
+            print(f"{tool.split()[0]}: {n_run} run(s) made, {n_done} already finished{busy}, {m} in all")
+        return 0
+
     finally:
         for f in locks.values():
             f.close()
-
-
-def _run_all(todo, sdir, case, sphjet, threads, tmax, dry_run, tool, title, cwd, parallel, more_time, locks):
-    """run_all's loop; locks: name -> the open lock file of each run it takes."""
-    if not dry_run:
-        os.makedirs(sdir, exist_ok=True)
-
-    def take(name):
-        """Whether this `run` may make the run `name`: its lock taken (or held already)."""
-        if name not in locks:
-            f = open(os.path.join(sdir, f".{name}.lock"), "w")
-            try:
-                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            except OSError:
-                f.close()
-                return False
-            locks[name] = f
-        return True
-
-    got_signal = []
-    running = {}   # Popen -> its queue entry (k, (name, sets))
-    asked = {}     # name -> more_time's answer for a run that has just ended
-    readers = {}   # Popen -> the thread that copies its output (parallel > 1)
-    out_lock = threading.Lock()
-
-    def send_all(sig):
-        for p in running:
-            if p.poll() is None:
-                try:
-                    p.send_signal(sig)
-                except ProcessLookupError:
-                    pass
-
-    def ask(name, run_dir):
-        try:
-            return more_time(name, run_dir)
-        except (OSError, ValueError, KeyError, IndexError, csv.Error) as e:
-            print(f"{name}: cannot tell whether it is to go on ({e}); left as it is", file=sys.stderr, flush=True)
-            return None
-
-    def forward(sig, _frame):
-        got_signal.append(sig)
-        send_all(sig)
-
-    if not dry_run:
-        signal.signal(signal.SIGINT, forward)
-        signal.signal(signal.SIGTERM, forward)
-
-    m = len(todo)
-    print(title, flush=True)
-    n_done = n_run = n_busy = 0
-    failed = None   # the exit code to return once the runs still going have stopped
-    queue = list(enumerate(todo, 1))
-    while queue or running:
-        while queue and len(running) < parallel and not got_signal and failed is None:
-            entry = queue.pop(0)
-            k, (name, sets) = entry
-            run_dir = os.path.join(sdir, name)
-            head = f"[{k}/{m}] {name}"
-            longer = asked.pop(name, None)
-            if longer is None and more_time and finished(run_dir):
-                longer = ask(name, run_dir)
-            why_not = f" ({longer[1]})" if longer and longer[0] is None else ""
-            if why_not:
-                longer = None
-            state, argv = run_command(sphjet, case, run_dir, sets, threads, longer[0] if longer else tmax,
-                                      go_on=bool(longer))
-            if state == "done":
-                print(f"{head}: finished, skipped{why_not}", flush=True)
-                n_done += 1
-                continue
-            if not dry_run and not take(name):
-                print(f"{head}: another `{tool}` is making it (lock {sdir}/.{name}.lock); skipped", flush=True)
-                n_busy += 1
-                continue
-            what = (f"going on to t = {longer[0]:.4g} s ({longer[1]})" if longer
-                    else "resuming from its checkpoint" if state == "resume" else "starting")
-            print(f"{head}: {what}\n  {shlex.join(argv)}", flush=True)
-            if dry_run:
-                continue
-            os.makedirs(os.path.dirname(run_dir), exist_ok=True)
-            try:
-                if parallel == 1:   # sphjet's own output, its progress line on a terminal
-                    running[subprocess.Popen(argv, cwd=cwd)] = entry
-                else:
-                    p = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.PIPE,
-                                         stderr=subprocess.STDOUT, text=True, errors="replace")
-                    running[p] = entry
-                    readers[p] = prefixed_copy(p.stdout, f"{name}| ", out_lock)
-            except OSError as e:   # e.g. the binary replaced by a build while the study ran
-                send_all(signal.SIGTERM)
-                for p in running:
-                    p.wait()
-                raise StudyError(f"{head}: cannot start {argv[0]}: {e.strerror}; the runs made "
-                                 f"so far are kept, run `{tool}` again to go on (a study can use "
-                                 f"a copy of the binary: --sphjet PATH)")
-        if not running:   # none left to start (all done, a failure or a signal)
-            break
-        ended = [p for p in running if p.poll() is not None]
-        if not ended:
-            time.sleep(0.2)
-            continue
-        for p in ended:
-            entry = running.pop(p)
-            k, (name, _sets) = entry
-            run_dir, head = os.path.join(sdir, name), f"[{k}/{m}] {name}"
-            if p in readers:
-                readers.pop(p).join()   # its last lines before what follows on its end
-            rc = p.returncode
-            log = os.path.join(run_dir, "run.log")
-            if got_signal:
-                print(f"{head}: stopped by signal {got_signal[0]} (sphjet exit {rc}); "
-                      f"run `{tool}` again to resume", file=sys.stderr, flush=True)
-                continue
-            if rc != 0 and blew_up(run_dir):
-                # A blow-up is a result (reported by `report`); the study goes on.
-                print(f"{head}: blew up ({blew_up(run_dir)[:160]}); going on", flush=True)
-                n_run += 1
-                continue
-            if rc != 0 or not finished(run_dir):
-                if failed is None and running:
-                    send_all(signal.SIGTERM)   # they stop with a checkpoint
-                if rc != 0:
-                    print(f"{head}: FAILED with exit code {rc}; the end of {log}:\n{tail(log)}",
-                          file=sys.stderr, flush=True)
-                    if failed is None:
-                        failed = rc if 0 < rc < 256 else 1
-                else:
-                    print(f"{head}: sphjet exited 0 but {log} has no `done:` line; the end of it:\n"
-                          f"{tail(log)}", file=sys.stderr, flush=True)
-                    if failed is None:
-                        failed = 1
-                continue
-            longer = ask(name, run_dir) if more_time else None
-            if longer and longer[0] is not None:
-                asked[name] = longer
-                queue.insert(0, entry)   # made longer next, before the runs not yet started
-                continue
-            n_run += 1
-            print(f"{head}: done" + (f" ({longer[1]})" if longer else ""), flush=True)
-    if got_signal:
-        return 128 + got_signal[0]
-    if failed is not None:
-        return failed
-    if dry_run:
-        print(f"dry run: {m - n_done} of {m} run(s) to do")
-    else:
-        busy = f", {n_busy} being made by another `{tool}`" if n_busy else ""
-        print(f"{tool.split()[0]}: {n_run} run(s) made, {n_done} already finished{busy}, {m} in all")
-    return 0
 
 
 # ---------------------------------------------------------------- a run's summary
