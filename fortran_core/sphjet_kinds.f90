@@ -19,9 +19,10 @@ module sphjet_kinds
   integer(ip), parameter, public :: SPH_ERR_DT_COLLAPSE = 5  !< time step below the floor
   integer(ip), parameter, public :: SPH_ERR_CAPACITY = 6     !< output buffer too small
 
-  ! Option values (numbered as in the legacy case file).
+  ! Option values (numbered as in the legacy case file). KERNEL_CUBIC_TC takes the number
+  ! legacy SPHysics leaves unused (its case files refuse 4); KERNEL_WENDLAND is the largest.
   integer(ip), parameter, public :: KERNEL_GAUSSIAN = 1, KERNEL_QUADRATIC = 2, &
-                                    KERNEL_CUBIC = 3, KERNEL_WENDLAND = 5
+                                    KERNEL_CUBIC = 3, KERNEL_CUBIC_TC = 4, KERNEL_WENDLAND = 5
   integer(ip), parameter, public :: VISC_ARTIFICIAL = 1, VISC_LAMINAR = 2
   integer(ip), parameter, public :: BC_REPULSIVE = 1, BC_DYNAMIC = 2
   integer(ip), parameter, public :: FILTER_NONE = 0, FILTER_SHEPARD = 1, FILTER_MLS = 2

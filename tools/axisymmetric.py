@@ -147,12 +147,12 @@ def kernel_3d(name, h):
     import numpy as np
     if name == "wendland":
         return lambda d: np.where(d < 2 * h, 21.0 / (16 * np.pi * h ** 3) * (1 - d / (2 * h)) ** 4 * (2 * d / h + 1), 0.0)
-    if name == "cubic_spline":
+    if name in ("cubic_spline", "cubic_spline_tc"):   # the same W; the two differ in the gradient
         def w(d):
             q = d / h
             return np.where(q < 1, 1 - 1.5 * q ** 2 + 0.75 * q ** 3, np.where(q < 2, 0.25 * (2 - q) ** 3, 0.0)) / (np.pi * h ** 3)
         return w
-    raise SystemExit(f"axis_density: the run's kernel is {name!r}; wendland and cubic_spline are supported")
+    raise SystemExit(f"axis_density: the run's kernel is {name!r}; wendland and cubic_spline(_tc) are supported")
 
 
 def ring_density(x, z, m, a, w3, h, nphi=400):

@@ -43,6 +43,11 @@ LoadedCase load_case(const fs::path& path, const std::vector<std::string>& overr
                                  "\"predictor_corrector\"",
                                  "numerics.bulk_viscosity = 0");
         }
+        if (lc.spec.params.kernel == KernelType::CubicSplineTC && lc.spec.output.format != OutputFormat::Hdf5)
+            throw InputError(path.string() + ": numerics.kernel",
+                             "legacy output (INDAT, PART) has no kernel number for the Thomas-Couchman gradient",
+                             "output.format = \"hdf5\", or numerics.kernel = \"cubic_spline\"",
+                             "a legacy output format");
         if (lc.spec.params.shifting > 0 && !(lc.spec.params.sigma > 0))
             throw InputError(path.string() + ": numerics.shifting",
                              "shifting finds the free surface with the surface tension's passes, "

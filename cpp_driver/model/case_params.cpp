@@ -44,7 +44,11 @@ const Param kParams[] = {
 
     // [numerics]
     {.key = "numerics.kernel", .attr = "kernel", .type = K::String, .member = member<&SimParams::kernel>(),
-     .choices = names<KernelType>(), .doc = "smoothing kernel",
+     .choices = names<KernelType>(),
+     .allowed = "cubic_spline_tc: the cubic spline with Thomas & Couchman's (1992) gradient, df/dq held at "
+                "its q = 2/3 value inside it (linear to 0 below q = 0.25), which keeps rows from pairing; "
+                "no legacy number, HDF5 output only",
+     .doc = "smoothing kernel",
      .legacy = "`Kernel: 1=gaussian, 2=quadratic; 3=cubic; 5=Wendland`"},
     {.key = "numerics.integrator", .attr = "integrator", .type = K::String,
      .member = member<&SimParams::integrator>(), .choices = names<Integrator>(),
@@ -99,7 +103,7 @@ const Param kParams[] = {
      .legacy = "(none)", .h5_optional = true},
     {.key = "numerics.tensile_correction", .attr = "tensile_correction", .type = K::String,
      .member = member<&SimParams::tensile_correction>(), .choices = kTensile,
-     .allowed = "auto: on for gaussian and cubic_spline, as legacy",
+     .allowed = "auto: on for gaussian, cubic_spline and cubic_spline_tc, as legacy",
      .doc = "tensile-instability correction (Monaghan 2000)", .legacy = "implied by the kernel",
      .echo = "auto (legacy: on for gaussian, cubic_spline) | on | off"},
     {.key = "numerics.boundary", .attr = "boundary", .type = K::String, .member = member<&SimParams::boundary>(),

@@ -26,7 +26,8 @@ std::string initial_step_note(const SimParams& p) {
 
 bool SimParams::tensile_on() const {
     if (tensile_correction >= 0) return tensile_correction == 1;
-    return kernel == KernelType::CubicSpline || kernel == KernelType::Gaussian;
+    return kernel == KernelType::CubicSpline || kernel == KernelType::CubicSplineTC ||
+           kernel == KernelType::Gaussian;
 }
 
 }  // namespace sphjet

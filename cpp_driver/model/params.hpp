@@ -10,7 +10,8 @@
 namespace sphjet {
 
 // Numbering follows the legacy case file so that legacy values map one to one.
-enum class KernelType : int { Gaussian = 1, Quadratic = 2, CubicSpline = 3, Wendland = 5 };
+// The numbers are legacy SPHysics' (its case files refuse 4); CubicSplineTC has no legacy number.
+enum class KernelType : int { Gaussian = 1, Quadratic = 2, CubicSpline = 3, CubicSplineTC = 4, Wendland = 5 };
 enum class Integrator : int { PredictorCorrector = 1, Leapfrog = 2 };
 enum class DensityFilter : int { None = 0, Shepard = 1, MLS = 2 };
 enum class ViscosityModel : int { Artificial = 1, Laminar = 2 };
@@ -63,9 +64,10 @@ using NameTable = std::array<std::pair<std::string_view, E>, N>;
 
 template <>
 struct EnumNames<KernelType> {
-    static constexpr NameTable<KernelType, 4> list{{{"gaussian", KernelType::Gaussian},
+    static constexpr NameTable<KernelType, 5> list{{{"gaussian", KernelType::Gaussian},
                                                     {"quadratic", KernelType::Quadratic},
                                                     {"cubic_spline", KernelType::CubicSpline},
+                                                    {"cubic_spline_tc", KernelType::CubicSplineTC},
                                                     {"wendland", KernelType::Wendland}}};
 };
 template <>

@@ -29,7 +29,7 @@ enum {
  * surface_tension; the driven nozzle in nozzle; planar/axisymmetric and periodicity in
  * geometry; body forces in gravity. A concern with none of these gets its own struct. */
 typedef struct sph_numerics_t {
-    int kernel;               /* 1 Gaussian, 2 quadratic, 3 cubic spline, 5 Wendland */
+    int kernel;               /* 1 Gaussian, 2 quadratic, 3 cubic spline, 4 its Thomas-Couchman gradient, 5 Wendland */
     int density_filter;       /* 0 none, 1 Shepard, 2 MLS */
     int tensile;              /* 1: tensile-instability correction on */
     int integrator;           /* 1 predictor-corrector, 2 leapfrog (fluid particles alone) */

@@ -2,9 +2,10 @@
 !> the pair loops call kernel_eval, which returns W and F = (dW/dr)/r so that
 !> grad_a W_ab = F (r_a - r_b).
 module sphjet_kernels
-  use sphjet_kinds, only: rp, ip, KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_WENDLAND
+  use sphjet_kinds, only: rp, ip, KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_CUBIC_TC, &
+                          KERNEL_WENDLAND
   use kernel_wendland, only: wendland_norm, wendland_f, wendland_dfdq_q
-  use kernel_cubic, only: cubic_norm, cubic_f, cubic_dfdq
+  use kernel_cubic, only: cubic_norm, cubic_f, cubic_dfdq, cubic_tc_dfdq
   use kernel_quadratic, only: quadratic_norm, quadratic_f, quadratic_dfdq
   use kernel_gaussian, only: gaussian_norm, gaussian_f, gaussian_dfdq
   implicit none
@@ -25,7 +26,8 @@ contains
 
   pure logical function kernel_valid(kind)
     integer(ip), intent(in) :: kind
-    kernel_valid = any(kind == [KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_WENDLAND])
+    kernel_valid = any(kind == [KERNEL_GAUSSIAN, KERNEL_QUADRATIC, KERNEL_CUBIC, KERNEL_CUBIC_TC, &
+                                KERNEL_WENDLAND])
   end function kernel_valid
 
   pure function kernel_setup(kind, h) result(k)
@@ -36,7 +38,7 @@ contains
     select case (kind)
     case (KERNEL_GAUSSIAN);  norm = gaussian_norm
     case (KERNEL_QUADRATIC); norm = quadratic_norm
-    case (KERNEL_CUBIC);     norm = cubic_norm
+    case (KERNEL_CUBIC, KERNEL_CUBIC_TC); norm = cubic_norm
     case default;            norm = wendland_norm
     end select
     k%kind = kind
@@ -60,6 +62,8 @@ contains
       w = k%aw * wendland_f(q);  f = k%adq * wendland_dfdq_q(q)
     case (KERNEL_CUBIC)
       w = k%aw * cubic_f(q);     f = k%adw * cubic_dfdq(q) / r
+    case (KERNEL_CUBIC_TC)
+      w = k%aw * cubic_f(q);     f = k%adw * cubic_tc_dfdq(q) / r
     case (KERNEL_QUADRATIC)
       w = k%aw * quadratic_f(q); f = k%adw * quadratic_dfdq(q) / r
     case default
@@ -93,6 +97,13 @@ contains
         w(i) = k%aw * cubic_f(q)
         f(i) = k%adw * cubic_dfdq(q) / r
       end do
+    case (KERNEL_CUBIC_TC)
+      do i = 1, size(r2)
+        r = sqrt(r2(i))
+        q = r * k%inv_h
+        w(i) = k%aw * cubic_f(q)
+        f(i) = k%adw * cubic_tc_dfdq(q) / r
+      end do
     case (KERNEL_QUADRATIC)
       do i = 1, size(r2)
         r = sqrt(r2(i))
@@ -116,7 +127,7 @@ contains
     real(rp) :: w0
     select case (k%kind)
     case (KERNEL_WENDLAND);  w0 = k%aw * wendland_f(0.0_rp)
-    case (KERNEL_CUBIC);     w0 = k%aw * cubic_f(0.0_rp)
+    case (KERNEL_CUBIC, KERNEL_CUBIC_TC); w0 = k%aw * cubic_f(0.0_rp)
     case (KERNEL_QUADRATIC); w0 = k%aw * quadratic_f(0.0_rp)
     case default;            w0 = k%aw * gaussian_f(0.0_rp)
     end select

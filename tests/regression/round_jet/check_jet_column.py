@@ -46,6 +46,12 @@ flags rather than a copy of them. Checks, each with its reason:
   spline at the study's h (numerics.kernel) grows it as one exponential within 15% of Weber's
   too (measured 0.980; 0.96-1.16 from R 1 to 2, "The cubic spline on a stretched lattice"): the
   Wendland kernel's limit there is the kernel's, not the lattice's;
+- the cubic spline's rows pair at d0/dx 16: the eight-ring column at rest (R = 1), ka 0.49,
+  seeded at 1e-9 a and fitted over 1e-8-1e-6 a, grows at twice Weber's rate with the spline's
+  own gradient (measured 1.99 over 1e-7-1e-4 a: its rows pair) and within 6% of it, as one
+  exponential, with Thomas & Couchman's gradient (numerics.kernel = "cubic_spline_tc", which
+  repels a pair inside q = 2/3 as hard as at 2/3; measured 0.960): the bounds state the
+  pairing and its cure, "The cubic spline without pairing";
 - bad input: a planar case is refused naming domain.geometry; --ka 1.2 (a stable wave),
   --d0-over-dx 15 (7.5 rings across the radius) and --speed-ratio 0.5 (a jet that slows) are
   refused naming the option.
@@ -141,6 +147,30 @@ def check_stretched_lattice(jet_column, sets, case, sphjet, work):
     return fails
 
 
+def check_pairing(jet_column, sets, case, sphjet, work):
+    """The d0/dx 16 column at rest with the cubic spline and with its Thomas-Couchman gradient
+    (the docstring's check); sets: the study's d0/dx 16 run's overrides -> the failures."""
+    fails = []
+    for kernel in ("cubic_spline", "cubic_spline_tc"):
+        rc, text = run_column(jet_column, case, sphjet, os.path.join(work, f"n16_{kernel}"),
+                              sets + [f"numerics.kernel={kernel}"],
+                              ["--ka", "0.49", "--eps", "1e-9", "--fit-from", "1e-8", "--fit-to", "1e-6"])
+        if rc != 0:
+            fails.append(f"d0/dx 16, {kernel}: jet_column.py exited {rc}")
+            continue
+        s = summary(text)
+        ratio = float(s["growth_over_weber"])
+        if kernel == "cubic_spline":
+            ok, want = ratio > 1.5, "above 1.5 (its rows pair)"
+        else:
+            ok = abs(ratio - 1) <= 0.06 and s["fit_rms"] <= jet_column.ONE_EXPONENTIAL
+            want = f"within 0.06 of 1, one exponential (fit_rms {s['fit_rms']:.3g})"
+        print(f"{'ok' if ok else 'FAIL'}: d0/dx 16 at rest, {kernel}: growth / Weber {ratio:.4f}, expected {want}")
+        if not ok:
+            fails.append(f"d0/dx 16, {kernel}: growth / Weber {ratio:.4f}, expected {want}")
+    return fails
+
+
 def run_column(jet_column, case, sphjet, out, sets, extra=()):
     """jet_column.py on the case with the study's overrides sets and the options extra, its output
     echoed -> (exit status, output)."""
@@ -232,6 +262,7 @@ def main():
             sys.exit(f"FAIL: the study's plan has no run {RUN}")
         if n == 16:
             fails += check_fit_points(jet_column, sets, case, sphjet, work)
+            fails += check_pairing(jet_column, sets, case, sphjet, work)
         else:
             fails += check_stretched_lattice(jet_column, sets, case, sphjet, work)
         out = os.path.join(work, f"n{n}")

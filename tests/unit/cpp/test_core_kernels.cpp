@@ -114,8 +114,31 @@ TEST(CoreKernels, Constants) {
     EXPECT_NEAR(eval_w(3, h, {0.0})[0], 10.0 / (7 * std::numbers::pi * h * h), 1e-14);
 }
 
+// The cubic spline with Thomas & Couchman's gradient (kernel 4): W is the spline's; dW/dr is
+// the spline's from q = 2/3 out, its value there, -norm/h^3, from q = 0.25 to 2/3, and linear
+// in q below 0.25 (fortran_core/kernels/kernel_cubic.f90). Relative 1e-13: round-off only.
+TEST(CoreKernels, ThomasCouchmanGradient) {
+    const double h = 0.7, norm = 10.0 / (7 * std::numbers::pi);
+    std::vector<double> r;
+    for (double q : {0.0, 0.1, 0.25, 0.4, 0.6, 2.0 / 3.0, 0.8, 1.2, 1.9}) r.push_back(q * h);
+    std::vector<double> f3, f4;
+    const auto w3 = eval_w(3, h, r, &f3);
+    const auto w4 = eval_w(4, h, r, &f4);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        const double q = r[i] / h;
+        EXPECT_NEAR(w4[i], w3[i], 1e-13 * w3[i]) << "q=" << q;
+        if (q == 0.0) continue;   // F = (dW/dr)/r at r > 0 only
+        const double dwdr = f4[i] * r[i];
+        const double expected = q >= 2.0 / 3.0 ? f3[i] * r[i]
+                                : q >= 0.25    ? -norm / (h * h * h)
+                                               : -norm / (h * h * h) * q / 0.25;
+        EXPECT_NEAR(dwdr, expected, 1e-13 * std::abs(expected)) << "q=" << q;
+    }
+}
+
 TEST(CoreKernels, BadArgumentsAreAnError) {
     double r = 0.1, w, f;
-    EXPECT_EQ(sph_kernel_eval(4, 1.0, 1, &r, &w, &f), SPH_ERR_ARGUMENT);
+    EXPECT_EQ(sph_kernel_eval(6, 1.0, 1, &r, &w, &f), SPH_ERR_ARGUMENT);
+    EXPECT_EQ(sph_kernel_eval(0, 1.0, 1, &r, &w, &f), SPH_ERR_ARGUMENT);
     EXPECT_EQ(sph_kernel_eval(5, 0.0, 1, &r, &w, &f), SPH_ERR_ARGUMENT);
 }
