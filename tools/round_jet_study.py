@@ -104,8 +104,8 @@ a stretched lattice the cubic spline grows a column's wave at Weber's rate to a 
 about 2 at d0/dx 10, where the Wendland kernel goes wrong from about 1.5; its falling jets grow
 at Weber's rate from 0.49 m/s up (17 of the 20 speeds within 20%, the Wendland kernel 16), and
 at 0.36-0.42 m/s their two inner rows pair ("The cubic spline on a stretched lattice").
-"cubic_spline_tc", the spline with Thomas & Couchman's gradient, does not pair ("The cubic
-spline without pairing").
+"cubic_spline_tc", the spline with Thomas & Couchman's gradient, does not pair, and its slow
+jets fall short as the Wendland kernel's do ("The cubic spline without pairing").
 --relaxed-exit (suffix _rx) gives each measured jet's plug the speed x U and diameter d0 x^(-1/2)
 to which the tube's fully developed (parabolic) exit profile relaxes, x from the momentum and
 mass between the exit and the flat profile (relaxed_exit: 1.23 at 0.34 m/s, 1.29 at 0.58, 1.33
