@@ -9,8 +9,8 @@
 
 namespace sphjet {
 
-// Numbering follows the legacy case file so that legacy values map one to one.
-// The numbers are legacy SPHysics' (its case files refuse 4); CubicSplineTC has no legacy number.
+// Numbering follows the legacy case file so that legacy values map one to one; CubicSplineTC, which
+// legacy SPHysics does not have, takes the 4 it leaves unused (its case files are refused a 4).
 enum class KernelType : int { Gaussian = 1, Quadratic = 2, CubicSpline = 3, CubicSplineTC = 4, Wendland = 5 };
 enum class Integrator : int { PredictorCorrector = 1, Leapfrog = 2 };
 enum class DensityFilter : int { None = 0, Shepard = 1, MLS = 2 };
