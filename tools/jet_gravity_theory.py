@@ -4,7 +4,7 @@ each measured breakup length of cases/round_jet/mansour_chigier_1994.csv asks fo
 without gravity along the jet, and the length a given ln(a/delta0) gives.
 
 Usage:
-  /usr/bin/python3 tools/jet_gravity_theory.py [--g 9.81] [--c C] [--relaxed] [--one-frequency]
+  /usr/bin/python3 tools/jet_gravity_theory.py [--g 9.81] [--c C] [--relaxed] [--one-frequency | --spatial]
 
 A jet leaving at U with radius a0, falling along its axis, moves at U(z) = sqrt(U^2 + 2 g z)
 with radius a(z) = a0 sqrt(U / U(z)) (mass flux kept, the pressure and the air left out).
@@ -23,7 +23,14 @@ stretched by gravity (Javadi, Eggers, Bonn, Habibi & Ribe 2013, PRL 110, 144501)
 omega_W Weber's temporal rate at that ka and radius, and N(z) = max over omega of N_omega(z), the
 frequency that has grown most by z (the frequencies on a geometric grid of their exit ka,
 ONE_KA0_LOW, ONE_KA0_STEP and ONE_KA0_PAST, the maximum refined through a parabola; the amplitude factor of
-the stretching itself is left out). Without gravity it is the fastest rate's N. Absolute
+the stretching itself is left out). Without gravity it is the fastest rate's N. --spatial
+follows each frequency the same way but grows it at its spatial rate, -Im k of the complex
+wavenumber k that the local jet gives a real frequency omega (Keller, Rubinow & Tu 1973, with
+Weber's viscous term: tools/axisymmetric.py, spatial_growth), the problem of a jet disturbed at
+its orifice and not in time. At a high Weber number it is the temporal rate over U (Gaster's
+relation); near We_d = 2 pi it is faster (1.24 times the fastest temporal rate over U at We_d
+6.4, 1.05 at 20). Below We_d = 2 pi the two spatial branches have pinched and there is no
+downstream wave to follow: in the pocket (below) the temporal rate over U stands in. Absolute
 instability near the orifice (We_d < 2 pi without gravity, Leib & Goldstein 1986) is not in
 this local picture; where the jet speeds up past it, the convective part is what this
 integrates. The table's "absolutely unstable to" is how far below the orifice the local Weber
@@ -115,6 +122,48 @@ def critical_weber(d_in, d_out, g):
     return 4.0 * (d_in / d_out) / (x + math.sqrt(x * x - 1.0)) ** 2
 
 
+def spatial_wavenumbers(ka_f, we_a, oh, k):
+    """The complex wavenumbers k a (numpy array) that a jet of Weber number we_a = rho U^2 a / sigma
+    and Ohnesorge number oh (on its radius) gives the real frequencies omega = U ka_f / a: the roots
+    of s^2 + 3 oh (ka)^2 s = rayleigh_omega2(ka), s = -i (omega - k U) in units of
+    sqrt(sigma / (rho a^3)) (tools/axisymmetric.py, spatial_growth, whose scalar roots these are),
+    by Newton's method from k (one guess per frequency) with the derivative in closed form:
+    (I1/I0)' = 1 - (I1/I0)/ka - (I1/I0)^2. The branch is the guess's; -Im k is the growth per
+    radius. Raises ArithmeticError if a root is not found to 1e-12 in 50 steps."""
+    import numpy as np
+    u = math.sqrt(we_a)
+    w = u * np.asarray(ka_f, dtype=float)
+    k = np.array(k, dtype=complex)
+    for _ in range(50):
+        i0, i1 = bessel_i01(k)
+        q = i1 / i0
+        r = k * (1.0 - k * k) * q
+        dr = (1.0 - 3.0 * k * k) * q + k * (1.0 - k * k) * (1.0 - q / k - q * q)
+        s, ds = -1j * (w - k * u), 1j * u
+        f = s * s + 3.0 * oh * k * k * s - r
+        df = 2.0 * s * ds + 3.0 * oh * (2.0 * k * s + k * k * ds) - dr
+        step = f / df
+        k = k - step
+        if np.all(np.abs(step) < 1e-12 * (1.0 + np.abs(k))):
+            return k
+    raise ArithmeticError(f"spatial_wavenumbers: no root to 1e-12 in 50 steps at We_a = {we_a:g}, Oh = {oh:g}")
+
+
+def bessel_i01(x, terms=80):
+    """I0 and I1 of a numpy array (complex allowed) by their power series; 80 terms hold 1e-15
+    relative for |x| up to about 30 (the largest local ka --spatial meets is about 19, a decaying
+    wave at the orifice of the slowest jet)."""
+    import numpy as np
+    x = np.asarray(x)
+    q = 0.25 * x * x
+    t0, t1 = np.ones_like(x), 0.5 * x
+    i0, i1 = np.zeros_like(x), np.zeros_like(x)
+    for m in range(terms):
+        i0, i1 = i0 + t0, i1 + t1
+        t0, t1 = t0 * q / ((m + 1) * (m + 1)), t1 * q / ((m + 1) * (m + 2))
+    return i0, i1
+
+
 def cumulate(rates, dz):
     """The trapezoid rule's running integral of rates on a grid of step dz (0 at the first)."""
     n = [0.0]
@@ -133,9 +182,11 @@ def parabola_max(f0, f1, f2):
 class Jet:
     """N(z) of one jet (speed u [m/s], radius a0 [m], gravity g [m/s^2] along it; water unless
     rho, sigma and mu say otherwise, as omega_max) on a grid: the fastest local rate's, or with
-    one_frequency the frequency that has grown most's (the module's docstring)."""
+    one_frequency the frequency that has grown most's, or with spatial the same at each
+    frequency's spatial rate (the module's docstring)."""
 
-    def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU, one_frequency=False):
+    def __init__(self, u, a0, g, rho=RHO, sigma=SIGMA, mu=MU, one_frequency=False, spatial=False):
+        one_frequency = one_frequency or spatial
         self.u, self.a0, self.g, self.rho, self.sigma, self.mu = u, a0, g, rho, sigma, mu
         self.dz = L_MAX_D0 * 2.0 * a0 / (GRID - 1)
         # the grid points' speed and radius (local()'s, on the grid)
@@ -151,7 +202,9 @@ class Jet:
         self.ka0 = [ONE_KA0_LOW * ONE_KA0_STEP ** i
                     for i in range(int(math.log(top / ONE_KA0_LOW) / math.log(ONE_KA0_STEP)) + 2)]
         local = self.grid_points()
-        each = [self.wave_exponent(ka0 * u / a0, local) for ka0 in self.ka0]
+        omegas = [ka0 * u / a0 for ka0 in self.ka0]
+        each = (self.spatial_exponents(omegas, local) if spatial
+                else [self.wave_exponent(omega, local) for omega in omegas])
         # best_ka0: the grid's frequency that has grown most (its exit ka); at z = 0, where every N is 0,
         # it is the grid's first, and means nothing
         self.n, self.best_ka0 = [], []
@@ -188,6 +241,35 @@ class Jet:
         points = self.grid_points() if points is None else points
         return cumulate([weber_omega(omega * a / uz, oh) * scale / uz for uz, a, oh, scale in points], self.dz)
 
+    def spatial_exponents(self, omegas, points=None):
+        """N_omega on the grid for each angular frequency of omegas [1/s] (a list of lists, 0 at the
+        orifice), each wave grown at its spatial rate -Im k (spatial_wavenumbers at its local ka_f =
+        omega a(z) / U(z), We and Oh), and in the pocket of absolute instability (local We_d below
+        2 pi) at its temporal rate over U, as wave_exponent. The root at each grid point is
+        continued from the next one down the jet (k a scaled by the radii), starting where the jet
+        is fastest from Gaster's guess ka_f - i omega_W / U (the downstream branch at a high Weber
+        number). points: grid_points(), when the caller has them."""
+        import numpy as np
+        points = self.grid_points() if points is None else points
+        omegas = np.asarray(omegas, dtype=float)
+        rates = np.empty((GRID, len(omegas)))
+        k, a_next = None, None
+        for i in range(GRID - 1, -1, -1):
+            uz, a, oh, scale = points[i]
+            we_a = self.rho * uz * uz * a / self.sigma
+            ka_f = omegas * a / uz
+            if we_a < math.pi:   # the pocket: the local We_d = 2 we_a below 2 pi
+                rates[i] = [weber_omega(x, oh) * scale / uz for x in ka_f]
+                k = None
+                continue
+            if k is None:
+                guess = ka_f - 1j * np.array([weber_omega(x, oh) for x in ka_f]) / math.sqrt(we_a)
+            else:
+                guess = k * (a / a_next)
+            k, a_next = spatial_wavenumbers(ka_f, we_a, oh, guess), a
+            rates[i] = -k.imag / a
+        return [cumulate(list(col), self.dz) for col in rates.T]
+
     def exponent_at(self, n, z):
         """A grid's N (this one's n, or a wave_exponent) at z [1], linear between grid points."""
         i = min(int(z / self.dz), GRID - 2)
@@ -223,7 +305,7 @@ def one_c_line(jets, band=0.2):
     return f"{lo:.2f} to {hi:.2f} (set by {u_lo:.4f} and {u_hi:.4f} m/s)"
 
 
-def table(g, c=None, d_out=D_OUT_16G, relaxed=False, one_frequency=False):
+def table(g, c=None, d_out=D_OUT_16G, relaxed=False, one_frequency=False, spatial=False):
     a0 = 0.5 * D0_MC
     head = ("| U [m/s] | We_d | L/d0 measured | C without gravity | C with gravity | "
             "absolutely unstable to [d0], falling |")
@@ -240,7 +322,7 @@ def table(g, c=None, d_out=D_OUT_16G, relaxed=False, one_frequency=False):
             _x, u_j, d_j = relaxed_exit(u, D0_MC)
             a_j = 0.5 * d_j
         # without gravity one frequency's N is the fastest rate's (the module's docstring)
-        flat, falling = Jet(u_j, a_j, 0.0), Jet(u_j, a_j, g, one_frequency=one_frequency)
+        flat, falling = Jet(u_j, a_j, 0.0), Jet(u_j, a_j, g, one_frequency=one_frequency, spatial=spatial)
         flats.append((u, l_d0 * D0_MC, flat))
         fallings.append((u, l_d0 * D0_MC, falling))
         c0 = flat.exponent(l_d0 * D0_MC)
@@ -259,7 +341,8 @@ def table(g, c=None, d_out=D_OUT_16G, relaxed=False, one_frequency=False):
         return f"mean {m:.2f}, std {sd:.2f}, {min(cs):.2f}-{max(cs):.2f}"
 
     lines.append("")
-    picture = ("the frequency that has grown most" if one_frequency and g > 0 else "the fastest local rate")
+    picture = ("the frequency that has grown most at its spatial rate" if spatial and g > 0
+               else "the frequency that has grown most" if one_frequency and g > 0 else "the fastest local rate")
     lines.append(f"C = ln(a/delta0) the measured lengths ask for (g = {g:g} m/s^2 along the jet; N of {picture}):")
     lines.append(f"  without gravity: {spread(cs0)}")
     lines.append(f"  with gravity:    {spread(csg)}")
@@ -290,6 +373,9 @@ def main(argv=None):
     ap.add_argument("--one-frequency", action="store_true",
                     help="the falling jet's N is that of the frequency that has grown most, each carried "
                          "down at its own frequency (WKB, the module's docstring), not the fastest local rate's")
+    ap.add_argument("--spatial", action="store_true",
+                    help="as --one-frequency, each frequency grown at its spatial rate (Keller, Rubinow & "
+                         "Tu; the module's docstring), not its temporal rate over U; 15-60 s a jet")
     ap.add_argument("--d-out", type=float, default=D_OUT_16G,
                     help=f"the tube's outer diameter [m] for the dripping criterion (default {D_OUT_16G:g})")
     args = ap.parse_args(argv)
@@ -299,7 +385,9 @@ def main(argv=None):
         ap.error(f"--g {args.g}: expected >= 0 (along the jet)")
     if args.c is not None and not args.c > 0:
         ap.error(f"--c {args.c}: expected a positive number")
-    print(table(args.g, args.c, args.d_out, args.relaxed, args.one_frequency))
+    if args.spatial and args.one_frequency:
+        ap.error("--spatial and --one-frequency: expected one of them (--spatial follows each frequency too)")
+    print(table(args.g, args.c, args.d_out, args.relaxed, args.one_frequency, args.spatial))
     return 0
 
 

@@ -3,7 +3,7 @@
 (cases/CASE_FORMAT.md, [breakup]): where it starts, how fast it grows, and how quiet the exit is.
 
     /usr/bin/python3 tools/jet_noise.py RUN [--from T] [--to T1] [--rows] [--plot OUT.png]
-        [--wave S0 S1] [--frequency OMEGA] [--row-curvature S0 S1] [--at S ...]
+        [--wave S0 S1] [--frequency OMEGA] [--row-curvature S0 S1] [--at S ...] [--spatial]
 
 The samples read are those from T to T1 (default: the run's last), so that two runs can be read
 over the same times while one of them goes on.
@@ -28,7 +28,8 @@ over the same times while one of them goes on.
   slices, and over each of its four quarters; 1 where the jet grows as the falling theory
   says, everywhere along it. The same against the N of the frequency that has grown most
   (--one-frequency there: each wave carried down at its own frequency), below the fastest local
-  rate's wherever the jet speeds up.
+  rate's wherever the jet speeds up; with --spatial, also against the same picture at each
+  frequency's spatial rate (--spatial there).
 - spectrum: the mean amplitude spectrum of r_s along the intact jet (samples whose profile is
   at least 4 d0 long), and its peak ka.
 - noise along the jet (from the snapshots snap_*.h5 at T <= t <= T1, where the run wrote them): the
@@ -170,16 +171,16 @@ def fit_growth(env):
     return k, ln_d, pts[0][0], pts[-1][0]
 
 
-def falling_growth(env, s0, s1, c, one_frequency=False):
+def falling_growth(env, s0, s1, c, one_frequency=False, spatial=False):
     """The envelope's growth over [s0, s1] d0 over Weber's growth integrated along a jet that
     gravity (c["g_along"] > 0) speeds up and thins (tools/jet_gravity_theory.py's N(z), at the
     case's u0, radius and fluid; the fastest local rate's, or with one_frequency the frequency
-    that has grown most's): the slope of the straight line through ln A against N over the
+    that has grown most's, or with spatial the same at each frequency's spatial rate): the slope of the straight line through ln A against N over the
     stretch's slices, and over each of its four quarters -> (slope, [four slopes]), or None with
     fewer than nine slices in it (three a quarter, the quarters sharing their ends)."""
     from jet_gravity_theory import Jet   # here: it imports round_jet_study, which imports this module
     d0 = c["d0"]
-    jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"], one_frequency)
+    jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"], one_frequency, spatial)
     got = growth_over(env, s0, s1, lambda s: jet.exponent(s * d0))
     return None if got is None else got[:2]
 
@@ -488,14 +489,16 @@ def one_frequency(surface, omega, c, summary):
     summary.update({"freq_growth_over_theory": got[0], "freq_C": -got[2]})
 
 
-def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=None, row_curv=None):
+def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=None, row_curv=None,
+            spatial=False):
     """Prints the measures of the run directory `run` over its samples at t0 <= t <= t1 (t0 None:
     twice the first breakup time; t1 None: the last sample) and returns them: a dict with "summary" (the SUMMARY line's values)
     and what the plot draws. wave: None or (s0, s1), the stretch (in d0) whose dominant wave to
     read. at: distances s/d0 at which to print the envelope (the nearest slice). show_rows: print
     the rows' pressures and radii along the jet (noise_along; round jets). frequency: None or
     the angular frequency [1/s] whose own amplitude and growth to read. row_curv: None or (s0,
-    s1), the stretch whose rows' curvature to read (row_curvature; round jets). NoiseError for
+    s1), the stretch whose rows' curvature to read (row_curvature; round jets). spatial: on a
+    falling round jet, the growth over the spatial one-frequency picture too. NoiseError for
     a run without the files or samples it needs."""
     try:
         c = read_case(run)
@@ -575,6 +578,12 @@ def analyse(run, t0=None, wave=None, t1=None, at=(), show_rows=False, frequency=
                   f"down at its own frequency; tools/jet_gravity_theory.py --one-frequency): {one[0]:.3f}; "
                   "by quarters " + ", ".join(f"{q:.3f}" for q in one[1]))
             summary["growth_over_one_frequency_theory"] = one[0]
+            if spatial:
+                sp = falling_growth(env, s0, s1, c, spatial=True)
+                print(f"the same over that frequency's spatial growth (Keller, Rubinow & Tu's -Im k; "
+                      f"tools/jet_gravity_theory.py --spatial): {sp[0]:.3f}; by quarters "
+                      + ", ".join(f"{q:.3f}" for q in sp[1]))
+                summary["growth_over_spatial_theory"] = sp[0]
     else:
         print("growth fit: no growing stretch found (envelope too short or flat)")
     if c["round"] and sig > 0:
@@ -749,6 +758,9 @@ def main(argv=None):
     ap.add_argument("--row-curvature", nargs=2, type=float, default=None, metavar=("S0", "S1"),
                     help="read, from the snapshots, how each row of rings over s = S0-S1 d0 is bent by the surface "
                          "tension against the surface's geometric curvature (round jets)")
+    ap.add_argument("--spatial", action="store_true",
+                    help="on a falling round jet, also the growth over the frequency that has grown most at its "
+                         "spatial rate (tools/jet_gravity_theory.py --spatial; 15-60 s more)")
     args = ap.parse_args(argv)
     if args.t0 is not None and args.t1 is not None and args.t1 < args.t0:
         ap.error(f"--to {args.t1:g} is before --from {args.t0:g}")
@@ -761,7 +773,7 @@ def main(argv=None):
                  f"{args.row_curvature[1]:g}")
     try:
         got = analyse(args.run, args.t0, args.wave, args.t1, args.at, args.rows, args.frequency,
-                      args.row_curvature)
+                      args.row_curvature, args.spatial)
     except NoiseError as e:
         sys.exit(f"jet_noise.py: {e}")
     if args.plot:

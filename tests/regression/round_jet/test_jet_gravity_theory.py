@@ -45,6 +45,18 @@
   steps 1.005 must give it within 1e-3 (the module's ONE_KA0_* comment). best_frequency() there
   must be that grid wave's omega, and the waves two grid steps either side of it (exit ka 4% apart)
   must reach a smaller N by the same quadrature (1000 intervals): it is the one that has grown most.
+- spatial (--spatial: each frequency grown at its spatial rate, -Im k of Keller, Rubinow & Tu's
+  problem). spatial_wavenumbers (Newton with the closed-form derivative, numpy) must give
+  axisymmetric.spatial_growth's roots (Newton with a numerical derivative, one at a time) to 1e-10
+  per radius at We_d 6.4, 10.1 and 41.6, ka 0.3-1.2 (measured 6e-16). Without gravity at We_d 10.1
+  (0.7814 m/s) every wave keeps its ka, so N must be z times the largest -Im k over ka (a golden
+  section on spatial_growth) within 1e-4 relative along the grid: the parabola through frequencies
+  2% apart, measured 1.4e-5 (the temporal picture's 7.1e-6); the spatial rate there is 1.115
+  times the temporal one, so a slip to Gaster's relation is 11% off. Without gravity below We_d =
+  2 pi (0.3441 m/s) the whole jet is the pocket, where the temporal rate over U stands in: N must
+  be --one-frequency's exactly. Falling at 1.5699 m/s (the relaxed plug, We_d 62) the spatial rate
+  is at or above the temporal one, so N must be at or above --one-frequency's at every grid point,
+  and within 3% of it at the measured length (Gaster's limit; measured 1.2%).
 """
 import math
 import os
@@ -180,6 +192,45 @@ for u, l_d0 in ((0.3441, 31.85), (1.5699, 94.96)):
     jgt.ONE_KA0_STEP = step
     worst = max(abs(x / y - 1.0) for x, y in zip(one.n[1:], fine.n[1:]))
     check(worst < 1e-3, f"{u} m/s falling: a grid of steps 1.005 gives N within {worst:.2g} relative")
+
+# spatial (--spatial): each frequency at its spatial rate
+from axisymmetric import spatial_growth  # noqa: E402
+for we_d in (6.4, 10.1, 41.6):
+    kas = [0.3 + 0.1 * i for i in range(10)]
+    oh = jgt.MU / math.sqrt(jgt.RHO * jgt.SIGMA * a0)
+    guess = [complex(x, -jgt.weber_omega(x, oh) / math.sqrt(0.5 * we_d)) for x in kas]
+    roots = jgt.spatial_wavenumbers(kas, 0.5 * we_d, oh, guess)
+    worst = max(abs(-k.imag - spatial_growth(x, 0.5 * we_d, oh)) for k, x in zip(roots, kas))
+    check(worst < 1e-10, f"spatial_wavenumbers at We_d {we_d}: axisymmetric.spatial_growth's roots to {worst:.2g}")
+
+
+def fastest_spatial(we_a, oh):
+    """The largest spatial growth per radius over ka (golden section on axisymmetric.spatial_growth)."""
+    lo, hi = 0.3, 0.99
+    r = (math.sqrt(5.0) - 1.0) / 2.0
+    while hi - lo > 1e-8:
+        x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
+        if spatial_growth(x1, we_a, oh) < spatial_growth(x2, we_a, oh):
+            lo = x1
+        else:
+            hi = x2
+    return spatial_growth(0.5 * (lo + hi), we_a, oh)
+
+
+flat_sp = jgt.Jet(0.7814, a0, 0.0, spatial=True)
+oh0 = jgt.MU / math.sqrt(jgt.RHO * jgt.SIGMA * a0)
+k_sp = fastest_spatial(jgt.RHO * 0.7814 ** 2 * a0 / jgt.SIGMA, oh0) / a0
+worst = max(abs(n / (k_sp * i * flat_sp.dz) - 1.0) for i, n in enumerate(flat_sp.n) if i > 0)
+check(worst < 1e-4, f"spatial without gravity (0.7814 m/s, We_d 10.1): N = z max_ka(-Im k) to {worst:.2g} relative "
+                    f"({k_sp * a0 / (jgt.omega_max(a0) * a0 / 0.7814):.4f} times the fastest temporal rate over U)")
+slow_sp, slow_one = jgt.Jet(0.3441, a0, 0.0, spatial=True), jgt.Jet(0.3441, a0, 0.0, one_frequency=True)
+check(slow_sp.n == slow_one.n, "spatial without gravity below We_d = 2 pi (0.3441 m/s): the pocket's temporal N")
+_x, u_r, d_r = jgt.relaxed_exit(1.5699, jgt.D0_MC)
+fast_sp, fast_one = jgt.Jet(u_r, 0.5 * d_r, 9.81, spatial=True), jgt.Jet(u_r, 0.5 * d_r, 9.81, one_frequency=True)
+i = round(94.96 * jgt.D0_MC / fast_sp.dz)
+check(all(x >= y * (1 - 1e-9) for x, y in zip(fast_sp.n, fast_one.n)) and fast_sp.n[i] <= 1.03 * fast_one.n[i],
+      f"1.5699 m/s falling (We_d 62 at its relaxed exit): spatial N at or above the temporal one-frequency N "
+      f"everywhere, within 3% at the measured length ({fast_sp.n[i]:.3f} against {fast_one.n[i]:.3f})")
 
 if failures:
     print(f"{len(failures)} check(s) failed")
