@@ -59,7 +59,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from axisymmetric import weber_omega  # noqa: E402
+from axisymmetric import bessel_i, weber_omega  # noqa: E402
 from round_jet_study import D0_MC, G_FALL, MU, RHO, SIGMA, read_mc, relaxed_exit  # noqa: E402
 
 K_CL = 0.37        # Clanet & Lasheras's constant for water in air
@@ -135,8 +135,7 @@ def spatial_wavenumbers(ka_f, we_a, oh, k):
     w = u * np.asarray(ka_f, dtype=float)
     k = np.array(k, dtype=complex)
     for _ in range(50):
-        i0, i1 = bessel_i01(k)
-        q = i1 / i0
+        q = bessel_i(1, k) / bessel_i(0, k)   # the power series, elementwise on the array
         r = k * (1.0 - k * k) * q
         dr = (1.0 - 3.0 * k * k) * q + k * (1.0 - k * k) * (1.0 - q / k - q * q)
         s, ds = -1j * (w - k * u), 1j * u
@@ -147,21 +146,6 @@ def spatial_wavenumbers(ka_f, we_a, oh, k):
         if np.all(np.abs(step) < 1e-12 * (1.0 + np.abs(k))):
             return k
     raise ArithmeticError(f"spatial_wavenumbers: no root to 1e-12 in 50 steps at We_a = {we_a:g}, Oh = {oh:g}")
-
-
-def bessel_i01(x, terms=80):
-    """I0 and I1 of a numpy array (complex allowed) by their power series; 80 terms hold 1e-15
-    relative for |x| up to about 30 (the largest local ka --spatial meets is about 19, a decaying
-    wave at the orifice of the slowest jet)."""
-    import numpy as np
-    x = np.asarray(x)
-    q = 0.25 * x * x
-    t0, t1 = np.ones_like(x), 0.5 * x
-    i0, i1 = np.zeros_like(x), np.zeros_like(x)
-    for m in range(terms):
-        i0, i1 = i0 + t0, i1 + t1
-        t0, t1 = t0 * q / ((m + 1) * (m + 1)), t1 * q / ((m + 1) * (m + 2))
-    return i0, i1
 
 
 def cumulate(rates, dz):

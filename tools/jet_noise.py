@@ -175,9 +175,10 @@ def falling_growth(env, s0, s1, c, one_frequency=False, spatial=False):
     """The envelope's growth over [s0, s1] d0 over Weber's growth integrated along a jet that
     gravity (c["g_along"] > 0) speeds up and thins (tools/jet_gravity_theory.py's N(z), at the
     case's u0, radius and fluid; the fastest local rate's, or with one_frequency the frequency
-    that has grown most's, or with spatial the same at each frequency's spatial rate): the slope of the straight line through ln A against N over the
-    stretch's slices, and over each of its four quarters -> (slope, [four slopes]), or None with
-    fewer than nine slices in it (three a quarter, the quarters sharing their ends)."""
+    that has grown most's, or with spatial the same at each frequency's spatial rate): the slope
+    of the straight line through ln A against N over the stretch's slices, and over each of its
+    four quarters -> (slope, [four slopes]), or None with fewer than nine slices in it (three a
+    quarter, the quarters sharing their ends)."""
     from jet_gravity_theory import Jet   # here: it imports round_jet_study, which imports this module
     d0 = c["d0"]
     jet = Jet(c["u0"], 0.5 * d0, c["g_along"], c["rho"], c["sigma"], c["nu"] * c["rho"], one_frequency, spatial)
